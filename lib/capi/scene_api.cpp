@@ -1,0 +1,184 @@
+// The scene entry points of the C API: create, destroy, step and the snapshot queries.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory_resource>
+#include <optional>
+#include <string>
+
+#include "base/memory.h"
+#include "capi/call_guard.h"
+#include "capi/scene_desc.h"
+#include "capi/struct_size.h"
+#include "scene/json_loader.h"
+#include "scene/scene.h"
+#include "spline/arc_length.h"
+
+using enteron::Error;
+using enteron::ErrorCode;
+using enteron::capi::guarded;
+using enteron::capi::require;
+
+namespace {
+
+// What an ent_scene* points to: the scene and the memory it lives in. The handle itself
+// comes from the caller's allocator when one is given. ent_scene itself is never defined,
+// so the ABI (abi/) records only an opaque pointer, whatever this struct holds.
+struct SceneHandle {
+    explicit SceneHandle(const ent_callbacks* callbacks) {
+        if (callbacks != nullptr && callbacks->allocate != nullptr) {
+            callback_memory.emplace(callbacks->allocate, callbacks->release, callbacks->user_data);
+            memory = &*callback_memory;
+        }
+        if (callbacks != nullptr) logger = enteron::Logger(callbacks->log, callbacks->user_data);
+    }
+
+    std::optional<enteron::CallbackMemoryResource> callback_memory;
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    enteron::Logger logger;
+    std::optional<enteron::scene::Scene> scene;
+    ent_callbacks callbacks{};  // kept to release the handle itself
+};
+
+SceneHandle* handle_of(ent_scene* scene) { return reinterpret_cast<SceneHandle*>(scene); }
+const SceneHandle* handle_of(const ent_scene* scene) { return reinterpret_cast<const SceneHandle*>(scene); }
+
+ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::SceneConfig& config) {
+    if (callbacks != nullptr) enteron::capi::check_callbacks(*callbacks);
+    void* memory = nullptr;
+    const bool custom = callbacks != nullptr && callbacks->allocate != nullptr;
+    memory = custom ? callbacks->allocate(callbacks->user_data, sizeof(SceneHandle), alignof(SceneHandle))
+                    : ::operator new(sizeof(SceneHandle), std::nothrow);
+    if (memory == nullptr) throw std::bad_alloc();
+    SceneHandle* handle = new (memory) SceneHandle(callbacks);
+    if (callbacks != nullptr) handle->callbacks = *callbacks;
+    ent_scene* scene = reinterpret_cast<ent_scene*>(handle);
+    try {
+        handle->scene.emplace(config, handle->memory, handle->logger);
+    } catch (...) {
+        ent_scene_destroy(scene);
+        throw;
+    }
+    return scene;
+}
+
+const enteron::scene::Scene& scene_of(const ent_scene* scene) {
+    require(scene, "scene");
+    return *handle_of(scene)->scene;
+}
+
+}  // namespace
+
+extern "C" {
+
+ENT_API ent_status ent_scene_create(const ent_scene_desc* desc, ent_scene** out_scene) {
+    return guarded([&] {
+        require(desc, "desc");
+        require(out_scene, "out_scene");
+        const enteron::scene::SceneConfig config = enteron::capi::config_from_desc(*desc);
+        *out_scene = make_handle(desc->callbacks, config);
+    });
+}
+
+ENT_API ent_status ent_scene_create_json_with(const char* json, size_t length, const ent_callbacks* callbacks,
+                                              ent_scene** out_scene) {
+    return guarded([&] {
+        require(json, "json");
+        require(out_scene, "out_scene");
+        const enteron::scene::SceneConfig config = enteron::scene::load_scene_json(json, length);
+        *out_scene = make_handle(callbacks, config);
+    });
+}
+
+ENT_API ent_status ent_scene_create_json(const char* json, size_t length, ent_scene** out_scene) {
+    return ent_scene_create_json_with(json, length, nullptr, out_scene);
+}
+
+ENT_API void ent_scene_destroy(ent_scene* scene) {
+    if (scene == nullptr) return;
+    SceneHandle* handle = handle_of(scene);
+    const ent_callbacks callbacks = handle->callbacks;
+    handle->~SceneHandle();
+    if (callbacks.release != nullptr)
+        callbacks.release(callbacks.user_data, handle, sizeof(SceneHandle), alignof(SceneHandle));
+    else
+        ::operator delete(handle);
+}
+
+ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s) {
+    return guarded([&] {
+        require(scene, "scene");
+        handle_of(scene)->scene->step(dt_s);
+    });
+}
+
+ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double* points_xyz_m) {
+    return guarded([&] {
+        const enteron::scene::Scene& s = scene_of(scene);
+        require(points_xyz_m, "points_xyz_m");
+        if (count < 2) throw Error(ErrorCode::invalid_argument, "count must be >= 2, got " + std::to_string(count));
+        const auto snapshot = s.read();
+        enteron::spline::sample_evenly(snapshot->control_points.data(), s.control_points(), count, points_xyz_m);
+    });
+}
+
+ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t capacity, double* points_xyz_m,
+                                            uint32_t* out_count) {
+    return guarded([&] {
+        const enteron::scene::Scene& s = scene_of(scene);
+        require(out_count, "out_count");
+        const uint32_t count = static_cast<uint32_t>(s.control_points());
+        if (points_xyz_m != nullptr && capacity < count) {
+            *out_count = count;
+            throw Error(ErrorCode::buffer_too_small, "capacity is " + std::to_string(capacity) +
+                                                         " points, the scene has " + std::to_string(count));
+        }
+        *out_count = count;
+        if (points_xyz_m == nullptr) return;
+        const auto snapshot = s.read();
+        std::copy(snapshot->control_points.begin(), snapshot->control_points.end(), points_xyz_m);
+    });
+}
+
+ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
+    return guarded([&] {
+        const enteron::scene::Scene& s = scene_of(scene);
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_stats)}, "ent_stats");
+        const auto snapshot = s.read();
+        const enteron::scene::SceneStats& stats = snapshot->stats;
+        ent_stats full{};
+        full.struct_size = out->struct_size;
+        full.control_points = static_cast<uint32_t>(s.control_points());
+        full.time_s = stats.time;
+        full.steps = stats.steps;
+        full.substeps = stats.substeps;
+        full.rollbacks = stats.rollbacks;
+        full.kinetic_energy_J = stats.kinetic_energy;
+        full.potential_energy_J = stats.potential_energy;
+        full.contacts = stats.contacts;
+        full.max_penetration_m = stats.max_penetration;
+        full.last_step_ns = stats.last_step_ns;
+        std::memcpy(out, &full, out->struct_size);
+    });
+}
+
+ENT_API ent_status ent_scene_effect_stats(const ent_scene* scene, int32_t effect, ent_effect_stats* out) {
+    return guarded([&] {
+        const enteron::scene::Scene& s = scene_of(scene);
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_effect_stats)}, "ent_effect_stats");
+        if (effect < 0 || effect >= ENT_EFFECT_COUNT)
+            throw Error(ErrorCode::not_found, "effect " + std::to_string(effect) + " is not an ENT_EFFECT_* this library knows");
+        const auto snapshot = s.read();
+        const enteron::scene::EffectStats& stats = snapshot->effects[static_cast<std::size_t>(effect)];
+        ent_effect_stats full{};
+        full.struct_size = out->struct_size;
+        full.enabled = stats.enabled ? 1 : 0;
+        full.calls = stats.calls;
+        full.total_time_ns = stats.total_time_ns;
+        std::memcpy(out, &full, out->struct_size);
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,150 @@
+#include "capi/scene_desc.h"
+
+#include <cstring>
+
+#include "capi/call_guard.h"
+#include "capi/struct_size.h"
+#include "scene/validate.h"
+
+namespace enteron::capi {
+
+namespace {
+
+// Larger inputs than these are refused before anything is copied from the caller's arrays.
+constexpr uint32_t kMaxControlPoints = 100000;
+
+scene::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
+
+// The description as the library sees it: the caller's fields over the defaults, so an
+// older, smaller struct_size gets defaults for the fields it lacks.
+ent_scene_desc complete_desc(const ent_scene_desc& given) {
+    check_struct_size(given.struct_size, {sizeof(ent_scene_desc)}, "ent_scene_desc");
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    std::memcpy(&desc, &given, given.struct_size);
+    return desc;
+}
+
+}  // namespace
+
+void check_callbacks(const ent_callbacks& callbacks) {
+    check_struct_size(callbacks.struct_size, {sizeof(ent_callbacks)}, "ent_callbacks");
+    if ((callbacks.allocate == nullptr) != (callbacks.release == nullptr))
+        throw Error(ErrorCode::invalid_argument,
+                    "ent_callbacks.allocate and ent_callbacks.release must be given together");
+}
+
+scene::SceneConfig config_from_desc(const ent_scene_desc& given) {
+    const ent_scene_desc desc = complete_desc(given);
+    scene::SceneConfig config;
+    const auto has = [&](int effect) { return (desc.effects & ENT_EFFECT_BIT(effect)) != 0; };
+    if (desc.effects >> ENT_EFFECT_COUNT != 0)
+        throw Error(ErrorCode::invalid_argument, "effects names an effect this library does not know");
+
+    scene::IntestineConfig& intestine = config.intestine;
+    intestine.length = desc.length_m;
+    intestine.radius = desc.radius_m;
+    intestine.control_points = desc.control_points;
+    intestine.linear_density = desc.linear_density_kg_per_m;
+    if (has(ENT_EFFECT_STRETCH)) intestine.stretch_stiffness = desc.stretch_stiffness_N;
+    if (has(ENT_EFFECT_BEND)) intestine.bend_stiffness = desc.bend_stiffness_N_m2;
+
+    scene::ShapeConfig& shape = intestine.shape;
+    shape.kind = static_cast<scene::ShapeKind>(desc.shape);
+    shape.center = vec3(desc.shape_center_m);
+    shape.direction = vec3(desc.shape_direction);
+    shape.leg_length = desc.shape_leg_length_m;
+    shape.leg_spacing = desc.shape_leg_spacing_m;
+    shape.helix_radius = desc.shape_helix_radius_m;
+    shape.helix_pitch = desc.shape_helix_pitch_m;
+    if (desc.shape == ENT_SHAPE_POINTS && desc.control_points <= kMaxControlPoints) {
+        require(desc.shape_points_xyz_m, "shape_points_xyz_m (with shape ENT_SHAPE_POINTS)");
+        shape.points.assign(desc.shape_points_xyz_m, desc.shape_points_xyz_m + 3 * std::size_t{desc.control_points});
+    }
+
+    scene::SolverConfig& solver = config.solver;
+    solver.integrator = static_cast<scene::IntegratorKind>(desc.integrator);
+    solver.timestep = desc.timestep_s;
+    solver.max_substeps = desc.max_substeps;
+    solver.max_subdivisions = desc.max_subdivisions;
+    solver.max_speed = desc.max_speed_m_per_s;
+
+    if (has(ENT_EFFECT_GRAVITY)) config.gravity = vec3(desc.gravity_m_per_s2);
+    if (has(ENT_EFFECT_DAMPING))
+        config.damping = scene::DampingConfig{desc.drag_N_s_per_m2, desc.stretch_damping_N_s,
+                                              desc.bend_damping_N_m2_s};
+    if (has(ENT_EFFECT_MESENTERY))
+        config.mesentery = scene::MesenteryConfig{vec3(desc.mesentery_root_start_m),
+                                                  vec3(desc.mesentery_root_end_m),
+                                                  desc.mesentery_attachments,
+                                                  desc.mesentery_stiffness_N_per_m,
+                                                  desc.mesentery_rest_length_m};
+    if (has(ENT_EFFECT_PINNED)) {
+        scene::PinnedConfig pinned;
+        pinned.ends = desc.pinned_ends;
+        if (desc.pinned_point_count > 0) {
+            if (desc.pinned_point_count > desc.control_points || desc.pinned_point_count > kMaxControlPoints)
+                throw Error(ErrorCode::invalid_argument, "pinned_point_count must be <= control_points, got " +
+                                                             std::to_string(desc.pinned_point_count));
+            require(desc.pinned_points, "pinned_points (with pinned_point_count > 0)");
+            pinned.points.assign(desc.pinned_points, desc.pinned_points + desc.pinned_point_count);
+        }
+        config.pinned = pinned;
+    }
+    scene::validate(config, scene::c_field_names());
+    return config;
+}
+
+}  // namespace enteron::capi
+
+extern "C" {
+
+ENT_API void ent_callbacks_default(ent_callbacks* callbacks) {
+    if (callbacks == nullptr) return;
+    std::memset(callbacks, 0, sizeof *callbacks);
+    callbacks->struct_size = sizeof *callbacks;
+}
+
+ENT_API void ent_scene_desc_default(ent_scene_desc* desc) {
+    if (desc == nullptr) return;
+    const enteron::scene::SceneConfig defaults;
+    const enteron::scene::MesenteryConfig mesentery;
+    const enteron::scene::DampingConfig damping;
+    const enteron::scene::ShapeConfig& shape = defaults.intestine.shape;
+    std::memset(desc, 0, sizeof *desc);
+    desc->struct_size = sizeof *desc;
+    desc->effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
+                    ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
+    desc->length_m = defaults.intestine.length;
+    desc->radius_m = defaults.intestine.radius;
+    desc->control_points = static_cast<uint32_t>(defaults.intestine.control_points);
+    desc->linear_density_kg_per_m = defaults.intestine.linear_density;
+    desc->stretch_stiffness_N = 100.0;
+    desc->bend_stiffness_N_m2 = 2.5e-3;
+    desc->shape = static_cast<int32_t>(shape.kind);
+    for (int c = 0; c < 3; ++c) {
+        desc->shape_center_m[c] = shape.center[c];
+        desc->shape_direction[c] = shape.direction[c];
+        desc->mesentery_root_start_m[c] = mesentery.root_start[c];
+        desc->mesentery_root_end_m[c] = mesentery.root_end[c];
+    }
+    desc->shape_leg_length_m = shape.leg_length;
+    desc->shape_leg_spacing_m = shape.leg_spacing;
+    desc->shape_helix_radius_m = shape.helix_radius;
+    desc->shape_helix_pitch_m = shape.helix_pitch;
+    desc->integrator = static_cast<int32_t>(defaults.solver.integrator);
+    desc->timestep_s = defaults.solver.timestep;
+    desc->max_substeps = static_cast<uint32_t>(defaults.solver.max_substeps);
+    desc->max_subdivisions = static_cast<uint32_t>(defaults.solver.max_subdivisions);
+    desc->max_speed_m_per_s = defaults.solver.max_speed;
+    desc->gravity_m_per_s2[2] = -9.81;
+    desc->drag_N_s_per_m2 = damping.drag;
+    desc->stretch_damping_N_s = damping.stretch;
+    desc->bend_damping_N_m2_s = damping.bend;
+    desc->mesentery_attachments = static_cast<uint32_t>(mesentery.attachments);
+    desc->mesentery_stiffness_N_per_m = mesentery.stiffness;
+    desc->mesentery_rest_length_m = mesentery.rest_length;
+    desc->pinned_ends = ENT_PIN_NONE;
+}
+
+}  // extern "C"

@@ -1,0 +1,42 @@
+#include "mechanics/bend_force.h"
+
+#include <cmath>
+
+namespace enteron::mechanics {
+
+BendForce::BendForce(const AxisModel& model, double bend_stiffness, std::pmr::memory_resource* memory)
+    : stiffness_(memory) {
+    stiffness_.resize(model.control_points);
+    const double l0 = model.rest_segment_length;
+    spline::add_gram_matrix(model.control_points, spline::Derivative::second,
+                            bend_stiffness / (l0 * l0 * l0), stiffness_);
+}
+
+void BendForce::evaluate(const State& state, double* force, const Linearization* lin) {
+    add_per_coordinate_product(stiffness_, state.q.data(), -1.0, force);
+    if (lin != nullptr) add_per_coordinate_product(stiffness_, state.v.data(), 1.0, lin->stiffness_times_velocity);
+}
+
+void BendForce::add_constant_linearization(double h, SystemMatrix& system) const {
+    add_per_coordinate(stiffness_, h * h, system);
+}
+
+double BendForce::potential_energy(const State& state) const {
+    double energy = 0.0;
+    const std::size_t n = stiffness_.size();
+    const double* q = state.q.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j0 = i >= 3 ? i - 3 : 0;
+        for (std::size_t j = j0; j <= i; ++j) {
+            const double dot = q[3 * i] * q[3 * j] + q[3 * i + 1] * q[3 * j + 1] + q[3 * i + 2] * q[3 * j + 2];
+            energy += (i == j ? 0.5 : 1.0) * stiffness_.lower(i, j) * dot;
+        }
+    }
+    return energy;
+}
+
+void BendForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+    bound.add_scaled(stiffness_, 1.0);
+}
+
+}  // namespace enteron::mechanics

@@ -1,0 +1,29 @@
+// Bending elasticity, soft: energy 1/2 EI integral of |d2P/ds2|^2 ds with s the rest arc
+// length (ds = l0 dt). Quadratic in q: 1/2 q^T K_b q per coordinate with the constant band
+// matrix K_b = (EI / l0^3) Gram(second derivative), built once. The rest shape is
+// straight. |d2P/ds2| is the curvature while the axis keeps its rest length, which the
+// stiff stretch term enforces.
+#pragma once
+
+#include <memory_resource>
+
+#include "mechanics/axis_model.h"
+#include "mechanics/effect.h"
+
+namespace enteron::mechanics {
+
+class BendForce final : public Effect {
+public:
+    BendForce(const AxisModel& model, double bend_stiffness, std::pmr::memory_resource* memory);
+
+    EffectId id() const override { return EffectId::bend; }
+    void evaluate(const State& state, double* force, const Linearization* lin) override;
+    void add_constant_linearization(double h, SystemMatrix& system) const override;
+    double potential_energy(const State& state) const override;
+    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+
+private:
+    spline::ScalarBandMatrix stiffness_;  // K_b
+};
+
+}  // namespace enteron::mechanics

@@ -1,0 +1,155 @@
+#include "mechanics/dynamics.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "base/error.h"
+
+namespace enteron::mechanics {
+
+namespace {
+// Power iteration gives the top eigenvalue from below; this margin covers its error.
+constexpr double kEigenvalueMargin = 1.2;
+constexpr int kPowerIterations = 200;
+
+uint64_t now_ns() {
+    return static_cast<uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                     std::chrono::steady_clock::now().time_since_epoch())
+                                     .count());
+}
+}  // namespace
+
+Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
+    : model_(model),
+      memory_(memory),
+      effects_(memory),
+      mass_(memory),
+      mass_factor_(memory),
+      constant_system_(memory),
+      scratch_(memory) {
+    const std::size_t n = model.control_points;
+    mass_.resize(n);
+    spline::add_gram_matrix(n, spline::Derivative::value,
+                            model.linear_density * model.rest_segment_length, mass_);
+    mass_factor_.resize(n);
+    constant_system_.resize(3 * n);
+    scratch_.assign(3 * n, 0.0);
+}
+
+void Dynamics::add_effect(Owned<Effect> effect) {
+    enabled_[static_cast<std::size_t>(effect->id())] = true;
+    effects_.push_back(std::move(effect));
+}
+
+void Dynamics::add_pins(Owned<PinnedPoints> pins) {
+    enabled_[static_cast<std::size_t>(EffectId::pinned)] = true;
+    pinned_ = std::move(pins);
+}
+
+void Dynamics::finalize() {
+    mass_factor_.assign(mass_);
+    if (pinned_) pinned_->constrain(mass_factor_);
+    if (!mass_factor_.factor()) throw Error(ErrorCode::internal, "the mass matrix is not positive definite");
+
+    const std::size_t n = model_.control_points;
+    spline::ScalarBandMatrix stiffness(memory_), damping(memory_);
+    stiffness.resize(n);
+    damping.resize(n);
+    for (const Owned<Effect>& effect : effects_) {
+        effect->add_stiffness_bound(stiffness);
+        effect->add_damping_bound(damping);
+    }
+    if (pinned_) {
+        pinned_->constrain(stiffness);
+        pinned_->constrain(damping);
+    }
+    max_frequency_ = std::sqrt(kEigenvalueMargin * largest_eigenvalue(stiffness));
+    max_damping_rate_ = kEigenvalueMargin * largest_eigenvalue(damping);
+    constant_system_h_ = -1.0;
+}
+
+double Dynamics::largest_eigenvalue(const spline::ScalarBandMatrix& bound) const {
+    // Power iteration on M^-1 B, started from the most oscillating vector (the top modes of
+    // a chain alternate in sign), with the Rayleigh quotient x^T B x / x^T M x as estimate.
+    const std::size_t n = model_.control_points;
+    std::pmr::vector<double> x(n, 0.0, memory_), y(n, 0.0, memory_), mx(n, 0.0, memory_);
+    for (std::size_t i = 0; i < n; ++i) x[i] = (i % 2 == 0 ? 1.0 : -1.0) * (1.0 + 0.3 * std::sin(1.0 + i));
+    double estimate = 0.0;
+    for (int iteration = 0; iteration < kPowerIterations; ++iteration) {
+        bound.multiply(x.data(), y.data());
+        mass_.multiply(x.data(), mx.data());
+        double xbx = 0.0, xmx = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            xbx += x[i] * y[i];
+            xmx += x[i] * mx[i];
+        }
+        estimate = xmx > 0.0 ? xbx / xmx : 0.0;
+        mass_factor_.solve(y.data());
+        double norm = 0.0;
+        for (double v : y) norm = std::max(norm, std::fabs(v));
+        if (!(norm > 0.0)) return 0.0;
+        for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / norm;
+    }
+    return estimate;
+}
+
+double Dynamics::explicit_substep_limit(double stability_interval) const {
+    constexpr double kSafety = 0.9;
+    const double rate = max_frequency_ + max_damping_rate_;
+    if (!(rate > 0.0)) return std::numeric_limits<double>::infinity();
+    return kSafety * stability_interval / rate;
+}
+
+void Dynamics::forces(const State& state, double* force, const Linearization* lin) {
+    const std::size_t m = coordinates();
+    std::fill(force, force + m, 0.0);
+    if (lin != nullptr) std::fill(lin->stiffness_times_velocity, lin->stiffness_times_velocity + m, 0.0);
+    auto run = [&](Effect& effect) {
+        const uint64_t start = now_ns();
+        effect.evaluate(state, force, lin);
+        EffectCounters& counter = counters_[static_cast<std::size_t>(effect.id())];
+        counter.calls += 1;
+        counter.total_time_ns += now_ns() - start;
+    };
+    for (Owned<Effect>& effect : effects_) run(*effect);
+    if (pinned_) run(*pinned_);
+}
+
+void Dynamics::acceleration(const State& state, double* acceleration) {
+    forces(state, acceleration, nullptr);
+    solve_mass(acceleration);
+}
+
+void Dynamics::solve_mass(double* x) const { mass_factor_.solve(x, 3, 3); }
+
+const SystemMatrix& Dynamics::constant_system(double h) {
+    if (h == constant_system_h_) return constant_system_;
+    constant_system_.set_zero();
+    add_per_coordinate(mass_, 1.0, constant_system_);
+    for (const Owned<Effect>& effect : effects_) effect->add_constant_linearization(h, constant_system_);
+    constant_system_h_ = h;
+    return constant_system_;
+}
+
+double Dynamics::kinetic_energy(const State& state) const {
+    mass_.multiply(state.v.data(), scratch_.data(), 3, 3);
+    double energy = 0.0;
+    for (std::size_t k = 0; k < scratch_.size(); ++k) energy += 0.5 * state.v[k] * scratch_[k];
+    return energy;
+}
+
+double Dynamics::potential_energy(const State& state) const {
+    double energy = 0.0;
+    for (const Owned<Effect>& effect : effects_) energy += effect->potential_energy(state);
+    return energy;
+}
+
+double Dynamics::deformation_energy(const State& state) const {
+    double energy = 0.0;
+    for (const Owned<Effect>& effect : effects_)
+        if (effect->id() != EffectId::gravity) energy += effect->potential_energy(state);
+    return energy;
+}
+
+}  // namespace enteron::mechanics

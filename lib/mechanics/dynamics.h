@@ -1,0 +1,79 @@
+// The equations of motion of the axis, M a = F(q, v), with M the constant banded mass
+// matrix (factored once) and F the sum of the effects the scene names. Integrators ask it
+// for forces, accelerations, linearisations and energies; it times every effect.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+#include "base/memory.h"
+#include "mechanics/axis_model.h"
+#include "mechanics/effect.h"
+#include "mechanics/pinned_points.h"
+
+namespace enteron::mechanics {
+
+// What one effect cost so far.
+struct EffectCounters {
+    uint64_t calls = 0;
+    uint64_t total_time_ns = 0;
+};
+
+class Dynamics {
+public:
+    Dynamics(const AxisModel& model, std::pmr::memory_resource* memory);
+
+    // Adds an effect, or the pins (which always run last); call finalize() once all are in.
+    void add_effect(Owned<Effect> effect);
+    void add_pins(Owned<PinnedPoints> pins);
+    // Factors the mass matrix (with the pins) and bounds the explicit stable substep.
+    void finalize();
+
+    const AxisModel& model() const { return model_; }
+    std::size_t coordinates() const { return 3 * model_.control_points; }
+    bool has_effect(EffectId id) const { return enabled_[static_cast<std::size_t>(id)]; }
+    const EffectCounters& counters(EffectId id) const { return counters_[static_cast<std::size_t>(id)]; }
+
+    // force = F(state); with lin, also the linearisation (see effect.h). Times each effect.
+    void forces(const State& state, double* force, const Linearization* lin);
+    // acceleration = M^-1 F(state).
+    void acceleration(const State& state, double* acceleration);
+    // x = M^-1 x for a 3n vector.
+    void solve_mass(double* x) const;
+
+    // Builds M + sum of the constant parts of h C + h^2 H, pins applied: the start of the
+    // implicit system for substep h. Cached: rebuilt only when h changes.
+    const SystemMatrix& constant_system(double h);
+
+    double kinetic_energy(const State& state) const;
+    double potential_energy(const State& state) const;
+    // The part of the potential energy stored in deformation (all but gravity), >= 0.
+    double deformation_energy(const State& state) const;
+
+    // The longest substep an explicit method with stability interval [-beta, 0] on the
+    // imaginary / real axes may take, from bounds on the highest frequency omega and the
+    // strongest damping rate gamma: h <= safety * beta / (omega + gamma). Infinite when
+    // nothing is stiff (gravity only).
+    double explicit_substep_limit(double stability_interval) const;
+
+private:
+    double largest_eigenvalue(const spline::ScalarBandMatrix& bound) const;
+
+    AxisModel model_;
+    std::pmr::memory_resource* memory_;
+    std::pmr::vector<Owned<Effect>> effects_;
+    Owned<PinnedPoints> pinned_;
+    std::array<bool, kEffectCount> enabled_{};
+    std::array<EffectCounters, kEffectCount> counters_{};
+    spline::ScalarBandMatrix mass_;          // M per coordinate, unfactored
+    spline::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
+    SystemMatrix constant_system_;
+    double constant_system_h_ = -1.0;
+    double max_frequency_ = 0.0;      // rad/s, bound on sqrt(eig(M^-1 K))
+    double max_damping_rate_ = 0.0;   // 1/s, bound on eig(M^-1 C)
+    mutable std::pmr::vector<double> scratch_;
+};
+
+}  // namespace enteron::mechanics

@@ -1,0 +1,49 @@
+// An effect adds generalised forces F(q, v, t) on the control points. Every effect maps a
+// force f acting at spline parameter s to the control points the same way, through the
+// basis weights: F_j += w_j(s) f.
+//
+// For the implicit integrator an effect also gives its linearisation, the stiffness
+// H = -dF/dq and the damping C = -dF/dv, both symmetric positive semi-definite and within
+// the system's band. Couplings outside the band (contacts between distant folds) stay
+// explicit.
+#pragma once
+
+#include <cstddef>
+
+#include "mechanics/effect_id.h"
+#include "mechanics/state.h"
+#include "mechanics/system_matrix.h"
+#include "spline/gram_matrix.h"
+
+namespace enteron::mechanics {
+
+// What the implicit integrator asks of an effect: add h C + h^2 H into `system` and H v
+// into `stiffness_times_velocity` (3n values).
+struct Linearization {
+    SystemMatrix* system;
+    double h;
+    double* stiffness_times_velocity;
+};
+
+class Effect {
+public:
+    virtual ~Effect() = default;
+    virtual EffectId id() const = 0;
+
+    // Adds F(state) into force (3n values) and, when lin is not null, the state-dependent
+    // part of the linearisation.
+    virtual void evaluate(const State& state, double* force, const Linearization* lin) = 0;
+
+    // Adds the part of h C + h^2 H that never changes (called once per substep length).
+    virtual void add_constant_linearization(double /*h*/, SystemMatrix& /*system*/) const {}
+
+    // Potential energy, J (0 for effects that have none).
+    virtual double potential_energy(const State& /*state*/) const { return 0.0; }
+
+    // Upper bounds (per coordinate, n x n) of the stiffness and damping this effect can
+    // reach; the explicit integrators' stable substep follows from them.
+    virtual void add_stiffness_bound(spline::ScalarBandMatrix& /*bound*/) const {}
+    virtual void add_damping_bound(spline::ScalarBandMatrix& /*bound*/) const {}
+};
+
+}  // namespace enteron::mechanics

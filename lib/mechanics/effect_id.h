@@ -1,0 +1,26 @@
+// Every effect a scene can name. The numbers are those of ENT_EFFECT_* in enteron.h.
+#pragma once
+
+#include <cstddef>
+
+namespace enteron {
+
+enum class EffectId : int {
+    stretch = 0,
+    bend = 1,
+    damping = 2,
+    gravity = 3,
+    mesentery = 4,
+    pinned = 5,
+};
+
+constexpr std::size_t kEffectCount = 6;
+
+// The JSON-style name of an effect ("stretch", ...).
+inline const char* effect_name(EffectId id) {
+    static const char* const names[kEffectCount] = {"stretch",   "bend",      "damping",
+                                                   "gravity",   "mesentery", "pinned"};
+    return names[static_cast<std::size_t>(id)];
+}
+
+}  // namespace enteron

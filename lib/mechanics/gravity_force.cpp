@@ -1,0 +1,30 @@
+#include "mechanics/gravity_force.h"
+
+namespace enteron::mechanics {
+
+GravityForce::GravityForce(const AxisModel& model, const std::array<double, 3>& gravity,
+                           std::pmr::memory_resource* memory)
+    : gravity_(gravity), lumped_mass_(memory) {
+    const std::size_t n = model.control_points;
+    spline::ScalarBandMatrix mass(memory);
+    mass.resize(n);
+    spline::add_gram_matrix(n, spline::Derivative::value,
+                            model.linear_density * model.rest_segment_length, mass);
+    std::pmr::vector<double> ones(n, 1.0, memory);
+    lumped_mass_.assign(n, 0.0);
+    mass.multiply(ones.data(), lumped_mass_.data());
+}
+
+void GravityForce::evaluate(const State& /*state*/, double* force, const Linearization* /*lin*/) {
+    for (std::size_t j = 0; j < lumped_mass_.size(); ++j)
+        for (int c = 0; c < 3; ++c) force[3 * j + c] += lumped_mass_[j] * gravity_[c];
+}
+
+double GravityForce::potential_energy(const State& state) const {
+    double energy = 0.0;
+    for (std::size_t j = 0; j < lumped_mass_.size(); ++j)
+        for (int c = 0; c < 3; ++c) energy -= lumped_mass_[j] * gravity_[c] * state.q[3 * j + c];
+    return energy;
+}
+
+}  // namespace enteron::mechanics

@@ -1,0 +1,33 @@
+// A time integrator advances the state of the axis by one substep h. Each owns its work
+// buffers, sized once at creation, so a substep allocates nothing.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <memory_resource>
+
+#include "base/memory.h"
+#include "mechanics/dynamics.h"
+
+namespace enteron::mechanics {
+
+// The numbers are those of ENT_INTEGRATOR_* in enteron.h.
+enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2 };
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+
+    // Advances state by h seconds. Returns false if the implicit system could not be
+    // solved; the state is then unspecified (the caller rolls back).
+    virtual bool step(Dynamics& dynamics, State& state, double h) = 0;
+
+    // Stability interval beta of the method on the imaginary axis: an explicit method is
+    // stable for h (omega + gamma) <= beta. Infinite for an implicit method.
+    virtual double stability_interval() const = 0;
+};
+
+Owned<Integrator> make_integrator(IntegratorKind kind, std::size_t coordinates,
+                                  std::pmr::memory_resource* memory);
+
+}  // namespace enteron::mechanics

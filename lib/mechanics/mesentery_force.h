@@ -1,0 +1,51 @@
+// The mesentery: tension-only springs that tie points of the axis to the mesenteric root,
+// a short line segment at the back of the abdomen. Attachment k sits at the spline
+// parameter s_k = (k + 1/2) / K * (n - 1), evenly spread along the axis, and pulls toward
+// the root point at the same fraction along the root line. A spring is slack below its
+// rest length (the fold hangs freely) and pulls with k (d - L0) beyond it.
+//
+// Linearisation of a stretched spring (d > L0): H = k [u u^T + (1 - L0/d) (I - u u^T)],
+// positive semi-definite; a slack spring adds nothing.
+#pragma once
+
+#include <array>
+#include <memory_resource>
+#include <vector>
+
+#include "mechanics/axis_model.h"
+#include "mechanics/effect.h"
+
+namespace enteron::mechanics {
+
+struct MesenteryParameters {
+    std::array<double, 3> root_start{};  // m
+    std::array<double, 3> root_end{};    // m
+    std::size_t attachments = 0;
+    double stiffness = 0.0;    // N/m per spring
+    double rest_length = 0.0;  // m; 0: each spring's length in `initial`
+};
+
+class MesenteryForce final : public Effect {
+public:
+    MesenteryForce(const AxisModel& model, const MesenteryParameters& parameters,
+                   const State& initial, std::pmr::memory_resource* memory);
+
+    EffectId id() const override { return EffectId::mesentery; }
+    void evaluate(const State& state, double* force, const Linearization* lin) override;
+    double potential_energy(const State& state) const override;
+    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+
+private:
+    struct Spring {
+        spline::SegmentWeights weights;  // of the attachment point on the axis
+        std::array<double, 3> root;      // m
+        double rest_length;              // m
+    };
+    // Vector from the root to the attachment point, and its length.
+    double stretch_vector(const State& state, const Spring& spring, double d[3]) const;
+
+    double stiffness_;
+    std::pmr::vector<Spring> springs_;
+};
+
+}  // namespace enteron::mechanics

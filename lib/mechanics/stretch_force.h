@@ -1,0 +1,36 @@
+// Axial elasticity, stiff: energy 1/2 EA eps^2 per unit rest length, with the engineering
+// strain eps = |dP/ds| - 1 = |dP/dt| / l0 - 1 (the rest state is the axis at its rest
+// length, whatever its initial shape). Integrated with 2-point Gauss per segment: 2 (n-1)
+// strain samples for 3n coordinates leave the bending modes free, where 3 points per
+// segment (about as many samples as coordinates) would lock them and stiffen the bending.
+//
+// Linearisation: the Hessian of the energy at a node, H = EA [u u^T / l0 + eps/|P'| (I - u u^T)]
+// with u the unit tangent, is indefinite when the axis is compressed (eps < 0); the
+// transverse term is clamped to eps >= 0 so the implicit system stays positive definite.
+#pragma once
+
+#include <memory_resource>
+#include <vector>
+
+#include "mechanics/axis_model.h"
+#include "mechanics/effect.h"
+#include "spline/segment_quadrature.h"
+
+namespace enteron::mechanics {
+
+class StretchForce final : public Effect {
+public:
+    StretchForce(const AxisModel& model, double stretch_stiffness, std::pmr::memory_resource* memory);
+
+    EffectId id() const override { return EffectId::stretch; }
+    void evaluate(const State& state, double* force, const Linearization* lin) override;
+    double potential_energy(const State& state) const override;
+    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+
+private:
+    AxisModel model_;
+    double stiffness_;  // EA, N
+    std::pmr::vector<spline::QuadratureNode> nodes_;
+};
+
+}  // namespace enteron::mechanics

@@ -1,0 +1,51 @@
+// The implicit integrator's system matrix over the 3n coordinates x0 y0 z0 x1 y1 z1 ...
+// A segment couples four consecutive control points (12 coordinates), so the half
+// bandwidth is 3 * 3 + 2 = 11.
+#pragma once
+
+#include <cstddef>
+
+#include "numerics/banded_matrix.h"
+#include "spline/catmull_rom.h"
+#include "spline/gram_matrix.h"
+
+namespace enteron::mechanics {
+
+using SystemMatrix = numerics::BandedSpdMatrix<11>;
+
+// The stiffness of an axial force law at a spline point with unit direction u,
+// H = a u u^T + b I (a spring, the stretch of the axis, an axial damper), acting through
+// the weights w on q_first .. q_first+3: adds scale * (w w^T) (x) H to the system.
+// The 12 coordinates of the four points are contiguous, so each row of the block is a
+// contiguous run of the band: a rank-one update of g = w (x) u plus b on the diagonal
+// coordinates.
+void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const double u[3],
+                     double a, double b, double scale);
+
+// out = a (u . x) u + b x: H x for H = a u u^T + b I.
+inline void axial_times(const double u[3], double a, double b, const double x[3], double out[3]) {
+    const double along = a * (u[0] * x[0] + u[1] * x[1] + u[2] * x[2]);
+    for (int c = 0; c < 3; ++c) out[c] = along * u[c] + b * x[c];
+}
+
+// out[first + k] += w_k f for the four points of a spline point: a force f at that point
+// as generalised forces (3n vector).
+inline void add_point_force(const spline::SegmentWeights& weights, const double f[3], double* out) {
+    double* o = out + 3 * weights.first;
+    for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 3; ++c) o[3 * k + c] += weights.w[k] * f[c];
+}
+
+}  // namespace enteron::mechanics
+
+namespace enteron::mechanics {
+
+// Adds scale * (B (x) I3) to the system: a per-coordinate matrix B (n x n, the same for
+// x, y and z) such as the mass, bending or drag matrix.
+void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemMatrix& system);
+
+// out += scale * B x for each coordinate (x and out hold 3n values).
+void add_per_coordinate_product(const spline::ScalarBandMatrix& b, const double* x, double scale,
+                                double* out);
+
+}  // namespace enteron::mechanics

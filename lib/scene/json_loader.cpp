@@ -1,0 +1,381 @@
+#include "scene/json_loader.h"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "base/error.h"
+#include "scene/validate.h"
+
+namespace enteron::scene {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& message) {
+    throw Error(ErrorCode::invalid_scene, message);
+}
+
+// Cuts long text for a message, never inside a UTF-8 sequence.
+std::string shorten(std::string text) {
+    constexpr std::size_t kMaxChars = 60;
+    if (text.size() <= kMaxChars) return text;
+    std::size_t cut = kMaxChars;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return text.substr(0, cut) + "...";
+}
+
+std::string quote(const std::string& text) { return json(shorten(text)).dump(); }
+
+// A value as a message shows it. Containers are only described, so a huge or deeply
+// nested value cannot blow up the message (or the stack, through dump()).
+std::string describe(const json& value) {
+    if (value.is_object()) return "an object";
+    if (value.is_array()) {
+        return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " element" : " elements");
+    }
+    if (value.is_string()) return quote(value.get<std::string>());
+    return value.dump();  // a number, true, false or null: short
+}
+
+std::string child(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+}
+std::string element(const std::string& path, std::size_t index) {
+    return path + "[" + std::to_string(index) + "]";
+}
+std::string place(const std::string& path) {
+    return path.empty() ? "at the top level" : "in " + path;
+}
+
+// ---- values ------------------------------------------------------------------------
+
+double read_number(const json& value, const std::string& path) {
+    if (!value.is_number()) fail(path + " must be a number, got " + describe(value));
+    return value.get<double>();
+}
+
+// A count or index. JSON has one number type, so 1e5, 240.0 and -0 are integers too.
+std::uint64_t read_count(const json& value, const std::string& path,
+                         std::uint64_t max = std::numeric_limits<std::size_t>::max()) {
+    std::uint64_t count = 0;
+    if (value.is_number_unsigned()) {
+        count = value.get<std::uint64_t>();
+    } else {
+        if (!value.is_number() || std::floor(value.get<double>()) != value.get<double>()) {
+            fail(path + " must be an integer, got " + describe(value));
+        }
+        const double number = value.get<double>();
+        if (number < 0.0) fail(path + " must be a non-negative integer, got " + describe(value));
+        constexpr double kTwoTo64 = 18446744073709551616.0;
+        if (number >= kTwoTo64) fail(path + " must be <= " + std::to_string(max) + ", got " + describe(value));
+        count = static_cast<std::uint64_t>(number);
+    }
+    if (count > max) fail(path + " must be <= " + std::to_string(max) + ", got " + describe(value));
+    return count;
+}
+
+Vec3 read_vec3(const json& value, const std::string& path) {
+    if (!value.is_array() || value.size() != 3) {
+        fail(path + " must be an array of 3 numbers [x, y, z], got " + describe(value));
+    }
+    return {read_number(value[0], element(path, 0)), read_number(value[1], element(path, 1)),
+            read_number(value[2], element(path, 2))};
+}
+
+template <typename T>
+using Choice = std::pair<const char*, T>;
+
+template <typename T, std::size_t N>
+T read_choice(const json& value, const std::string& path, const Choice<T> (&choices)[N]) {
+    if (value.is_string()) {
+        for (const auto& [name, choice] : choices) {
+            if (value.get<std::string>() == name) return choice;
+        }
+    }
+    std::string names;
+    for (const auto& choice : choices) {
+        names += (names.empty() ? "\"" : ", \"") + std::string(choice.first) + "\"";
+    }
+    fail(path + " must be one of " + names + ", got " + describe(value));
+}
+
+template <typename T, std::size_t N>
+const char* choice_name(T choice, const Choice<T> (&choices)[N]) {
+    for (const auto& [name, value] : choices) {
+        if (value == choice) return name;
+    }
+    return "?";
+}
+
+const Choice<ShapeKind> kShapeKinds[] = {{"line", ShapeKind::line},
+                                         {"serpentine", ShapeKind::serpentine},
+                                         {"helix", ShapeKind::helix},
+                                         {"points", ShapeKind::points}};
+const Choice<IntegratorKind> kIntegrators[] = {{"rk4", IntegratorKind::rk4},
+                                               {"symplectic_euler", IntegratorKind::symplectic_euler},
+                                               {"implicit_euler", IntegratorKind::implicit_euler}};
+const Choice<int32_t> kPinnedEnds[] = {
+    {"none", pin_none}, {"first", pin_first}, {"last", pin_last}, {"both", pin_both}};
+
+// ---- objects -----------------------------------------------------------------------
+
+// One key an object may hold and how its value goes into the config part T. A key with
+// no reader is reserved: a later version of the format will accept it.
+template <typename T>
+struct Key {
+    const char* name;
+    void (*read)(const json& value, const std::string& path, T& target);
+};
+
+template <typename T, std::size_t N>
+void read_object(const json& object, const std::string& path, const Key<T> (&keys)[N], T& target) {
+    if (!object.is_object()) {
+        const std::string subject = path.empty() ? "the scene" : path;
+        fail(subject + " must be an object, got " + describe(object));
+    }
+    for (const auto& [name, value] : object.items()) {
+        const Key<T>* known = nullptr;
+        for (const Key<T>& key : keys) {
+            if (name == key.name) known = &key;
+        }
+        if (known != nullptr && known->read == nullptr) {
+            fail(child(path, name) + " is not supported by this version");
+        }
+        if (known == nullptr) {
+            std::string expected;
+            for (const Key<T>& key : keys) {
+                if (key.read != nullptr) expected += (expected.empty() ? "" : ", ") + std::string(key.name);
+            }
+            fail("unknown key " + quote(name) + " " + place(path) + " (expected one of: " + expected + ")");
+        }
+        known->read(value, child(path, name), target);
+    }
+}
+
+// The shape keys that each kind uses; any other is a mistake worth reporting.
+constexpr unsigned kind_bit(ShapeKind kind) { return 1u << static_cast<unsigned>(kind); }
+const std::pair<const char*, unsigned> kShapeKeyKinds[] = {
+    {"center", kind_bit(ShapeKind::line) | kind_bit(ShapeKind::serpentine) | kind_bit(ShapeKind::helix)},
+    {"direction", kind_bit(ShapeKind::line)},
+    {"leg_length", kind_bit(ShapeKind::serpentine)},
+    {"leg_spacing", kind_bit(ShapeKind::serpentine)},
+    {"helix_radius", kind_bit(ShapeKind::helix)},
+    {"helix_pitch", kind_bit(ShapeKind::helix)},
+    {"points", kind_bit(ShapeKind::points)},
+};
+
+void read_points(const json& value, const std::string& path, ShapeConfig& shape) {
+    if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
+    shape.points.clear();
+    shape.points.reserve(3 * value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const Vec3 point = read_vec3(value[i], element(path, i));
+        shape.points.insert(shape.points.end(), point.begin(), point.end());
+    }
+}
+
+const Key<ShapeConfig> kShapeKeys[] = {
+    {"kind", [](auto& v, auto& p, auto& c) { c.kind = read_choice(v, p, kShapeKinds); }},
+    {"center", [](auto& v, auto& p, auto& c) { c.center = read_vec3(v, p); }},
+    {"direction", [](auto& v, auto& p, auto& c) { c.direction = read_vec3(v, p); }},
+    {"leg_length", [](auto& v, auto& p, auto& c) { c.leg_length = read_number(v, p); }},
+    {"leg_spacing", [](auto& v, auto& p, auto& c) { c.leg_spacing = read_number(v, p); }},
+    {"helix_radius", [](auto& v, auto& p, auto& c) { c.helix_radius = read_number(v, p); }},
+    {"helix_pitch", [](auto& v, auto& p, auto& c) { c.helix_pitch = read_number(v, p); }},
+    {"points", read_points},
+};
+
+void read_shape(const json& value, const std::string& path, ShapeConfig& shape) {
+    read_object(value, path, kShapeKeys, shape);
+    for (const auto& [key, kinds] : kShapeKeyKinds) {
+        if (value.contains(key) && (kinds & kind_bit(shape.kind)) == 0) {
+            const std::string kind = choice_name(shape.kind, kShapeKinds);
+            fail(child(path, key) + " does not apply to kind \"" + kind + "\"");
+        }
+    }
+}
+
+const Key<IntestineConfig> kIntestineKeys[] = {
+    {"length", [](auto& v, auto& p, auto& c) { c.length = read_number(v, p); }},
+    {"radius", [](auto& v, auto& p, auto& c) { c.radius = read_number(v, p); }},
+    {"control_points", [](auto& v, auto& p, auto& c) { c.control_points = read_count(v, p); }},
+    {"linear_density", [](auto& v, auto& p, auto& c) { c.linear_density = read_number(v, p); }},
+    {"stretch_stiffness", [](auto& v, auto& p, auto& c) { c.stretch_stiffness = read_number(v, p); }},
+    {"bend_stiffness", [](auto& v, auto& p, auto& c) { c.bend_stiffness = read_number(v, p); }},
+    {"shape", [](auto& v, auto& p, auto& c) { read_shape(v, p, c.shape); }},
+};
+
+void read_intestine(const json& value, const std::string& path, IntestineConfig& intestine) {
+    read_object(value, path, kIntestineKeys, intestine);
+    // Explicit points set the control point count unless it is given too.
+    if (intestine.shape.kind == ShapeKind::points && !value.contains("control_points")) {
+        intestine.control_points = intestine.shape.points.size() / 3;
+    }
+}
+
+const Key<SolverConfig> kSolverKeys[] = {
+    {"integrator", [](auto& v, auto& p, auto& c) { c.integrator = read_choice(v, p, kIntegrators); }},
+    {"timestep", [](auto& v, auto& p, auto& c) { c.timestep = read_number(v, p); }},
+    {"max_substeps", [](auto& v, auto& p, auto& c) { c.max_substeps = read_count(v, p); }},
+    {"max_subdivisions", [](auto& v, auto& p, auto& c) { c.max_subdivisions = read_count(v, p); }},
+    {"max_speed", [](auto& v, auto& p, auto& c) { c.max_speed = read_number(v, p); }},
+};
+
+const Key<DampingConfig> kDampingKeys[] = {
+    {"drag", [](auto& v, auto& p, auto& c) { c.drag = read_number(v, p); }},
+    {"stretch", [](auto& v, auto& p, auto& c) { c.stretch = read_number(v, p); }},
+    {"bend", [](auto& v, auto& p, auto& c) { c.bend = read_number(v, p); }},
+};
+
+void read_root(const json& value, const std::string& path, MesenteryConfig& mesentery) {
+    if (!value.is_array() || value.size() != 2) {
+        fail(path + " must be an array of 2 points [[x, y, z], [x, y, z]], got " + describe(value));
+    }
+    mesentery.root_start = read_vec3(value[0], element(path, 0));
+    mesentery.root_end = read_vec3(value[1], element(path, 1));
+}
+
+const Key<MesenteryConfig> kMesenteryKeys[] = {
+    {"root", read_root},
+    {"stiffness", [](auto& v, auto& p, auto& c) { c.stiffness = read_number(v, p); }},
+    {"attachments", [](auto& v, auto& p, auto& c) { c.attachments = read_count(v, p); }},
+    {"rest_length", [](auto& v, auto& p, auto& c) { c.rest_length = read_number(v, p); }},
+};
+
+void read_pinned_points(const json& value, const std::string& path, PinnedConfig& pinned) {
+    if (!value.is_array()) fail(path + " must be an array of control point indices, got " + describe(value));
+    pinned.points.clear();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const auto index = read_count(value[i], element(path, i), std::numeric_limits<uint32_t>::max());
+        pinned.points.push_back(static_cast<uint32_t>(index));
+    }
+}
+
+const Key<PinnedConfig> kPinnedKeys[] = {
+    {"ends", [](auto& v, auto& p, auto& c) { c.ends = read_choice(v, p, kPinnedEnds); }},
+    {"control_points", read_pinned_points},
+};
+
+void read_version(const json& value, const std::string& path, SceneConfig&) {
+    if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
+}
+
+// Present object = effect on, starting from its defaults.
+const Key<SceneConfig> kSceneKeys[] = {
+    {"version", read_version},
+    {"intestine", [](auto& v, auto& p, auto& c) { read_intestine(v, p, c.intestine); }},
+    {"solver", [](auto& v, auto& p, auto& c) { read_object(v, p, kSolverKeys, c.solver); }},
+    {"gravity", [](auto& v, auto& p, auto& c) { c.gravity = read_vec3(v, p); }},
+    {"damping", [](auto& v, auto& p, auto& c) { read_object(v, p, kDampingKeys, c.damping.emplace()); }},
+    {"mesentery",
+     [](auto& v, auto& p, auto& c) { read_object(v, p, kMesenteryKeys, c.mesentery.emplace()); }},
+    {"pinned", [](auto& v, auto& p, auto& c) { read_object(v, p, kPinnedKeys, c.pinned.emplace()); }},
+    {"self_collision", nullptr},
+    {"environment", nullptr},
+    {"tools", nullptr},
+};
+
+// ---- parsing -----------------------------------------------------------------------
+
+// nlohmann silently keeps the last of two equal keys; a scene that says "radius" twice is a
+// mistake to report. Follows the parser's events to know which object holds the key.
+class DuplicateKeyCheck {
+public:
+    void on_event(json::parse_event_t event, const json& parsed) {
+        switch (event) {
+            case json::parse_event_t::object_start: open_.push_back({false, 0, {}, {}}); break;
+            case json::parse_event_t::array_start: open_.push_back({true, 0, {}, {}}); break;
+            case json::parse_event_t::key: {
+                Container& object = open_.back();
+                object.key = parsed.get<std::string>();
+                if (!object.keys.insert(object.key).second) {
+                    fail("duplicate key " + quote(object.key) + " " + place(shorten(innermost_path())));
+                }
+                break;
+            }
+            case json::parse_event_t::value: count_element(); break;
+            case json::parse_event_t::object_end:
+            case json::parse_event_t::array_end:
+                open_.pop_back();
+                count_element();
+                break;
+        }
+    }
+
+private:
+    struct Container {
+        bool is_array;
+        std::size_t elements;        // arrays: elements completed so far
+        std::string key;             // objects: the key being read
+        std::set<std::string> keys;  // objects: keys seen
+    };
+
+    void count_element() {
+        if (!open_.empty() && open_.back().is_array) ++open_.back().elements;
+    }
+
+    std::string innermost_path() const {
+        std::string path;
+        for (std::size_t i = 0; i + 1 < open_.size(); ++i) {
+            path = open_[i].is_array ? element(path, open_[i].elements) : child(path, open_[i].key);
+        }
+        return path;
+    }
+
+    std::vector<Container> open_;
+};
+
+// nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1,
+// column 2: <detail>"; keep the location and the detail.
+[[noreturn]] void fail_parse(const json::parse_error& error) {
+    const std::string what = error.what();
+    const std::string marker = "parse error at ";
+    const std::size_t at = what.find(marker);
+    const std::size_t colon = at == std::string::npos ? at : what.find(": ", at);
+    std::string message = "JSON parse error at byte " + std::to_string(error.byte);
+    if (colon != std::string::npos) {
+        const std::size_t location = at + marker.size();
+        message += " (" + what.substr(location, colon - location) + "): " + what.substr(colon + 2);
+    } else {
+        message += ": " + what;
+    }
+    throw Error(ErrorCode::parse, message);
+}
+
+json parse(const char* text, std::size_t length) {
+    DuplicateKeyCheck duplicates;
+    try {
+        return json::parse(text, text + length, [&duplicates](int, json::parse_event_t event, json& parsed) {
+            duplicates.on_event(event, parsed);
+            return true;
+        });
+    } catch (const json::parse_error& error) {
+        fail_parse(error);
+    } catch (const json::exception& error) {  // e.g. out_of_range 406: a number that overflows a double
+        const std::string what = error.what();
+        const std::size_t prefix_end = what.find("] ");
+        const std::string detail = prefix_end == std::string::npos ? what : what.substr(prefix_end + 2);
+        throw Error(ErrorCode::parse, "JSON parse error: " + detail);
+    }
+}
+
+}  // namespace
+
+SceneConfig load_scene_json(const char* text, std::size_t length) {
+    if (text == nullptr && length != 0) throw Error(ErrorCode::invalid_argument, "json is NULL");
+    static const char kEmpty[] = "";
+    const json document = parse(text != nullptr ? text : kEmpty, length);
+    SceneConfig config;
+    read_object(document, "", kSceneKeys, config);
+    validate(config, json_field_names());
+    return config;
+}
+
+}  // namespace enteron::scene

@@ -1,0 +1,197 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "base/error.h"
+#include "mechanics/bend_force.h"
+#include "mechanics/damping_force.h"
+#include "mechanics/gravity_force.h"
+#include "mechanics/mesentery_force.h"
+#include "mechanics/pinned_points.h"
+#include "mechanics/stretch_force.h"
+#include "scene/shape_builder.h"
+
+namespace enteron::scene {
+
+namespace {
+
+using namespace enteron::mechanics;
+
+// The guard's allowance for energy appearing in one step: an explicit method's energy
+// wobbles, an explosion at least doubles it. Below this floor (a bowel at rest) the
+// allowance is the kinetic energy of the whole bowel at 0.1 m/s.
+constexpr double kEnergyGrowthFactor = 1.0;
+constexpr double kEnergyFloorSpeed = 0.1;  // m/s
+
+AxisModel make_model(const IntestineConfig& intestine) {
+    AxisModel model;
+    model.control_points = intestine.control_points;
+    model.rest_segment_length = intestine.length / static_cast<double>(intestine.control_points - 1);
+    model.linear_density = intestine.linear_density;
+    return model;
+}
+
+std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t count) {
+    std::vector<uint32_t> points = pinned.points;
+    if (pinned.ends & pin_first) points.push_back(0);
+    if (pinned.ends & pin_last) points.push_back(static_cast<uint32_t>(count - 1));
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    return points;
+}
+
+bool all_finite(const std::pmr::vector<double>& values) {
+    for (double v : values)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+double max_speed(const State& state) {
+    double fastest = 0.0;
+    for (std::size_t i = 0; i + 2 < state.v.size(); i += 3) {
+        const double* v = &state.v[i];
+        fastest = std::max(fastest, v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    }
+    return std::sqrt(fastest);
+}
+
+uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
+    return static_cast<uint64_t>(
+        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace
+
+Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logger logger)
+    : memory_(memory),
+      logger_(logger),
+      solver_(config.solver),
+      model_(make_model(config.intestine)),
+      dynamics_(model_, memory),
+      state_(memory),
+      backup_(memory),
+      explicit_substep_limit_(0.0),
+      total_mass_(config.intestine.linear_density * config.intestine.length),
+      publisher_(3 * model_.control_points, memory) {
+    const IntestineConfig& intestine = config.intestine;
+    const std::size_t n = model_.control_points;
+    state_.resize(n);
+    backup_.resize(n);
+    build_shape(intestine.shape, intestine.length, n, state_.q.data());
+
+    if (intestine.stretch_stiffness)
+        dynamics_.add_effect(make_owned<StretchForce>(memory, model_, *intestine.stretch_stiffness, memory));
+    if (intestine.bend_stiffness)
+        dynamics_.add_effect(make_owned<BendForce>(memory, model_, *intestine.bend_stiffness, memory));
+    if (config.damping) {
+        const DampingCoefficients coefficients{config.damping->drag, config.damping->stretch,
+                                               config.damping->bend};
+        dynamics_.add_effect(make_owned<DampingForce>(memory, model_, coefficients, memory));
+    }
+    if (config.gravity) dynamics_.add_effect(make_owned<GravityForce>(memory, model_, *config.gravity, memory));
+    if (config.mesentery) {
+        const MesenteryConfig& m = *config.mesentery;
+        const MesenteryParameters parameters{m.root_start, m.root_end, m.attachments, m.stiffness,
+                                             m.rest_length};
+        dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state_, memory));
+    }
+    if (config.pinned)
+        dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), memory));
+    dynamics_.finalize();
+
+    const auto kind = static_cast<mechanics::IntegratorKind>(static_cast<int32_t>(solver_.integrator));
+    integrator_ = make_integrator(kind, 3 * n, memory);
+    explicit_substep_limit_ = dynamics_.explicit_substep_limit(integrator_->stability_interval());
+    kinetic_energy_ = dynamics_.kinetic_energy(state_);
+    potential_energy_ = dynamics_.potential_energy(state_);
+    if (logger_.enabled())
+        logger_.log(LogLevel::info, "scene: %zu control points, substep limit %g s (integrator %d)", n,
+                    std::min(solver_.timestep, explicit_substep_limit_), static_cast<int>(kind));
+    publish();
+}
+
+void Scene::step(double dt) {
+    const auto start = std::chrono::steady_clock::now();
+    if (!std::isfinite(dt) || !(dt > 0.0)) {
+        char message[128];
+        std::snprintf(message, sizeof message, "dt_s must be finite and > 0, got %g", dt);
+        throw Error(ErrorCode::invalid_argument, message);
+    }
+    const double longest = std::min(solver_.timestep, explicit_substep_limit_);
+    const double needed = std::ceil(dt / longest * (1.0 - 1e-12));
+    if (!(needed <= static_cast<double>(solver_.max_substeps))) {
+        char message[256];
+        std::snprintf(message, sizeof message,
+                      "dt_s = %g needs %g substeps of at most %g s, more than max_substeps (%zu)", dt,
+                      needed, longest, solver_.max_substeps);
+        throw Error(ErrorCode::invalid_argument, message);
+    }
+    const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
+
+    backup_.assign(state_);
+    for (std::size_t attempt = 0; attempt <= solver_.max_subdivisions; ++attempt) {
+        if (try_step(dt, substeps << attempt)) {
+            stats_.steps += 1;
+            stats_.last_step_ns = elapsed_ns(start);
+            publish();
+            return;
+        }
+        state_.assign(backup_);
+        stats_.rollbacks += 1;
+        logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard; retrying with %zu substeps",
+                    state_.time, substeps << (attempt + 1));
+    }
+    stats_.last_step_ns = elapsed_ns(start);
+    publish();  // the same state, with the counters of the failed attempts
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "the step of %g s at t = %g s stayed unstable after %zu subdivisions; the state is "
+                  "unchanged", dt, state_.time, solver_.max_subdivisions);
+    throw Error(ErrorCode::unstable, message);
+}
+
+bool Scene::try_step(double dt, std::size_t substeps) {
+    const double h = dt / static_cast<double>(substeps);
+    const double start_time = state_.time;
+    for (std::size_t i = 0; i < substeps; ++i) {
+        stats_.substeps += 1;
+        if (!integrator_->step(dynamics_, state_, h)) return false;
+        if (!all_finite(state_.v) || !all_finite(state_.q)) return false;
+    }
+    state_.time = start_time + dt;  // no drift from summing substeps
+    if (!(max_speed(state_) <= solver_.max_speed)) return false;
+
+    const double kinetic = dynamics_.kinetic_energy(state_);
+    const double potential = dynamics_.potential_energy(state_);
+    const double floor = 0.5 * total_mass_ * kEnergyFloorSpeed * kEnergyFloorSpeed;
+    const double allowance =
+        std::max(floor, kEnergyGrowthFactor * (kinetic_energy_ + dynamics_.deformation_energy(backup_)));
+    if (!(kinetic + potential <= kinetic_energy_ + potential_energy_ + allowance)) return false;
+    kinetic_energy_ = kinetic;
+    potential_energy_ = potential;
+    return true;
+}
+
+void Scene::publish() {
+    Snapshot* slot = publisher_.begin_write();
+    if (slot == nullptr) {
+        logger_.log(LogLevel::warning, "every snapshot slot is being read; publication skipped");
+        return;
+    }
+    std::copy(state_.q.begin(), state_.q.end(), slot->control_points.begin());
+    stats_.time = state_.time;
+    stats_.kinetic_energy = kinetic_energy_;
+    stats_.potential_energy = potential_energy_;
+    slot->stats = stats_;
+    for (std::size_t e = 0; e < kEffectCount; ++e) {
+        const EffectId id = static_cast<EffectId>(e);
+        const EffectCounters& counters = dynamics_.counters(id);
+        slot->effects[e] = EffectStats{dynamics_.has_effect(id), counters.calls, counters.total_time_ns};
+    }
+    publisher_.publish(slot);
+}
+
+}  // namespace enteron::scene

@@ -1,0 +1,78 @@
+// A scene description in C++ terms, whatever it came from (the C struct or JSON v1).
+// An effect that the description does not name is an empty optional here, and is then
+// never built.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace enteron::scene {
+
+using Vec3 = std::array<double, 3>;
+
+enum class ShapeKind : int32_t { line = 0, serpentine = 1, helix = 2, points = 3 };
+enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2 };
+
+struct ShapeConfig {
+    ShapeKind kind = ShapeKind::helix;
+    Vec3 center{0.0, 0.0, 0.0};     // m
+    Vec3 direction{1.0, 0.0, 0.0};  // line only; normalised when built
+    double leg_length = 0.3;        // serpentine, m
+    double leg_spacing = 0.05;      // serpentine, m
+    double helix_radius = 0.1;      // m
+    double helix_pitch = 0.03;      // m per turn
+    std::vector<double> points;     // points only: control_points x 3, m
+};
+
+struct IntestineConfig {
+    double length = 6.0;             // m
+    double radius = 0.0125;          // m
+    std::size_t control_points = 240;
+    double linear_density = 0.3;     // kg/m
+    std::optional<double> stretch_stiffness;  // EA, N: the stretch effect
+    std::optional<double> bend_stiffness;     // EI, N m^2: the bend effect
+    ShapeConfig shape;
+};
+
+struct SolverConfig {
+    IntegratorKind integrator = IntegratorKind::implicit_euler;
+    double timestep = 1e-3;          // s
+    std::size_t max_substeps = 1000;
+    std::size_t max_subdivisions = 4;
+    double max_speed = 50.0;         // m/s
+};
+
+struct DampingConfig {
+    double drag = 0.05;     // N s / m^2
+    double stretch = 0.05;  // N s
+    double bend = 0.0;      // N m^2 s
+};
+
+struct MesenteryConfig {
+    Vec3 root_start{-0.075, 0.0, 0.0};  // m
+    Vec3 root_end{0.075, 0.0, 0.0};     // m
+    std::size_t attachments = 60;
+    double stiffness = 5.0;             // N/m per spring
+    double rest_length = 0.0;           // m; 0: each spring's initial length
+};
+
+enum PinnedEnds : int32_t { pin_none = 0, pin_first = 1, pin_last = 2, pin_both = 3 };
+
+struct PinnedConfig {
+    int32_t ends = pin_none;
+    std::vector<uint32_t> points;  // further control point indices
+};
+
+struct SceneConfig {
+    IntestineConfig intestine;
+    SolverConfig solver;
+    std::optional<Vec3> gravity;  // m/s^2
+    std::optional<DampingConfig> damping;
+    std::optional<MesenteryConfig> mesentery;
+    std::optional<PinnedConfig> pinned;
+};
+
+}  // namespace enteron::scene

@@ -1,0 +1,81 @@
+// The published state of a scene: an immutable copy made after each step, read by any
+// number of threads (queries, skins, the LCM bridge) while the stepping thread goes on.
+//
+// A small pool of preallocated slots: the stepping thread fills a slot that is neither the
+// latest nor being read, then makes it the latest; a reader pins the latest slot while it
+// copies from it. The mutex guards only the slot bookkeeping (a few integer operations),
+// so the stepping thread never waits on a reader for longer than that.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory_resource>
+#include <mutex>
+#include <vector>
+
+#include "mechanics/effect_id.h"
+
+namespace enteron::scene {
+
+struct SceneStats {
+    double time = 0.0;            // s
+    uint64_t steps = 0;
+    uint64_t substeps = 0;
+    uint64_t rollbacks = 0;
+    double kinetic_energy = 0.0;  // J
+    double potential_energy = 0.0;
+    uint32_t contacts = 0;
+    double max_penetration = 0.0;  // m
+    uint64_t last_step_ns = 0;
+};
+
+struct EffectStats {
+    bool enabled = false;
+    uint64_t calls = 0;
+    uint64_t total_time_ns = 0;
+};
+
+struct Snapshot {
+    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory) {}
+    std::pmr::vector<double> control_points;  // x y z per point, m
+    SceneStats stats;
+    std::array<EffectStats, kEffectCount> effects{};
+};
+
+class SnapshotPublisher {
+public:
+    static constexpr std::size_t kSlots = 8;
+
+    SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory);
+
+    // A slot the stepping thread may fill, or nullptr if every slot is busy (then this
+    // publication is skipped; the next one will go through).
+    Snapshot* begin_write();
+    // Makes the slot from begin_write the latest.
+    void publish(Snapshot* slot);
+
+    // Pins the latest snapshot for reading while it lives.
+    class Reader {
+    public:
+        Reader(const SnapshotPublisher& publisher);
+        ~Reader();
+        Reader(const Reader&) = delete;
+        Reader& operator=(const Reader&) = delete;
+        const Snapshot& operator*() const { return *snapshot_; }
+        const Snapshot* operator->() const { return snapshot_; }
+
+    private:
+        const SnapshotPublisher& publisher_;
+        std::size_t slot_;
+        const Snapshot* snapshot_;
+    };
+
+private:
+    mutable std::mutex mutex_;
+    std::pmr::vector<Snapshot> slots_;
+    mutable std::array<uint32_t, kSlots> readers_{};
+    std::size_t latest_ = 0;
+};
+
+}  // namespace enteron::scene

@@ -1,0 +1,115 @@
+#include "spline/arc_length.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numerics/gauss_legendre.h"
+#include "spline/catmull_rom.h"
+
+namespace enteron::spline {
+
+namespace {
+
+constexpr std::size_t kSubdivisions = 8;  // intervals per segment
+
+double speed_at(const double* points, std::size_t count, double s) {
+    double d[3];
+    evaluate(points, weights_at(count, s, Derivative::first), d);
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+double integrate_between(const double* points, std::size_t count, double s0, double s1) {
+    // Within one interval the speed is smooth: 5-point Gauss is accurate to ~1e-12.
+    constexpr auto rule = numerics::gauss_legendre<5>();
+    double sum = 0.0;
+    for (const auto& node : rule) sum += node.weight * speed_at(points, count, s0 + (s1 - s0) * node.t);
+    return sum * (s1 - s0);
+}
+
+// The parameter in [s_lo, s_hi] at arc length `target`, where the interval starts at
+// arc length `start` and is `span` long: interpolation, then Newton's method.
+double invert_in_interval(const double* points, std::size_t count, double s_lo, double s_hi, double start,
+                          double span, double target, double total) {
+    double s = span > 0.0 ? s_lo + (target - start) / span * (s_hi - s_lo) : s_lo;
+    for (int iteration = 0; iteration < 4; ++iteration) {
+        const double error = start + integrate_between(points, count, s_lo, s) - target;
+        const double v = speed_at(points, count, s);
+        if (!(v > 0.0)) break;  // a degenerate (zero-speed) stretch: keep the interpolated guess
+        s = std::clamp(s - error / v, s_lo, s_hi);
+        if (std::fabs(error) < 1e-14 * (1.0 + total)) break;
+    }
+    return s;
+}
+
+double interval_end(std::size_t k, std::size_t count) {
+    return std::min(double(k + 1) / kSubdivisions, double(count - 1));
+}
+
+}  // namespace
+
+double ArcLengthTable::speed(double s) const { return speed_at(points_, count_, s); }
+
+double ArcLengthTable::integrate(double s0, double s1) const { return integrate_between(points_, count_, s0, s1); }
+
+void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samples, double* out_xyz) {
+    const std::size_t intervals = (count - 1) * kSubdivisions;
+    double total = 0.0;
+    for (std::size_t k = 0; k < intervals; ++k)
+        total += integrate_between(points_xyz, count, double(k) / kSubdivisions, interval_end(k, count));
+    evaluate(points_xyz, weights_at(count, 0.0, Derivative::value), out_xyz);
+    std::size_t next = 1;
+    double start = 0.0;
+    for (std::size_t k = 0; k < intervals && next + 1 < samples; ++k) {
+        const double s_lo = double(k) / kSubdivisions, s_hi = interval_end(k, count);
+        const double span = integrate_between(points_xyz, count, s_lo, s_hi);
+        for (; next + 1 < samples; ++next) {
+            const double target = total * double(next) / double(samples - 1);
+            if (target > start + span) break;
+            const double s = invert_in_interval(points_xyz, count, s_lo, s_hi, start, span, target, total);
+            evaluate(points_xyz, weights_at(count, s, Derivative::value), out_xyz + 3 * next);
+        }
+        start += span;
+    }
+    // Round-off may leave samples just short of the end; the last is the end point itself.
+    for (; next < samples; ++next)
+        evaluate(points_xyz, weights_at(count, double(count - 1), Derivative::value), out_xyz + 3 * next);
+}
+
+void ArcLengthTable::build(const double* points_xyz, std::size_t count) {
+    points_ = points_xyz;
+    count_ = count;
+    const std::size_t entries = (count - 1) * kSubdivisions + 1;
+    cumulative_.resize(entries);
+    cumulative_[0] = 0.0;
+    for (std::size_t k = 1; k < entries; ++k)
+        cumulative_[k] = cumulative_[k - 1] + integrate(double(k - 1) / kSubdivisions, interval_end(k - 1, count));
+}
+
+double ArcLengthTable::length_at(double s) const {
+    s = std::clamp(s, 0.0, double(count_ - 1));
+    const std::size_t k = std::min(static_cast<std::size_t>(s * kSubdivisions), cumulative_.size() - 1);
+    const double s0 = double(k) / kSubdivisions;
+    return cumulative_[k] + (s > s0 ? integrate(s0, s) : 0.0);
+}
+
+double ArcLengthTable::parameter_at(double length) const {
+    const double total = total_length();
+    if (!(length > 0.0)) return 0.0;
+    if (length >= total) return double(count_ - 1);
+    // The table interval that holds `length`, then Newton's method inside it.
+    const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), length);
+    const std::size_t k = static_cast<std::size_t>(it - cumulative_.begin()) - 1;
+    return invert_in_interval(points_, count_, double(k) / kSubdivisions, interval_end(k, count_), cumulative_[k],
+                              cumulative_[k + 1] - cumulative_[k], length, total);
+}
+
+void ArcLengthTable::sample_evenly(std::size_t samples, double* out_xyz) const {
+    const double total = total_length();
+    for (std::size_t i = 0; i < samples; ++i) {
+        const double target = total * double(i) / double(samples - 1);
+        const double s = i + 1 == samples ? double(count_ - 1) : parameter_at(target);
+        evaluate(points_, weights_at(count_, s, Derivative::value), out_xyz + 3 * i);
+    }
+}
+
+}  // namespace enteron::spline

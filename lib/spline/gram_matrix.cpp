@@ -1,0 +1,19 @@
+#include "spline/gram_matrix.h"
+
+#include "numerics/gauss_legendre.h"
+
+namespace enteron::spline {
+
+void add_gram_matrix(std::size_t count, Derivative order, double scale, ScalarBandMatrix& out) {
+    constexpr auto rule = numerics::gauss_legendre<4>();
+    for (std::size_t segment = 0; segment + 1 < count; ++segment) {
+        for (const auto& node : rule) {
+            const SegmentWeights sw = segment_weights(count, segment, node.t, order);
+            for (int j = 0; j < 4; ++j)
+                for (int k = 0; k <= j; ++k)
+                    out.lower(sw.first + j, sw.first + k) += scale * node.weight * sw.w[j] * sw.w[k];
+        }
+    }
+}
+
+}  // namespace enteron::spline

@@ -1,0 +1,23 @@
+// Gram matrices of the spline basis: G_jk = scale * sum over segments of the integral over
+// t in [0, 1] of w_j(t) w_k(t), for the weights w of one derivative order. They are banded
+// (half bandwidth 3) and constant, so they are built once:
+//   mass matrix      M   = gram(value,  mu * l0)      kinetic energy 1/2 v^T M v
+//   bending matrix   K_b = gram(second, EI / l0^3)    bending energy 1/2 q^T K_b q
+//   axial reference  K_a = gram(first,  EA / l0)      the stretch Hessian's axial bound
+// where l0 is the rest length of a segment (the parameter maps to arc length as ds = l0 dt).
+#pragma once
+
+#include <cstddef>
+
+#include "numerics/banded_matrix.h"
+#include "spline/catmull_rom.h"
+
+namespace enteron::spline {
+
+using ScalarBandMatrix = numerics::BandedSpdMatrix<3>;
+
+// Adds the Gram matrix to `out`, which must already be count x count. Four-point Gauss
+// quadrature per segment: exact, since the integrand is a polynomial of degree <= 6.
+void add_gram_matrix(std::size_t count, Derivative order, double scale, ScalarBandMatrix& out);
+
+}  // namespace enteron::spline

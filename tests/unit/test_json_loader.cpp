@@ -1,0 +1,555 @@
+// The JSON v1 loader and the shared scene validation: what a document turns into, and the
+// exact error (code and message) for each kind of mistake.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "base/error.h"
+#include "scene/json_loader.h"
+#include "scene/validate.h"
+
+namespace enteron::scene {
+namespace {
+
+SceneConfig load(const std::string& text) { return load_scene_json(text.data(), text.size()); }
+
+// The error that loading text raises; a test failure if it raises none.
+Error load_error(const std::string& text) {
+    try {
+        load(text);
+    } catch (const Error& error) {
+        return error;
+    }
+    ADD_FAILURE() << "no error for: " << text;
+    return Error(ErrorCode::internal, "");
+}
+
+Error validate_error(const SceneConfig& config, const FieldNames& names) {
+    try {
+        validate(config, names);
+    } catch (const Error& error) {
+        return error;
+    }
+    ADD_FAILURE() << "validate raised no error";
+    return Error(ErrorCode::internal, "");
+}
+
+void expect_scene_error(const std::string& text, const std::string& message) {
+    const Error error = load_error(text);
+    EXPECT_EQ(error.code(), ErrorCode::invalid_scene) << text;
+    EXPECT_EQ(std::string(error.what()), message) << text;
+}
+
+bool starts_with(const std::string& text, const std::string& prefix) {
+    return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+// ---- documents that load -----------------------------------------------------------
+
+TEST(JsonLoader, FullDocumentGivesEveryValue) {
+    const SceneConfig c = load(R"({
+      "version": 1,
+      "intestine": {
+        "length": 2.5, "radius": 0.01, "control_points": 80, "linear_density": 0.25,
+        "stretch_stiffness": 120, "bend_stiffness": 0.002,
+        "shape": { "kind": "helix", "center": [0.1, 0.2, 0.3], "helix_radius": 0.12, "helix_pitch": 0.04 }
+      },
+      "solver": { "integrator": "rk4", "timestep": 0.0005, "max_substeps": 200,
+                  "max_subdivisions": 6, "max_speed": 20 },
+      "gravity": [0, -9.81, 0],
+      "damping": { "drag": 0.1, "stretch": 0.2, "bend": 0.001 },
+      "mesentery": { "root": [[-0.1, 0, 0], [0.1, 0, 0.05]], "stiffness": 7.5, "attachments": 40,
+                     "rest_length": 0.02 },
+      "pinned": { "ends": "last", "control_points": [3, 40] }
+    })");
+    EXPECT_EQ(c.intestine.length, 2.5);
+    EXPECT_EQ(c.intestine.radius, 0.01);
+    EXPECT_EQ(c.intestine.control_points, 80u);
+    EXPECT_EQ(c.intestine.linear_density, 0.25);
+    ASSERT_TRUE(c.intestine.stretch_stiffness.has_value());
+    EXPECT_EQ(*c.intestine.stretch_stiffness, 120.0);
+    ASSERT_TRUE(c.intestine.bend_stiffness.has_value());
+    EXPECT_EQ(*c.intestine.bend_stiffness, 0.002);
+    EXPECT_EQ(c.intestine.shape.kind, ShapeKind::helix);
+    EXPECT_EQ(c.intestine.shape.center, (Vec3{0.1, 0.2, 0.3}));
+    EXPECT_EQ(c.intestine.shape.helix_radius, 0.12);
+    EXPECT_EQ(c.intestine.shape.helix_pitch, 0.04);
+    EXPECT_EQ(c.solver.integrator, IntegratorKind::rk4);
+    EXPECT_EQ(c.solver.timestep, 0.0005);
+    EXPECT_EQ(c.solver.max_substeps, 200u);
+    EXPECT_EQ(c.solver.max_subdivisions, 6u);
+    EXPECT_EQ(c.solver.max_speed, 20.0);
+    ASSERT_TRUE(c.gravity.has_value());
+    EXPECT_EQ(*c.gravity, (Vec3{0.0, -9.81, 0.0}));
+    ASSERT_TRUE(c.damping.has_value());
+    EXPECT_EQ(c.damping->drag, 0.1);
+    EXPECT_EQ(c.damping->stretch, 0.2);
+    EXPECT_EQ(c.damping->bend, 0.001);
+    ASSERT_TRUE(c.mesentery.has_value());
+    EXPECT_EQ(c.mesentery->root_start, (Vec3{-0.1, 0.0, 0.0}));
+    EXPECT_EQ(c.mesentery->root_end, (Vec3{0.1, 0.0, 0.05}));
+    EXPECT_EQ(c.mesentery->stiffness, 7.5);
+    EXPECT_EQ(c.mesentery->attachments, 40u);
+    EXPECT_EQ(c.mesentery->rest_length, 0.02);
+    ASSERT_TRUE(c.pinned.has_value());
+    EXPECT_EQ(c.pinned->ends, pin_last);
+    EXPECT_EQ(c.pinned->points, (std::vector<uint32_t>{3, 40}));
+}
+
+TEST(JsonLoader, EmptyDocumentHasDefaultsAndNoEffects) {
+    const SceneConfig c = load("{}");
+    const SceneConfig defaults;
+    EXPECT_FALSE(c.intestine.stretch_stiffness.has_value());
+    EXPECT_FALSE(c.intestine.bend_stiffness.has_value());
+    EXPECT_FALSE(c.gravity.has_value());
+    EXPECT_FALSE(c.damping.has_value());
+    EXPECT_FALSE(c.mesentery.has_value());
+    EXPECT_FALSE(c.pinned.has_value());
+    EXPECT_EQ(c.intestine.length, defaults.intestine.length);
+    EXPECT_EQ(c.intestine.radius, defaults.intestine.radius);
+    EXPECT_EQ(c.intestine.control_points, defaults.intestine.control_points);
+    EXPECT_EQ(c.intestine.shape.kind, defaults.intestine.shape.kind);
+    EXPECT_EQ(c.solver.integrator, defaults.solver.integrator);
+    EXPECT_EQ(c.solver.timestep, defaults.solver.timestep);
+}
+
+TEST(JsonLoader, EachPresentEffectTurnsOnAloneWithItsDefaults) {
+    const SceneConfig damped = load(R"({"damping": {}})");
+    ASSERT_TRUE(damped.damping.has_value());
+    EXPECT_EQ(damped.damping->drag, DampingConfig{}.drag);
+    EXPECT_EQ(damped.damping->stretch, DampingConfig{}.stretch);
+    EXPECT_FALSE(damped.mesentery.has_value());
+    EXPECT_FALSE(damped.gravity.has_value());
+
+    const SceneConfig bent = load(R"({"intestine": {"bend_stiffness": 0.003}})");
+    EXPECT_FALSE(bent.intestine.stretch_stiffness.has_value());
+    ASSERT_TRUE(bent.intestine.bend_stiffness.has_value());
+    EXPECT_EQ(*bent.intestine.bend_stiffness, 0.003);
+    EXPECT_FALSE(bent.damping.has_value());
+
+    const SceneConfig hung = load(R"({"mesentery": {"stiffness": 2}})");
+    ASSERT_TRUE(hung.mesentery.has_value());
+    EXPECT_EQ(hung.mesentery->attachments, MesenteryConfig{}.attachments);
+    EXPECT_EQ(hung.mesentery->root_start, MesenteryConfig{}.root_start);
+
+    const SceneConfig pinned = load(R"({"pinned": {}})");
+    ASSERT_TRUE(pinned.pinned.has_value());
+    EXPECT_EQ(pinned.pinned->ends, pin_none);
+    EXPECT_TRUE(pinned.pinned->points.empty());
+}
+
+TEST(JsonLoader, LineAndSerpentineShapes) {
+    const SceneConfig line = load(R"({"intestine": {"shape": {"kind": "line", "center": [1, 2, 3],
+                                                              "direction": [0, 0, -2]}}})");
+    EXPECT_EQ(line.intestine.shape.kind, ShapeKind::line);
+    EXPECT_EQ(line.intestine.shape.center, (Vec3{1.0, 2.0, 3.0}));
+    EXPECT_EQ(line.intestine.shape.direction, (Vec3{0.0, 0.0, -2.0}));
+
+    const SceneConfig serpentine = load(R"({"intestine": {"shape": {"kind": "serpentine",
+                                                                    "leg_length": 0.4, "leg_spacing": 0.06}}})");
+    EXPECT_EQ(serpentine.intestine.shape.kind, ShapeKind::serpentine);
+    EXPECT_EQ(serpentine.intestine.shape.leg_length, 0.4);
+    EXPECT_EQ(serpentine.intestine.shape.leg_spacing, 0.06);
+}
+
+TEST(JsonLoader, IntegratorsAndPinnedEndsByName) {
+    EXPECT_EQ(load(R"({"solver": {"integrator": "symplectic_euler"}})").solver.integrator,
+              IntegratorKind::symplectic_euler);
+    EXPECT_EQ(load(R"({"solver": {"integrator": "implicit_euler"}})").solver.integrator,
+              IntegratorKind::implicit_euler);
+    EXPECT_EQ(load(R"({"pinned": {"ends": "first"}})").pinned->ends, pin_first);
+    EXPECT_EQ(load(R"({"pinned": {"ends": "both"}})").pinned->ends, pin_both);
+}
+
+TEST(JsonLoader, PointsShapeSetsControlPointCount) {
+    const SceneConfig c = load(R"({"intestine": {"length": 0.5, "shape": {"kind": "points",
+        "points": [[0, 0, 0], [0.1, 0, 0], [0.2, 0, 0], [0.3, 0, 0], [0.4, 0, 0.5]]}}})");
+    EXPECT_EQ(c.intestine.control_points, 5u);
+    EXPECT_EQ(c.intestine.shape.points,
+              (std::vector<double>{0, 0, 0, 0.1, 0, 0, 0.2, 0, 0, 0.3, 0, 0, 0.4, 0, 0.5}));
+}
+
+TEST(JsonLoader, IntegralFloatsCountAsIntegers) {
+    EXPECT_EQ(load(R"({"intestine": {"control_points": 1e2}})").intestine.control_points, 100u);
+    EXPECT_EQ(load(R"({"intestine": {"control_points": 80.0}})").intestine.control_points, 80u);
+}
+
+TEST(JsonLoader, ReadsOnlyTheGivenLength) {
+    // The buffer goes on past the document; only `length` bytes belong to it.
+    const std::string text = R"({"intestine": {"control_points": 12}})";
+    std::vector<char> buffer(text.begin(), text.end());
+    const std::string tail = R"(, "garbage": })";
+    buffer.insert(buffer.end(), tail.begin(), tail.end());  // and no NUL anywhere
+    EXPECT_EQ(load_scene_json(buffer.data(), text.size()).intestine.control_points, 12u);
+
+    // Cut short, the same bytes are not a document; the error is at its end.
+    const Error error = [&] {
+        try {
+            load_scene_json(buffer.data(), text.size() - 1);
+        } catch (const Error& e) {
+            return e;
+        }
+        return Error(ErrorCode::internal, "no error");
+    }();
+    EXPECT_EQ(error.code(), ErrorCode::parse);
+    EXPECT_TRUE(starts_with(error.what(), "JSON parse error at byte " + std::to_string(text.size()) + " "))
+        << error.what();
+}
+
+// ---- parse errors ------------------------------------------------------------------
+
+TEST(JsonLoader, ParseErrorGivesByteLineAndColumn) {
+    const Error error = load_error("{,}");
+    EXPECT_EQ(error.code(), ErrorCode::parse);
+    EXPECT_EQ(std::string(error.what()),
+              "JSON parse error at byte 2 (line 1, column 2): syntax error while parsing object key - "
+              "unexpected ','; expected string literal");
+
+    const std::string text = "{\n  \"solver\": {\"timestep\": 0.001,}\n}";
+    const Error second_line = load_error(text);
+    EXPECT_EQ(second_line.code(), ErrorCode::parse);
+    const std::size_t brace = text.find(",}") + 2;  // the byte where the parser gives up, from 1
+    EXPECT_TRUE(starts_with(second_line.what(),
+                            "JSON parse error at byte " + std::to_string(brace) + " (line 2, column "))
+        << second_line.what();
+}
+
+TEST(JsonLoader, EmptyAndNullInput) {
+    EXPECT_EQ(load_error("").code(), ErrorCode::parse);
+    EXPECT_TRUE(starts_with(load_error("").what(), "JSON parse error at byte 1 "));
+    EXPECT_EQ(load_error("   ").code(), ErrorCode::parse);
+    try {
+        load_scene_json(nullptr, 0);
+        ADD_FAILURE() << "null empty input loaded";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.code(), ErrorCode::parse);
+    }
+    try {
+        load_scene_json(nullptr, 5);
+        ADD_FAILURE() << "null input loaded";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.code(), ErrorCode::invalid_argument);
+    }
+}
+
+TEST(JsonLoader, NumberTooLargeForADoubleIsAParseError) {
+    const Error error = load_error(R"({"intestine": {"length": 1e400}})");
+    EXPECT_EQ(error.code(), ErrorCode::parse);
+    EXPECT_NE(std::string(error.what()).find("1e400"), std::string::npos) << error.what();
+}
+
+// ---- unknown, reserved and repeated keys --------------------------------------------
+
+TEST(JsonLoader, UnknownKeysAtEveryLevel) {
+    const std::string top = load_error(R"({"foo": 1})").what();
+    EXPECT_TRUE(starts_with(top, "unknown key \"foo\" at the top level (expected one of: version, intestine,"))
+        << top;
+    expect_scene_error(R"({"intestine": {"lenght": 2}})",
+                       "unknown key \"lenght\" in intestine (expected one of: length, radius, control_points, "
+                       "linear_density, stretch_stiffness, bend_stiffness, shape)");
+    const char* const nested[][2] = {
+        {R"({"intestine": {"shape": {"foo": 1}}})", "unknown key \"foo\" in intestine.shape "},
+        {R"({"solver": {"foo": 1}})", "unknown key \"foo\" in solver "},
+        {R"({"damping": {"foo": 1}})", "unknown key \"foo\" in damping "},
+        {R"({"mesentery": {"foo": 1}})", "unknown key \"foo\" in mesentery "},
+        {R"({"pinned": {"foo": 1}})", "unknown key \"foo\" in pinned "},
+    };
+    for (const auto& [text, prefix] : nested) {
+        const Error error = load_error(text);
+        EXPECT_EQ(error.code(), ErrorCode::invalid_scene);
+        EXPECT_TRUE(starts_with(error.what(), prefix)) << error.what();
+    }
+}
+
+TEST(JsonLoader, LongKeysAndStringsAreShortenedInMessages) {
+    const std::string key(10000, 'k');
+    const std::string message = load_error("{\"" + key + "\": 1}").what();
+    EXPECT_LT(message.size(), 400u);
+    EXPECT_NE(message.find("kkk...\" at the top level"), std::string::npos) << message;
+
+    // Never cut inside a UTF-8 sequence: 59 ASCII bytes, then 3-byte characters.
+    std::string text(59, 'a');
+    for (int i = 0; i < 10; ++i) text += "\xE2\x82\xAC";  // the euro sign
+    expect_scene_error("{\"intestine\": {\"length\": \"" + text + "\"}}",
+                       "intestine.length must be a number, got \"" + std::string(59, 'a') + "...\"");
+}
+
+TEST(JsonLoader, KeysOfLaterVersionsAreNotSupportedYet) {
+    expect_scene_error(R"({"self_collision": {}})", "self_collision is not supported by this version");
+    expect_scene_error(R"({"environment": []})", "environment is not supported by this version");
+    expect_scene_error(R"({"tools": []})", "tools is not supported by this version");
+}
+
+TEST(JsonLoader, RepeatedKeysAreRejected) {
+    expect_scene_error(R"({"intestine": {"radius": 0.01, "radius": 0.02}})",
+                       "duplicate key \"radius\" in intestine");
+    expect_scene_error(R"({"gravity": [0, 0, -9.81], "gravity": [0, 0, 0]})",
+                       "duplicate key \"gravity\" at the top level");
+    // Found while parsing, so even inside arrays of objects the place is exact.
+    expect_scene_error(R"({"x": [{"a": 1}, [2, {"a": 1}], {"b": 1, "b": 2}]})", "duplicate key \"b\" in x[2]");
+}
+
+TEST(JsonLoader, VersionMustBeOne) {
+    EXPECT_NO_THROW(load(R"({"version": 1})"));
+    expect_scene_error(R"({"version": 2})", "version must be 1, got 2");
+    expect_scene_error(R"({"version": "1"})", "version must be 1, got \"1\"");
+}
+
+// ---- wrong types ---------------------------------------------------------------------
+
+TEST(JsonLoader, WrongTypesNameThePath) {
+    const char* const cases[][2] = {
+        {R"({"intestine": {"control_points": "ten"}})",
+         "intestine.control_points must be an integer, got \"ten\""},
+        {R"({"intestine": {"control_points": 2.5}})", "intestine.control_points must be an integer, got 2.5"},
+        {R"({"intestine": {"control_points": -3}})",
+         "intestine.control_points must be a non-negative integer, got -3"},
+        {R"({"intestine": {"length": "2"}})", "intestine.length must be a number, got \"2\""},
+        {R"({"intestine": {"radius": true}})", "intestine.radius must be a number, got true"},
+        {R"({"intestine": {"radius": null}})", "intestine.radius must be a number, got null"},
+        {R"({"intestine": 5})", "intestine must be an object, got 5"},
+        {R"([])", "the scene must be an object, got an array of 0 elements"},
+        {R"({"intestine": {"shape": {"kind": "spiral"}}})",
+         "intestine.shape.kind must be one of \"line\", \"serpentine\", \"helix\", \"points\", got \"spiral\""},
+        {R"({"intestine": {"shape": {"kind": 2}}})",
+         "intestine.shape.kind must be one of \"line\", \"serpentine\", \"helix\", \"points\", got 2"},
+        {R"({"intestine": {"shape": {"kind": "points", "points": [[0, 0, 0], [1, 2]]}}})",
+         "intestine.shape.points[1] must be an array of 3 numbers [x, y, z], got an array of 2 elements"},
+        {R"({"intestine": {"shape": {"kind": "points", "points": {"a": 1}}}})",
+         "intestine.shape.points must be an array of [x, y, z] points, got an object"},
+        {R"({"solver": {"integrator": "rk5"}})",
+         "solver.integrator must be one of \"rk4\", \"symplectic_euler\", \"implicit_euler\", got \"rk5\""},
+        {R"({"solver": {"max_substeps": [1]}})",
+         "solver.max_substeps must be an integer, got an array of 1 element"},
+        {R"({"gravity": [0, 0]})",
+         "gravity must be an array of 3 numbers [x, y, z], got an array of 2 elements"},
+        {R"({"gravity": [0, "x", 0]})", "gravity[1] must be a number, got \"x\""},
+        {R"({"damping": []})", "damping must be an object, got an array of 0 elements"},
+        {R"({"mesentery": {"root": [[0, 0, 0]]}})",
+         "mesentery.root must be an array of 2 points [[x, y, z], [x, y, z]], got an array of 1 element"},
+        {R"({"mesentery": {"root": [[0, 0, 0], [1, 1, {}]]}})",
+         "mesentery.root[1][2] must be a number, got an object"},
+        {R"({"pinned": {"ends": "middle"}})",
+         "pinned.ends must be one of \"none\", \"first\", \"last\", \"both\", got \"middle\""},
+        {R"({"pinned": {"control_points": [1, -2]}})",
+         "pinned.control_points[1] must be a non-negative integer, got -2"},
+        {R"({"pinned": {"control_points": 3}})",
+         "pinned.control_points must be an array of control point indices, got 3"},
+    };
+    for (const auto& [text, message] : cases) expect_scene_error(text, message);
+}
+
+TEST(JsonLoader, ShapeKeysMustFitTheKind) {
+    expect_scene_error(R"({"intestine": {"shape": {"kind": "line", "helix_radius": 0.1}}})",
+                       "intestine.shape.helix_radius does not apply to kind \"line\"");
+    // Without a kind the shape is the default helix.
+    expect_scene_error(R"({"intestine": {"shape": {"leg_length": 0.3}}})",
+                       "intestine.shape.leg_length does not apply to kind \"helix\"");
+    expect_scene_error(R"({"intestine": {"shape": {"kind": "points", "center": [0, 0, 0]}}})",
+                       "intestine.shape.center does not apply to kind \"points\"");
+}
+
+// ---- huge counts ---------------------------------------------------------------------
+
+TEST(JsonLoader, HugeCountsAreRejectedWithTheirPath) {
+    expect_scene_error(R"({"intestine": {"control_points": 1e30}})",
+                       "intestine.control_points must be <= 18446744073709551615, got 1e+30");
+    expect_scene_error(R"({"intestine": {"control_points": 18446744073709551615}})",
+                       "intestine.control_points must be <= 100000, got 18446744073709551615");
+    expect_scene_error(R"({"intestine": {"control_points": 100001}})",
+                       "intestine.control_points must be <= 100000, got 100001");
+    expect_scene_error(R"({"solver": {"max_substeps": 1e7}})",
+                       "solver.max_substeps must be <= 1000000, got 10000000");
+    expect_scene_error(R"({"mesentery": {"attachments": 100001}})",
+                       "mesentery.attachments must be <= 100000, got 100001");
+    expect_scene_error(R"({"pinned": {"control_points": [5000000000]}})",
+                       "pinned.control_points[0] must be <= 4294967295, got 5000000000");
+    EXPECT_EQ(load(R"({"intestine": {"control_points": 100000}})").intestine.control_points, 100000u);
+}
+
+// ---- validation ----------------------------------------------------------------------
+
+TEST(JsonLoader, RadiusMessageIsExact) {
+    const Error error = load_error(R"({"intestine": {"radius": -1}})");
+    EXPECT_EQ(error.code(), ErrorCode::invalid_scene);
+    EXPECT_STREQ(error.what(), "intestine.radius must be > 0, got -1");
+}
+
+TEST(JsonLoader, ValuesOutOfRangeNameThePathAndTheLimit) {
+    const char* const cases[][2] = {
+        {R"({"intestine": {"length": 0}})", "intestine.length must be > 0, got 0"},
+        {R"({"intestine": {"length": 1000.5}})", "intestine.length must be <= 1000, got 1000.5"},
+        {R"({"intestine": {"length": 1, "radius": 1}})",
+         "intestine.radius must be < intestine.length (1), got 1"},
+        {R"({"intestine": {"control_points": 3}})", "intestine.control_points must be >= 4, got 3"},
+        {R"({"intestine": {"linear_density": 0}})", "intestine.linear_density must be > 0, got 0"},
+        {R"({"intestine": {"stretch_stiffness": -5}})", "intestine.stretch_stiffness must be >= 0, got -5"},
+        {R"({"intestine": {"bend_stiffness": -1e-3}})", "intestine.bend_stiffness must be >= 0, got -0.001"},
+        {R"({"intestine": {"shape": {"kind": "line", "direction": [0, 0, 0]}}})",
+         "intestine.shape.direction must be non-zero, got [0, 0, 0]"},
+        {R"({"intestine": {"shape": {"kind": "line", "direction": [1e200, 0, 0]}}})",
+         "intestine.shape.direction must have a finite length, got [1e+200, 0, 0]"},
+        {R"({"intestine": {"shape": {"kind": "serpentine", "leg_length": 0}}})",
+         "intestine.shape.leg_length must be > 0, got 0"},
+        {R"({"intestine": {"radius": 0.01, "shape": {"kind": "serpentine", "leg_spacing": 0.015}}})",
+         "intestine.shape.leg_spacing must be >= 2 x intestine.radius (0.02), got 0.015"},
+        {R"({"intestine": {"shape": {"helix_radius": -0.1}}})",
+         "intestine.shape.helix_radius must be > 0, got -0.1"},
+        {R"({"intestine": {"radius": 0.0125, "shape": {"helix_pitch": 0.01}}})",
+         "intestine.shape.helix_pitch must be >= 2 x intestine.radius (0.025), got 0.01"},
+        {R"({"intestine": {"control_points": 5, "shape": {"kind": "points",
+             "points": [[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]}}})",
+         "intestine.shape.points must hold 5 points (intestine.control_points), got 4"},
+        {R"({"intestine": {"shape": {"kind": "points", "points": [[0, 0, 0], [1, 0, 0]]}}})",
+         "intestine.control_points must be >= 4, got 2"},
+        {R"({"solver": {"timestep": 0}})", "solver.timestep must be > 0, got 0"},
+        {R"({"solver": {"timestep": 0.30000000000000004}})",
+         "solver.timestep must be <= 0.1, got 0.30000000000000004"},
+        {R"({"solver": {"max_substeps": 0}})", "solver.max_substeps must be >= 1, got 0"},
+        {R"({"solver": {"max_subdivisions": 31}})", "solver.max_subdivisions must be <= 30, got 31"},
+        {R"({"solver": {"max_speed": -2}})", "solver.max_speed must be > 0, got -2"},
+        {R"({"damping": {"drag": -1}})", "damping.drag must be >= 0, got -1"},
+        {R"({"damping": {"stretch": -1}})", "damping.stretch must be >= 0, got -1"},
+        {R"({"damping": {"bend": -1}})", "damping.bend must be >= 0, got -1"},
+        {R"({"mesentery": {"attachments": 0}})", "mesentery.attachments must be >= 1, got 0"},
+        {R"({"mesentery": {"stiffness": -1}})", "mesentery.stiffness must be >= 0, got -1"},
+        {R"({"mesentery": {"rest_length": -0.5}})", "mesentery.rest_length must be >= 0, got -0.5"},
+        {R"({"intestine": {"control_points": 80}, "pinned": {"control_points": [0, 80]}})",
+         "pinned.control_points[1] must be < intestine.control_points (80), got 80"},
+    };
+    for (const auto& [text, message] : cases) expect_scene_error(text, message);
+}
+
+TEST(JsonLoader, BoundaryValuesAreAccepted) {
+    EXPECT_NO_THROW(load(R"({"intestine": {"length": 1000, "control_points": 4, "stretch_stiffness": 0},
+                            "solver": {"timestep": 0.1, "max_substeps": 1, "max_subdivisions": 30},
+                            "mesentery": {"attachments": 1, "stiffness": 0, "rest_length": 0},
+                            "pinned": {"control_points": [3]}})"));
+    EXPECT_NO_THROW(
+        load(R"({"intestine": {"radius": 0.01, "shape": {"kind": "serpentine", "leg_spacing": 0.02}}})"));
+}
+
+// ---- the shared validation with both name tables --------------------------------------
+
+TEST(Validate, EveryFieldHasANameInBothTables) {
+    for (const FieldNames* names : {&json_field_names(), &c_field_names()}) {
+        std::set<std::string> seen;
+        for (std::size_t i = 0; i < kFieldCount; ++i) {
+            ASSERT_NE(names->names[i], nullptr) << "field " << i;
+            EXPECT_GT(std::strlen(names->names[i]), 0u) << "field " << i;
+            EXPECT_TRUE(seen.insert(names->names[i]).second) << names->names[i] << " named twice";
+        }
+    }
+    EXPECT_EQ(json_field_names().code, ErrorCode::invalid_scene);
+    EXPECT_EQ(c_field_names().code, ErrorCode::invalid_argument);
+}
+
+TEST(Validate, DefaultConfigWithEveryEffectIsValid) {
+    SceneConfig config;
+    config.intestine.stretch_stiffness = 100.0;
+    config.intestine.bend_stiffness = 2.5e-3;
+    config.gravity = Vec3{0.0, 0.0, -9.81};
+    config.damping.emplace();
+    config.mesentery.emplace();
+    config.pinned.emplace();
+    EXPECT_NO_THROW(validate(config, c_field_names()));
+    EXPECT_NO_THROW(validate(config, json_field_names()));
+}
+
+TEST(Validate, CNamesAndCode) {
+    SceneConfig config;
+    config.intestine.radius = -1.0;
+    const Error error = validate_error(config, c_field_names());
+    EXPECT_EQ(error.code(), ErrorCode::invalid_argument);
+    EXPECT_STREQ(error.what(), "radius_m must be > 0, got -1");
+
+    SceneConfig helix;
+    helix.intestine.shape.helix_pitch = 0.001;
+    EXPECT_STREQ(validate_error(helix, c_field_names()).what(),
+                 "shape_helix_pitch_m must be >= 2 x radius_m (0.025), got 0.001");
+
+    SceneConfig pinned;
+    pinned.pinned = PinnedConfig{pin_both, {1, 2, 240}};
+    EXPECT_STREQ(validate_error(pinned, c_field_names()).what(),
+                 "pinned_points[2] must be < control_points (240), got 240");
+}
+
+TEST(Validate, NonFiniteNumbersAreNamed) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    SceneConfig length;
+    length.intestine.length = nan;
+    EXPECT_STREQ(validate_error(length, c_field_names()).what(), "length_m must be finite, got nan");
+    EXPECT_STREQ(validate_error(length, json_field_names()).what(), "intestine.length must be finite, got nan");
+
+    SceneConfig gravity;
+    gravity.gravity = Vec3{0.0, -inf, 0.0};
+    EXPECT_STREQ(validate_error(gravity, c_field_names()).what(),
+                 "gravity_m_per_s2[1] must be finite, got -inf");
+
+    SceneConfig root;
+    root.mesentery.emplace().root_end[2] = inf;
+    EXPECT_STREQ(validate_error(root, json_field_names()).what(),
+                 "mesentery.root[1][2] must be finite, got inf");
+
+    SceneConfig stretch;
+    stretch.intestine.stretch_stiffness = inf;
+    EXPECT_STREQ(validate_error(stretch, c_field_names()).what(),
+                 "stretch_stiffness_N must be finite, got inf");
+
+    SceneConfig timestep;
+    timestep.solver.timestep = nan;
+    EXPECT_STREQ(validate_error(timestep, json_field_names()).what(),
+                 "solver.timestep must be finite, got nan");
+}
+
+TEST(Validate, PointsAreNamedPerPointInJsonAndFlatInC) {
+    SceneConfig config;
+    config.intestine.length = 0.5;
+    config.intestine.control_points = 4;
+    config.intestine.shape.kind = ShapeKind::points;
+    config.intestine.shape.points = {0, 0, 0, 0.1, 0, 0, 0.2, 0, 0, 0.3, 0, 0};
+    EXPECT_NO_THROW(validate(config, c_field_names()));
+
+    config.intestine.shape.points[4] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_STREQ(validate_error(config, c_field_names()).what(),
+                 "shape_points_xyz_m[4] must be finite, got nan");
+    EXPECT_STREQ(validate_error(config, json_field_names()).what(),
+                 "intestine.shape.points[1][1] must be finite, got nan");
+
+    config.intestine.shape.points.resize(9);
+    EXPECT_STREQ(validate_error(config, c_field_names()).what(),
+                 "shape_points_xyz_m must hold 12 values (control_points x 3), got 9");
+}
+
+TEST(Validate, EnumsOutOfRangeFromC) {
+    SceneConfig shape;
+    shape.intestine.shape.kind = static_cast<ShapeKind>(7);
+    EXPECT_STREQ(validate_error(shape, c_field_names()).what(), "shape must be <= 3, got 7");
+
+    SceneConfig integrator;
+    integrator.solver.integrator = static_cast<IntegratorKind>(-1);
+    EXPECT_STREQ(validate_error(integrator, c_field_names()).what(), "integrator must be >= 0, got -1");
+
+    SceneConfig pinned;
+    pinned.pinned = PinnedConfig{4, {}};
+    EXPECT_STREQ(validate_error(pinned, c_field_names()).what(), "pinned_ends must be <= 3, got 4");
+}
+
+TEST(Validate, UnusedShapeFieldsAreNotChecked) {
+    SceneConfig config;  // a helix: the line and serpentine fields are never read
+    config.intestine.shape.direction = {0.0, 0.0, 0.0};
+    config.intestine.shape.leg_spacing = -1.0;
+    EXPECT_NO_THROW(validate(config, c_field_names()));
+    config.intestine.shape.kind = ShapeKind::line;
+    EXPECT_STREQ(validate_error(config, c_field_names()).what(),
+                 "shape_direction must be non-zero, got [0, 0, 0]");
+}
+
+}  // namespace
+}  // namespace enteron::scene
