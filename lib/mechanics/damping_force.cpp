@@ -28,19 +28,36 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
     const double l0 = model_.rest_segment_length;
     const double c = coefficients_.stretch;
     const double tiny = 1e-12 * l0;
-    for (const spline::QuadratureNode& node : nodes_) {
-        const spline::SegmentWeights& sw = node.weights;
-        double d[3], rate[3];
-        spline::evaluate(state.q.data(), sw, d);
-        const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        if (!(len > tiny)) continue;
-        const double u[3] = {d[0] / len, d[1] / len, d[2] / len};
-        spline::evaluate(state.v.data(), sw, rate);
-        const double strain_rate = (u[0] * rate[0] + u[1] * rate[1] + u[2] * rate[2]) / l0;
-        const double scale = node.weight * c * strain_rate;
-        const double f[3] = {-scale * u[0], -scale * u[1], -scale * u[2]};
-        add_point_force(sw, f, force);
-        if (lin != nullptr) add_axial_block(*lin->system, sw, u, c / l0, 0.0, lin->h * node.weight);
+    // With d = dP/dt and u = d / |d|: the force -c w (u . rate / l0) u and the block
+    // (c / l0) u u^T are both d (d . x) / |d|^2 forms, so no square root is needed.
+    // The two nodes of a segment share their four control points: their blocks go into the
+    // system together (add_axial_block_pair).
+    static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
+    const std::size_t count = nodes_.size();
+    for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
+        double d[2][3] = {}, axial[2] = {};
+        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+            const spline::QuadratureNode& node = nodes_[first + m];
+            const spline::SegmentWeights& sw = node.weights;
+            double rate[3];
+            spline::evaluate(state.q.data(), sw, d[m]);
+            const double length2 = d[m][0] * d[m][0] + d[m][1] * d[m][1] + d[m][2] * d[m][2];
+            if (!(length2 > tiny * tiny)) {  // no direction: the node adds nothing
+                d[m][0] = d[m][1] = d[m][2] = 0.0;
+                continue;
+            }
+            const double inv2 = 1.0 / length2;
+            spline::evaluate(state.v.data(), sw, rate);
+            // node.weight c (u . rate) / l0 along u, as a multiple of d
+            const double scale =
+                node.weight * c * (d[m][0] * rate[0] + d[m][1] * rate[1] + d[m][2] * rate[2]) * inv2 / l0;
+            const double f[3] = {-scale * d[m][0], -scale * d[m][1], -scale * d[m][2]};
+            add_point_force(sw, f, force);
+            if (lin != nullptr) axial[m] = lin->h * node.weight * (c / l0) * inv2;
+        }
+        if (lin != nullptr)
+            add_axial_block_pair(*lin->system, nodes_[first].weights, d[0], axial[0], 0.0,
+                                 nodes_[first + 1].weights, d[1], axial[1], 0.0);
     }
 }
 

@@ -22,6 +22,15 @@ using SystemMatrix = numerics::BandedSpdMatrix<11>;
 void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const double u[3],
                      double a, double b, double scale);
 
+// The axial blocks of two spline points on the same four control points (the two Gauss
+// nodes of a segment): the sum of two add_axial_block calls with a = a_k * scale and
+// b = b_k * scale already multiplied out, in one pass over the band. A point that adds
+// nothing (a degenerate direction) passes a = b = 0. Only the product a u u^T matters, so
+// with b = 0 u need not be a unit vector (a d d^T / |d|^2 without the square root).
+void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0, const double u0[3],
+                          double a0, double b0, const spline::SegmentWeights& weights1, const double u1[3],
+                          double a1, double b1);
+
 // out = a (u . x) u + b x: H x for H = a u u^T + b I.
 inline void axial_times(const double u[3], double a, double b, const double x[3], double out[3]) {
     const double along = a * (u[0] * x[0] + u[1] * x[1] + u[2] * x[2]);

@@ -1,5 +1,5 @@
 // A symmetric positive definite band matrix with half bandwidth P (entries with
-// |i - j| > P are zero), stored as its lower band row by row, and its in-place Cholesky
+// |i - j| > P are zero), stored as its lower band row by row, and its in-place L D L^T
 // factorisation. Factor and solve cost O(n P^2) and O(n P): linear in n. P is a template
 // parameter so the inner loops have a fixed maximum length.
 //
@@ -17,20 +17,9 @@
 
 namespace enteron::numerics {
 
-// a . b with four independent partial sums: the band loops are short dot products, and a
-// single running sum would wait on each multiply-add's latency.
-inline double dot(const double* a, const double* b, std::size_t n) {
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    std::size_t m = 0;
-    for (; m + 4 <= n; m += 4) {
-        s0 += a[m] * b[m];
-        s1 += a[m + 1] * b[m + 1];
-        s2 += a[m + 2] * b[m + 2];
-        s3 += a[m + 3] * b[m + 3];
-    }
-    for (; m < n; ++m) s0 += a[m] * b[m];
-    return (s0 + s1) + (s2 + s3);
-}
+// Two doubles that the compiler keeps in one SIMD register where there is one (GCC/Clang
+// vector extension; elsewhere it lowers to scalar code).
+typedef double Pair __attribute__((vector_size(2 * sizeof(double))));
 
 template <int P>
 class BandedSpdMatrix {
@@ -60,8 +49,9 @@ public:
     // Copies another matrix of the same size without allocating.
     void assign(const BandedSpdMatrix& other) {
         std::copy(other.band_.begin(), other.band_.end(), band_.begin());
-        std::copy(other.inverse_diagonal_.begin(), other.inverse_diagonal_.end(),
-                  inverse_diagonal_.begin());
+        if (other.factored_)  // otherwise not yet meaningful
+            std::copy(other.inverse_diagonal_.begin(), other.inverse_diagonal_.end(),
+                      inverse_diagonal_.begin());
         factored_ = other.factored_;
     }
 
@@ -89,19 +79,37 @@ public:
     // y = A x (before factorisation). x and y hold n values spaced by stride, `columns`
     // interleaved right-hand sides: x[i * stride + c].
     void multiply(const double* x, double* y, std::size_t stride = 1, std::size_t columns = 1) const {
-        for (std::size_t i = 0; i < n_; ++i)
-            for (std::size_t c = 0; c < columns; ++c) y[i * stride + c] = 0.0;
+        if (columns == 1)
+            multiply_add<1>(x, 1.0, y, stride, false);
+        else if (columns == 3)
+            multiply_add<3>(x, 1.0, y, stride, false);
+        else
+            for (std::size_t c = 0; c < columns; ++c) multiply_add<1>(x + c, 1.0, y + c, stride, false);
+    }
+
+    // y += scale * A x for C interleaved right-hand sides (x[i * stride + c]), or y = A x
+    // when accumulate is false. Row by row, the terms in column order: each y_i is one
+    // running sum, written once.
+    template <std::size_t C>
+    void multiply_add(const double* x, double scale, double* y, std::size_t stride, bool accumulate) const {
+        const std::size_t p = static_cast<std::size_t>(P);
+        const bool scaled = accumulate;  // y = A x multiplies by the entries as they are
         for (std::size_t i = 0; i < n_; ++i) {
             const double* row = &band_[i * kRowStride];
-            const std::size_t j0 = i >= static_cast<std::size_t>(P) ? i - P : 0;
-            for (std::size_t j = j0; j < i; ++j) {
-                const double a = row[j + P - i];
-                for (std::size_t c = 0; c < columns; ++c) {
-                    y[i * stride + c] += a * x[j * stride + c];
-                    y[j * stride + c] += a * x[i * stride + c];
-                }
+            const std::size_t j0 = i >= p ? i - p : 0;
+            const std::size_t j1 = std::min(n_ - 1, i + p);
+            double s[C];
+            for (std::size_t c = 0; c < C; ++c) s[c] = accumulate ? y[i * stride + c] : 0.0;
+            for (std::size_t j = j0; j <= i; ++j) {  // row i of the lower band
+                const double a = scaled ? scale * row[j + p - i] : row[j + p - i];
+                for (std::size_t c = 0; c < C; ++c) s[c] += a * x[j * stride + c];
             }
-            for (std::size_t c = 0; c < columns; ++c) y[i * stride + c] += row[P] * x[i * stride + c];
+            for (std::size_t j = i + 1; j <= j1; ++j) {  // column i of the lower band
+                const double entry = band_[j * kRowStride + (i + p - j)];
+                const double a = scaled ? scale * entry : entry;
+                for (std::size_t c = 0; c < C; ++c) s[c] += a * x[j * stride + c];
+            }
+            for (std::size_t c = 0; c < C; ++c) y[i * stride + c] = s[c];
         }
     }
 
@@ -114,69 +122,172 @@ public:
         for (std::size_t k = i + 1; k <= last; ++k) lower(k, i) = 0.0;
     }
 
-    // Cholesky factorisation A = L L^T in place. Returns false, leaving the matrix
-    // unusable for solve, if A is not numerically positive definite.
+    // Factorisation A = L D L^T in place (L unit lower triangular, D diagonal). Returns
+    // false, leaving the matrix unusable for solve, if A is not numerically positive
+    // definite (a pivot of D that is not finite and > 0).
     //
-    // Right-looking: column k is scaled, then the trailing P x P window takes the rank-one
-    // update -l l^T. The window has a fixed size and each of its rows is contiguous in the
-    // band storage, so the inner loop is short, branch-free and vectorisable.
+    // Root-free on purpose: the factorisation is a chain over the columns (each pivot waits
+    // for the previous column's update), and a square root followed by a division on that
+    // chain costs about twice a division alone. Right-looking: column k is scaled, then the
+    // trailing P x P window takes the rank-one update -l c^T, c the column before scaling.
+    // The window has a fixed size and each of its rows is contiguous in the band storage, so
+    // away from the last P columns the loops have constant trip counts and unroll.
     bool factor() {
         factored_ = false;
-        double column[P];
-        for (std::size_t k = 0; k < n_; ++k) {
-            double* rk = &band_[k * kRowStride];
-            const double pivot = rk[P];
-            if (!(pivot > 0.0) || !std::isfinite(pivot)) return false;
-            const double d = std::sqrt(pivot);
-            const double inv = 1.0 / d;
-            rk[P] = d;
-            inverse_diagonal_[k] = inv;
-            const std::size_t below = std::min<std::size_t>(P, n_ - 1 - k);
-            // L(k+t, k) sits in row k+t at offset P - t.
-            for (std::size_t t = 1; t <= below; ++t) {
-                double& entry = band_[(k + t) * kRowStride + (P - t)];
-                entry *= inv;
-                column[t - 1] = entry;
-            }
-            for (std::size_t t = 1; t <= below; ++t) {
-                // Row k+t, columns k+1 .. k+t, at offsets P - t + 1 .. P.
-                double* row = &band_[(k + t) * kRowStride + (P - t)];
-                const double lt = column[t - 1];
-                for (std::size_t u = 1; u <= t; ++u) row[u] -= lt * column[u - 1];
-            }
-        }
+        std::size_t k = 0;
+        const std::size_t interior = n_ > static_cast<std::size_t>(P) ? n_ - P : 0;
+        for (; k < interior; ++k)
+            if (!eliminate_interior(k)) return false;
+        for (; k < n_; ++k)
+            if (!eliminate_tail(k, n_ - 1 - k)) return false;
         factored_ = true;
         return true;
     }
 
     // Solves A x = b in place after factor(); same layout as multiply.
     void solve(double* x, std::size_t stride = 1, std::size_t columns = 1) const {
-        // L y = b
-        for (std::size_t i = 0; i < n_; ++i) {
-            const double* li = &band_[i * kRowStride];
-            const std::size_t j0 = i >= static_cast<std::size_t>(P) ? i - P : 0;
-            if (stride == 1) {
-                x[i] = (x[i] - dot(li + (j0 + P - i), x + j0, i - j0)) * inverse_diagonal_[i];
-                continue;
-            }
-            for (std::size_t c = 0; c < columns; ++c) {
-                double s = x[i * stride + c];
-                for (std::size_t k = j0; k < i; ++k) s -= li[k + P - i] * x[k * stride + c];
-                x[i * stride + c] = s * inverse_diagonal_[i];
-            }
-        }
-        // L^T x = y
-        for (std::size_t ii = n_; ii-- > 0;) {
-            const std::size_t last = std::min(n_ - 1, ii + P);
-            for (std::size_t c = 0; c < columns; ++c) {
-                double s = x[ii * stride + c];
-                for (std::size_t k = ii + 1; k <= last; ++k) s -= lower(k, ii) * x[k * stride + c];
-                x[ii * stride + c] = s * inverse_diagonal_[ii];
-            }
-        }
+        if (columns == 1)
+            solve_columns<1>(x, stride);
+        else if (columns == 3)
+            solve_columns<3>(x, stride);
+        else
+            for (std::size_t c = 0; c < columns; ++c) solve_columns<1>(x + c, stride);
     }
 
 private:
+    // Column k of the elimination with `below` rows under the pivot (below <= P).
+    template <int Below>
+    bool eliminate(std::size_t k) {
+        double* base = &band_[k * kRowStride + P];  // the pivot
+        const double pivot = base[0];
+        if (!(pivot > 0.0) || !std::isfinite(pivot)) return false;
+        const double inv = 1.0 / pivot;
+        inverse_diagonal_[k] = inv;
+        // A(k+t, k) sits in row k+t at offset P - t: t (kRowStride - 1) after the pivot.
+        double column[P];
+        for (int t = 1; t <= Below; ++t) {
+            double& entry = base[t * (kRowStride - 1)];
+            column[t - 1] = entry;
+            entry *= inv;
+        }
+        for (int t = 1; t <= Below; ++t) {
+            // Row k+t, columns k+1 .. k+t, at offsets P - t + 1 .. P.
+            double* row = base + t * (kRowStride - 1);
+            const double lt = row[0];
+            for (int u = 1; u <= t; ++u) row[u] -= lt * column[u - 1];
+        }
+        return true;
+    }
+
+    // Column k with all P rows below it. The update of row k+t touches its last t entries
+    // (columns k+1 .. k+t, the diagonal last), taken in pairs from the diagonal end: those
+    // pairs sit at the same even offsets of the row for every column k, so each pair loads
+    // what the previous column stored as one pair (no store forwarding across two stores)
+    // and two lanes share each multiply and subtraction.
+    bool eliminate_interior(std::size_t k) {
+        double* pivot_entry = &band_[k * kRowStride + P];
+        const double pivot = pivot_entry[0];
+        if (!(pivot > 0.0) || !std::isfinite(pivot)) return false;
+        const double inv = 1.0 / pivot;
+        inverse_diagonal_[k] = inv;
+        double column[P];  // A(k+t, k), t = 1 .. P, before scaling
+#pragma GCC unroll 16
+        for (int t = 1; t <= P; ++t) {
+            double& entry = pivot_entry[t * P];  // row k+t at offset P - t
+            column[t - 1] = entry;
+            entry *= inv;
+        }
+#pragma GCC unroll 16
+        for (int t = 1; t <= P; ++t) {
+            double* row = pivot_entry + t * P;  // row[u]: column k+u, u = 1 .. t
+            const double lt = row[0];
+            const Pair l = {lt, lt};
+#pragma GCC unroll 16
+            for (int u = t - 1; u >= 1; u -= 2) {
+                const Pair c = {column[u - 1], column[u]};
+                Pair x;
+                std::memcpy(&x, row + u, sizeof x);
+                x -= l * c;
+                std::memcpy(row + u, &x, sizeof x);
+            }
+            if (t % 2 == 1) row[1] -= lt * column[0];
+        }
+        return true;
+    }
+
+    bool eliminate_tail(std::size_t k, std::size_t below) {
+        switch (below) {
+            case 0: return eliminate<0>(k);
+            case 1: return eliminate<(P >= 1 ? 1 : 0)>(k);
+            case 2: return eliminate<(P >= 2 ? 2 : 0)>(k);
+            case 3: return eliminate<(P >= 3 ? 3 : 0)>(k);
+            default: return eliminate_generic(k, below);
+        }
+    }
+
+    bool eliminate_generic(std::size_t k, std::size_t below) {
+        double* base = &band_[k * kRowStride + P];  // the pivot
+        const double pivot = base[0];
+        if (!(pivot > 0.0) || !std::isfinite(pivot)) return false;
+        const double inv = 1.0 / pivot;
+        inverse_diagonal_[k] = inv;
+        double column[P];
+        for (std::size_t t = 1; t <= below; ++t) {
+            double& entry = base[t * (kRowStride - 1)];
+            column[t - 1] = entry;
+            entry *= inv;
+        }
+        for (std::size_t t = 1; t <= below; ++t) {
+            double* row = base + t * (kRowStride - 1);
+            const double lt = row[0];
+            for (std::size_t u = 1; u <= t; ++u) row[u] -= lt * column[u - 1];
+        }
+        return true;
+    }
+
+    // L y = b, then x = L^-T D^-1 y, for C interleaved right-hand sides at x[i*stride + c].
+    // In both sweeps the value just computed enters the next row's sum last, so the chain
+    // from row to row is one multiply and one subtraction, not the whole sum.
+    template <std::size_t C>
+    void solve_columns(double* x, std::size_t stride) const {
+        const std::size_t p = static_cast<std::size_t>(P);
+        // Forward: y_i = b_i - sum_{j<i} L(i, j) y_j (unit diagonal). The first P rows have a
+        // shorter band; the others take a loop of constant length.
+        const std::size_t head = std::min(p, n_);
+        for (std::size_t i = 0; i < head; ++i) {
+            const double* li = &band_[i * kRowStride];
+            double s[C];
+            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
+            for (std::size_t j = 0; j < i; ++j) {
+                const double l = li[j + p - i];
+                for (std::size_t c = 0; c < C; ++c) s[c] -= l * x[j * stride + c];
+            }
+            for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
+        }
+        for (std::size_t i = head; i < n_; ++i) {
+            const double* li = &band_[i * kRowStride];
+            const double* xj = x + (i - p) * stride;
+            double s[C];
+            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
+            for (int j = 0; j < P; ++j)
+                for (std::size_t c = 0; c < C; ++c) s[c] -= li[j] * xj[j * stride + c];
+            for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
+        }
+        for (std::size_t i = 0; i < n_; ++i)
+            for (std::size_t c = 0; c < C; ++c) x[i * stride + c] *= inverse_diagonal_[i];
+        // Backward: x_i = y_i / d_i - sum_{k>i} L(k, i) x_k, the farthest k first.
+        for (std::size_t i = n_; i-- > 0;) {
+            const std::size_t last = std::min(n_ - 1, i + p);
+            double s[C];
+            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
+            for (std::size_t k = last; k > i; --k) {
+                const double l = band_[k * kRowStride + (i + p - k)];
+                for (std::size_t c = 0; c < C; ++c) s[c] -= l * x[k * stride + c];
+            }
+            for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
+        }
+    }
+
     std::size_t n_ = 0;
     std::pmr::vector<double> band_;
     std::pmr::vector<double> inverse_diagonal_;
