@@ -1,10 +1,11 @@
 /*
- * enteron_demo: a 6 m small bowel dropped into the abdomen, held only by its mesentery.
+ * enteron_demo: a 6 m small bowel dropped into the abdominal cavity, held by its mesentery.
  *
  * Creates the scene from a JSON v1 description, steps it 1 ms at a time for a few
  * simulated seconds, prints one line per simulated second (energies, where the bowel is,
- * how long it is, how many rollbacks the stability guard made, and the wall time per
- * step), then writes the final axis as axis.obj (an OBJ polyline) and axis.csv.
+ * how long it is, its contacts with the cavity and their deepest penetration, how many
+ * rollbacks the stability guard made, and the wall time per step), then writes the final
+ * axis as axis.obj (an OBJ polyline) and axis.csv.
  *
  * Usage: enteron_demo [--seconds S] [--out DIR]
  *   --seconds S  simulated time, s (default 5)
@@ -27,10 +28,10 @@
 #include <time.h>
 
 /* The bowel, as a surgery simulator would load it. No pinned ends: the bowel is dropped
- * freely and its mesentery (tension-only springs to a 15 cm root on the posterior wall,
- * along x at z = 0) is what holds it. The helix starts 15 cm below the root, so the
- * root runs through the coil. The abdominal cavity (a box the bowel rests in) arrives
- * with the environment contact issue and will be added to this scene then. */
+ * freely into the abdominal cavity (the inside of a 30 cm box), its folds pile up on each
+ * other (self-collision) and its mesentery (tension-only springs to a 15 cm root along x
+ * at z = 0) holds it up. The helix starts near the floor, so the root runs through the
+ * coil. */
 static const char scene_json[] =
     "{\n"
     "  \"intestine\": {\n"
@@ -40,14 +41,17 @@ static const char scene_json[] =
     "    \"linear_density\": 0.3,\n"
     "    \"stretch_stiffness\": 100,\n"
     "    \"bend_stiffness\": 2.5e-3,\n"
-    "    \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, -0.15],\n"
-    "              \"helix_radius\": 0.1, \"helix_pitch\": 0.03}\n"
+    "    \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, -0.13],\n"
+    "              \"helix_radius\": 0.1, \"helix_pitch\": 0.025}\n"
     "  },\n"
     "  \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001},\n"
     "  \"gravity\": [0, 0, -9.81],\n"
     "  \"damping\": {\"drag\": 0.05, \"stretch\": 0.05, \"bend\": 0},\n"
     "  \"mesentery\": {\"root\": [[-0.075, 0, 0], [0.075, 0, 0]],\n"
-    "                \"stiffness\": 5, \"attachments\": 60, \"rest_length\": 0}\n"
+    "                \"stiffness\": 5, \"attachments\": 60, \"rest_length\": 0},\n"
+    "  \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0],\n"
+    "                    \"half_extents\": [0.15, 0.15, 0.15]}],\n"
+    "  \"self_collision\": {}\n"
     "}\n";
 
 #define STEP_S 0.001           /* one ent_scene_step, s */
@@ -136,9 +140,10 @@ static int report(const ent_scene* scene, size_t timed) {
         return 1;
     }
 
-    printf("%7.3f %12.6f %12.6f  %+8.4f %+8.4f %+8.4f  %+8.4f  %8.4f %9llu", stats.time_s,
+    printf("%7.3f %12.6f %12.6f  %+8.4f %+8.4f %+8.4f  %+8.4f  %8.4f %8u %9.5f %9llu", stats.time_s,
            stats.kinetic_energy_J, stats.potential_energy_J, center[0], center[1], center[2],
-           lowest_z, length_m, (unsigned long long)stats.rollbacks);
+           lowest_z, length_m, (unsigned)stats.contacts, stats.max_penetration_m,
+           (unsigned long long)stats.rollbacks);
     if (timed > 0) {
         qsort(step_us, timed, sizeof step_us[0], compare_doubles);
         printf("  %10.1f %10.1f\n",
@@ -256,8 +261,9 @@ int main(int argc, char** argv) {
            " %ld steps of %g ms\n",
            (unsigned)(version >> 16), (unsigned)((version >> 8) & 0xffu),
            (unsigned)(version & 0xffu), total_steps, STEP_S * 1e3);
-    printf("%7s %12s %12s  %26s  %8s  %8s %9s  %10s %10s\n", "t_s", "kinetic_J", "potential_J",
-           "axis_centre_xyz_m", "lowest_z", "length_m", "rollbacks", "median_us", "max_us");
+    printf("%7s %12s %12s  %26s  %8s  %8s %8s %9s %9s  %10s %10s\n", "t_s", "kinetic_J", "potential_J",
+           "axis_centre_xyz_m", "lowest_z", "length_m", "contacts", "max_pen_m", "rollbacks", "median_us",
+           "max_us");
     if (report(scene, 0) != 0) {
         ent_scene_destroy(scene);
         return 1;

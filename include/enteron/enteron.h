@@ -160,7 +160,9 @@ ENT_API void ent_callbacks_default(ent_callbacks* callbacks);
 #define ENT_EFFECT_GRAVITY 3        /**< uniform gravity */
 #define ENT_EFFECT_MESENTERY 4      /**< tension-only springs to the mesenteric root */
 #define ENT_EFFECT_PINNED 5         /**< control points held fixed in space */
-#define ENT_EFFECT_COUNT 6          /**< number of effects this header knows */
+#define ENT_EFFECT_ENVIRONMENT 6    /**< contact with the cavity and organs (on with the first obstacle) */
+#define ENT_EFFECT_SELF_COLLISION 7 /**< folds of the bowel that touch push apart */
+#define ENT_EFFECT_COUNT 8          /**< number of effects this header knows */
 /** The bit of an effect in ent_scene_desc.effects. */
 #define ENT_EFFECT_BIT(effect) (1u << (effect))
 
@@ -239,6 +241,14 @@ typedef struct ent_scene_desc {
 
     /** Optional log and allocator hooks; NULL: silent, malloc/free. */
     const ent_callbacks* callbacks;
+
+    /* Collision: spheres of radius R along the axis and the penalty contact law that every
+       contact of the bowel uses (the environment; later self-contact and tools). */
+    double collision_sphere_spacing_m;  /**< sphere spacing along the axis at rest, m, <= R; 0: R / 2 (default 0). */
+    double contact_stiffness_N_per_m;   /**< normal stiffness of one sphere's contact (default 500). */
+    double contact_damping_N_s_per_m;   /**< normal damping, only while approaching (default 0.5). */
+    double contact_friction;            /**< Coulomb friction coefficient (default 0.3). */
+    double contact_slip_speed_m_per_s;  /**< friction is viscous below about this sliding speed (default 0.01). */
 } ent_scene_desc;
 
 /** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
@@ -353,6 +363,46 @@ ENT_API ent_status ent_scene_effect_stats(const ent_scene* scene, int32_t effect
 
 /** The JSON-style name of an effect ("stretch", "gravity", ...), or NULL if unknown. */
 ENT_API const char* ent_effect_name(int32_t effect);
+
+/* ------------------------------------------------------------------------------------ */
+/* Environment: the abdominal cavity and other organs                                   */
+/* ------------------------------------------------------------------------------------ */
+
+/** Kind of a rigid obstacle (ent_obstacle_desc.kind). */
+#define ENT_OBSTACLE_BOX_INSIDE 0 /**< the inside of an axis-aligned box: the abdominal cavity */
+#define ENT_OBSTACLE_PLANE 1      /**< a plane; the bowel is kept on the side its normal points to */
+#define ENT_OBSTACLE_SPHERE 2     /**< a solid sphere (an organ) */
+#define ENT_OBSTACLE_CAPSULE 3    /**< a solid capsule: a segment swept by a sphere (an organ, a vessel) */
+
+/** A rigid obstacle. Fill with ent_obstacle_desc_default first; fields a kind does not use are ignored. */
+typedef struct ent_obstacle_desc {
+    uint32_t struct_size;      /**< sizeof(ent_obstacle_desc); set by ent_obstacle_desc_default. */
+    int32_t kind;              /**< ENT_OBSTACLE_* (default ENT_OBSTACLE_BOX_INSIDE). */
+    double center_m[3];        /**< box, sphere: centre; plane: a point of the plane (default 0, 0, 0). */
+    double half_extents_m[3];  /**< box: half of its size along x, y, z, each > 0 (default 0.12 each). */
+    double normal[3];          /**< plane: normal toward the bowel's side, normalised by the library (default 0, 0, 1). */
+    double start_m[3];         /**< capsule: first end of its axis (default 0, 0, 0). */
+    double end_m[3];           /**< capsule: second end of its axis (default 0, 0, 0.1). */
+    double radius_m;           /**< sphere, capsule: radius, > 0 (default 0.05). */
+} ent_obstacle_desc;
+
+/** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
+ENT_API void ent_obstacle_desc_default(ent_obstacle_desc* desc);
+
+/**
+ * Adds a rigid obstacle to the scene's environment. The first obstacle turns the
+ * environment effect on; its contacts use the scene's collision spheres and contact law
+ * (ent_scene_desc collision_* and contact_* fields, JSON "collision"). The JSON
+ * description lists obstacles under "environment" instead. Obstacles do not move.
+ * Allocates; call it between steps, not on a hard real-time path.
+ * @param out_obstacle receives the obstacle's index (0, 1, ... in order of addition; JSON
+ *        obstacles come first); may be NULL.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown kind, non-finite value, size
+ *         <= 0, zero normal: the message names the field); ENT_ERROR_VERSION; nothing
+ *         changes on failure.
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle);
 
 #ifdef __cplusplus
 } /* extern "C" */

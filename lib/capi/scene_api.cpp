@@ -8,6 +8,7 @@
 
 #include "base/memory.h"
 #include "capi/call_guard.h"
+#include "capi/scene_handle.h"
 #include "capi/scene_desc.h"
 #include "capi/struct_size.h"
 #include "scene/json_loader.h"
@@ -21,27 +22,8 @@ using enteron::capi::require;
 
 namespace {
 
-// What an ent_scene* points to: the scene and the memory it lives in. The handle itself
-// comes from the caller's allocator when one is given. ent_scene itself is never defined,
-// so the ABI (abi/) records only an opaque pointer, whatever this struct holds.
-struct SceneHandle {
-    explicit SceneHandle(const ent_callbacks* callbacks) {
-        if (callbacks != nullptr && callbacks->allocate != nullptr) {
-            callback_memory.emplace(callbacks->allocate, callbacks->release, callbacks->user_data);
-            memory = &*callback_memory;
-        }
-        if (callbacks != nullptr) logger = enteron::Logger(callbacks->log, callbacks->user_data);
-    }
-
-    std::optional<enteron::CallbackMemoryResource> callback_memory;
-    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
-    enteron::Logger logger;
-    std::optional<enteron::scene::Scene> scene;
-    ent_callbacks callbacks{};  // kept to release the handle itself
-};
-
-SceneHandle* handle_of(ent_scene* scene) { return reinterpret_cast<SceneHandle*>(scene); }
-const SceneHandle* handle_of(const ent_scene* scene) { return reinterpret_cast<const SceneHandle*>(scene); }
+using enteron::capi::SceneHandle;
+using enteron::capi::handle_of;
 
 ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::SceneConfig& config) {
     if (callbacks != nullptr) enteron::capi::check_callbacks(*callbacks);

@@ -38,8 +38,13 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& given) {
     const ent_scene_desc desc = complete_desc(given);
     scene::SceneConfig config;
     const auto has = [&](int effect) { return (desc.effects & ENT_EFFECT_BIT(effect)) != 0; };
-    if (desc.effects >> ENT_EFFECT_COUNT != 0)
-        throw Error(ErrorCode::invalid_argument, "effects names an effect this library does not know");
+    // The effects a description turns on by bit; the environment starts with an obstacle.
+    constexpr uint32_t kDescEffects =
+        ((1u << (ENT_EFFECT_PINNED + 1)) - 1u) | ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
+    if ((desc.effects & ~kDescEffects) != 0)
+        throw Error(ErrorCode::invalid_argument,
+                    "effects has bits of effects a description cannot turn on (environment starts with "
+                    "ent_scene_add_obstacle), got " + std::to_string(desc.effects));
 
     scene::IntestineConfig& intestine = config.intestine;
     intestine.length = desc.length_m;
@@ -91,6 +96,12 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& given) {
         }
         config.pinned = pinned;
     }
+    config.self_collision = has(ENT_EFFECT_SELF_COLLISION);
+    config.collision.sphere_spacing = desc.collision_sphere_spacing_m;
+    config.collision.contact.stiffness = desc.contact_stiffness_N_per_m;
+    config.collision.contact.damping = desc.contact_damping_N_s_per_m;
+    config.collision.contact.friction = desc.contact_friction;
+    config.collision.contact.slip_speed = desc.contact_slip_speed_m_per_s;
     scene::validate(config, scene::c_field_names());
     return config;
 }
@@ -145,6 +156,12 @@ ENT_API void ent_scene_desc_default(ent_scene_desc* desc) {
     desc->mesentery_stiffness_N_per_m = mesentery.stiffness;
     desc->mesentery_rest_length_m = mesentery.rest_length;
     desc->pinned_ends = ENT_PIN_NONE;
+    const enteron::scene::CollisionConfig collision;
+    desc->collision_sphere_spacing_m = collision.sphere_spacing;
+    desc->contact_stiffness_N_per_m = collision.contact.stiffness;
+    desc->contact_damping_N_s_per_m = collision.contact.damping;
+    desc->contact_friction = collision.contact.friction;
+    desc->contact_slip_speed_m_per_s = collision.contact.slip_speed;
 }
 
 }  // extern "C"

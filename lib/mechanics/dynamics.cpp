@@ -139,17 +139,27 @@ double Dynamics::kinetic_energy(const State& state) const {
     return energy;
 }
 
-double Dynamics::potential_energy(const State& state) const {
-    double energy = 0.0;
-    for (const Owned<Effect>& effect : effects_) energy += effect->potential_energy(state);
-    return energy;
+Dynamics::Energies Dynamics::energies(const State& state) const {
+    Energies energies;
+    energies.kinetic = kinetic_energy(state);
+    for (const Owned<Effect>& effect : effects_) {
+        const double energy = effect->potential_energy(state);
+        energies.potential += energy;
+        if (effect->id() != EffectId::gravity) energies.deformation += energy;
+    }
+    return energies;
 }
 
-double Dynamics::deformation_energy(const State& state) const {
-    double energy = 0.0;
-    for (const Owned<Effect>& effect : effects_)
-        if (effect->id() != EffectId::gravity) energy += effect->potential_energy(state);
-    return energy;
+ContactSummary Dynamics::contacts() const {
+    ContactSummary summary;
+    for (const Owned<Effect>& effect : effects_) effect->add_contacts(summary);
+    return summary;
+}
+
+Effect* Dynamics::find_effect(EffectId id) {
+    for (Owned<Effect>& effect : effects_)
+        if (effect->id() == id) return effect.get();
+    return nullptr;
 }
 
 }  // namespace enteron::mechanics

@@ -25,9 +25,12 @@ class Dynamics {
 public:
     Dynamics(const AxisModel& model, std::pmr::memory_resource* memory);
 
-    // Adds an effect, or the pins (which always run last); call finalize() once all are in.
+    // Adds an effect, or the pins (which always run last); call finalize() once all are in,
+    // and again after adding an effect later.
     void add_effect(Owned<Effect> effect);
     void add_pins(Owned<PinnedPoints> pins);
+    // The effect with this id, or null.
+    Effect* find_effect(EffectId id);
     // Factors the mass matrix (with the pins) and bounds the explicit stable substep.
     void finalize();
 
@@ -47,10 +50,16 @@ public:
     // implicit system for substep h. Cached: rebuilt only when h changes.
     const SystemMatrix& constant_system(double h);
 
+    // Contacts of the effects' last evaluations.
+    ContactSummary contacts() const;
+
+    struct Energies {
+        double kinetic = 0.0;      // J
+        double potential = 0.0;    // J, every effect's
+        double deformation = 0.0;  // J, the part stored in deformation and contacts (all but gravity), >= 0
+    };
+    Energies energies(const State& state) const;
     double kinetic_energy(const State& state) const;
-    double potential_energy(const State& state) const;
-    // The part of the potential energy stored in deformation (all but gravity), >= 0.
-    double deformation_energy(const State& state) const;
 
     // The longest substep an explicit method with stability interval [-beta, 0] on the
     // imaginary / real axes may take, from bounds on the highest frequency omega and the

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "mechanics/effect_id.h"
 #include "mechanics/state.h"
@@ -23,6 +24,12 @@ struct Linearization {
     SystemMatrix* system;
     double h;
     double* stiffness_times_velocity;
+};
+
+// Contacts an effect made in its last evaluation (for ent_stats).
+struct ContactSummary {
+    uint32_t count = 0;
+    double max_penetration = 0.0;  // m
 };
 
 class Effect {
@@ -44,6 +51,9 @@ public:
     // reach; the explicit integrators' stable substep follows from them.
     virtual void add_stiffness_bound(spline::ScalarBandMatrix& /*bound*/) const {}
     virtual void add_damping_bound(spline::ScalarBandMatrix& /*bound*/) const {}
+
+    // Adds the contacts of the last evaluation (effects that make contacts only).
+    virtual void add_contacts(ContactSummary& /*summary*/) const {}
 };
 
 }  // namespace enteron::mechanics

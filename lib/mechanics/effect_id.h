@@ -12,14 +12,16 @@ enum class EffectId : int {
     gravity = 3,
     mesentery = 4,
     pinned = 5,
+    environment = 6,
+    self_collision = 7,
 };
 
-constexpr std::size_t kEffectCount = 6;
+constexpr std::size_t kEffectCount = 8;
 
 // The JSON-style name of an effect ("stretch", ...).
 inline const char* effect_name(EffectId id) {
-    static const char* const names[kEffectCount] = {"stretch",   "bend",      "damping",
-                                                   "gravity",   "mesentery", "pinned"};
+    static const char* const names[kEffectCount] = {"stretch",   "bend",   "damping",    "gravity",
+                                                   "mesentery", "pinned", "environment", "self_collision"};
     return names[static_cast<std::size_t>(id)];
 }
 

@@ -263,6 +263,62 @@ const Key<PinnedConfig> kPinnedKeys[] = {
     {"control_points", read_pinned_points},
 };
 
+const Key<CollisionConfig> kCollisionKeys[] = {
+    {"sphere_spacing", [](auto& v, auto& p, auto& c) { c.sphere_spacing = read_number(v, p); }},
+    {"stiffness", [](auto& v, auto& p, auto& c) { c.contact.stiffness = read_number(v, p); }},
+    {"damping", [](auto& v, auto& p, auto& c) { c.contact.damping = read_number(v, p); }},
+    {"friction", [](auto& v, auto& p, auto& c) { c.contact.friction = read_number(v, p); }},
+    {"slip_speed", [](auto& v, auto& p, auto& c) { c.contact.slip_speed = read_number(v, p); }},
+};
+
+using collision::Obstacle;
+using collision::ObstacleKind;
+const Choice<ObstacleKind> kObstacleKinds[] = {{"box_inside", ObstacleKind::box_inside},
+                                               {"plane", ObstacleKind::plane},
+                                               {"sphere", ObstacleKind::sphere},
+                                               {"capsule", ObstacleKind::capsule}};
+
+// The keys of each obstacle type (besides "type") and where they go.
+const Key<Obstacle> kBoxKeys[] = {
+    {"center", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
+    {"half_extents", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
+};
+const Key<Obstacle> kPlaneKeys[] = {
+    {"point", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
+    {"normal", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
+};
+const Key<Obstacle> kSphereKeys[] = {
+    {"center", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
+    {"radius", [](auto& v, auto& p, auto& o) { o.radius = read_number(v, p); }},
+};
+const Key<Obstacle> kCapsuleKeys[] = {
+    {"start", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
+    {"end", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
+    {"radius", [](auto& v, auto& p, auto& o) { o.radius = read_number(v, p); }},
+};
+
+void read_obstacle(const json& value, const std::string& path, Obstacle& obstacle) {
+    if (!value.is_object() || !value.contains("type"))
+        fail(path + " must be an object with a \"type\", got " + describe(value));
+    obstacle.kind = read_choice(value.at("type"), child(path, "type"), kObstacleKinds);
+    json rest = value;
+    rest.erase("type");
+    switch (obstacle.kind) {
+        case ObstacleKind::box_inside: read_object(rest, path, kBoxKeys, obstacle); break;
+        case ObstacleKind::plane: read_object(rest, path, kPlaneKeys, obstacle); break;
+        case ObstacleKind::sphere: read_object(rest, path, kSphereKeys, obstacle); break;
+        case ObstacleKind::capsule: read_object(rest, path, kCapsuleKeys, obstacle); break;
+    }
+}
+
+void read_environment(const json& value, const std::string& path, std::vector<Obstacle>& environment) {
+    if (!value.is_array()) fail(path + " must be an array of obstacles, got " + describe(value));
+    environment.assign(value.size(), Obstacle{});
+    for (std::size_t i = 0; i < value.size(); ++i) read_obstacle(value[i], element(path, i), environment[i]);
+}
+
+const Key<SceneConfig> kNoKeys[] = {{"", nullptr}};
+
 void read_version(const json& value, const std::string& path, SceneConfig&) {
     if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
 }
@@ -277,8 +333,14 @@ const Key<SceneConfig> kSceneKeys[] = {
     {"mesentery",
      [](auto& v, auto& p, auto& c) { read_object(v, p, kMesenteryKeys, c.mesentery.emplace()); }},
     {"pinned", [](auto& v, auto& p, auto& c) { read_object(v, p, kPinnedKeys, c.pinned.emplace()); }},
-    {"self_collision", nullptr},
-    {"environment", nullptr},
+    {"collision", [](auto& v, auto& p, auto& c) { read_object(v, p, kCollisionKeys, c.collision); }},
+    {"environment", [](auto& v, auto& p, auto& c) { read_environment(v, p, c.environment); }},
+    {"self_collision",
+     [](auto& v, auto& p, auto& c) {
+         // An object, for now without keys: present means on.
+         read_object(v, p, kNoKeys, c);
+         c.self_collision = true;
+     }},
     {"tools", nullptr},
 };
 

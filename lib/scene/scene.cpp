@@ -6,6 +6,8 @@
 #include <cstdio>
 
 #include "base/error.h"
+#include "collision/environment_force.h"
+#include "collision/self_contact_force.h"
 #include "mechanics/bend_force.h"
 #include "mechanics/damping_force.h"
 #include "mechanics/gravity_force.h"
@@ -74,6 +76,9 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
       state_(memory),
       backup_(memory),
       explicit_substep_limit_(0.0),
+      rest_length_(config.intestine.length),
+      radius_(config.intestine.radius),
+      collision_(config.collision),
       total_mass_(config.intestine.linear_density * config.intestine.length),
       publisher_(3 * model_.control_points, memory) {
     const IntestineConfig& intestine = config.intestine;
@@ -100,17 +105,48 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     }
     if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), memory));
-    dynamics_.finalize();
+    if (!config.environment.empty()) add_environment(config.environment);
+    if (config.self_collision)
+        dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, model_, rest_length_, radius_,
+                                                                     sphere_spacing(), collision_.contact, state_,
+                                                                     memory));
 
     const auto kind = static_cast<mechanics::IntegratorKind>(static_cast<int32_t>(solver_.integrator));
     integrator_ = make_integrator(kind, 3 * n, memory);
-    explicit_substep_limit_ = dynamics_.explicit_substep_limit(integrator_->stability_interval());
-    kinetic_energy_ = dynamics_.kinetic_energy(state_);
-    potential_energy_ = dynamics_.potential_energy(state_);
-    if (logger_.enabled())
-        logger_.log(LogLevel::info, "scene: %zu control points, substep limit %g s (integrator %d)", n,
-                    std::min(solver_.timestep, explicit_substep_limit_), static_cast<int>(kind));
+    refinalize();
     publish();
+}
+
+void Scene::refinalize() {
+    dynamics_.finalize();
+    explicit_substep_limit_ = dynamics_.explicit_substep_limit(integrator_->stability_interval());
+    energies_ = dynamics_.energies(state_);
+    if (logger_.enabled())
+        logger_.log(LogLevel::info, "scene: %zu control points, substep limit %g s", model_.control_points,
+                    std::min(solver_.timestep, explicit_substep_limit_));
+}
+
+std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle) {
+    const std::size_t index = obstacles_;
+    if (auto* environment = static_cast<collision::EnvironmentForce*>(dynamics_.find_effect(EffectId::environment))) {
+        environment->add_obstacle(obstacle);
+        ++obstacles_;
+    } else {
+        add_environment({obstacle});
+    }
+    refinalize();
+    publish();
+    return index;
+}
+
+double Scene::sphere_spacing() const {
+    return collision_.sphere_spacing > 0.0 ? collision_.sphere_spacing : 0.5 * radius_;
+}
+
+void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
+    dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, model_, rest_length_, radius_, sphere_spacing(),
+                                                                 collision_.contact, obstacles, state_, memory_));
+    obstacles_ += obstacles.size();
 }
 
 void Scene::step(double dt) {
@@ -164,14 +200,11 @@ bool Scene::try_step(double dt, std::size_t substeps) {
     state_.time = start_time + dt;  // no drift from summing substeps
     if (!(max_speed(state_) <= solver_.max_speed)) return false;
 
-    const double kinetic = dynamics_.kinetic_energy(state_);
-    const double potential = dynamics_.potential_energy(state_);
+    const Dynamics::Energies after = dynamics_.energies(state_);
     const double floor = 0.5 * total_mass_ * kEnergyFloorSpeed * kEnergyFloorSpeed;
-    const double allowance =
-        std::max(floor, kEnergyGrowthFactor * (kinetic_energy_ + dynamics_.deformation_energy(backup_)));
-    if (!(kinetic + potential <= kinetic_energy_ + potential_energy_ + allowance)) return false;
-    kinetic_energy_ = kinetic;
-    potential_energy_ = potential;
+    const double allowance = std::max(floor, kEnergyGrowthFactor * (energies_.kinetic + energies_.deformation));
+    if (!(after.kinetic + after.potential <= energies_.kinetic + energies_.potential + allowance)) return false;
+    energies_ = after;
     return true;
 }
 
@@ -183,8 +216,11 @@ void Scene::publish() {
     }
     std::copy(state_.q.begin(), state_.q.end(), slot->control_points.begin());
     stats_.time = state_.time;
-    stats_.kinetic_energy = kinetic_energy_;
-    stats_.potential_energy = potential_energy_;
+    const ContactSummary contacts = dynamics_.contacts();
+    stats_.contacts = contacts.count;
+    stats_.max_penetration = contacts.max_penetration;
+    stats_.kinetic_energy = energies_.kinetic;
+    stats_.potential_energy = energies_.potential;
     slot->stats = stats_;
     for (std::size_t e = 0; e < kEffectCount; ++e) {
         const EffectId id = static_cast<EffectId>(e);

@@ -31,6 +31,11 @@ public:
     // dt, Error(unstable) when the guard cannot recover.
     void step(double dt);
 
+    // Adds an obstacle to the environment (validated by the caller), starting the
+    // environment effect with the first one. Returns its index. Not during a step.
+    std::size_t add_obstacle(const collision::Obstacle& obstacle);
+    std::size_t obstacle_count() const { return obstacles_; }
+
     // The latest published snapshot, pinned while the reader lives. Any thread.
     SnapshotPublisher::Reader read() const { return SnapshotPublisher::Reader(publisher_); }
 
@@ -41,6 +46,12 @@ public:
 private:
     // One attempt at dt in `substeps` equal substeps; false if the guard rejects it.
     bool try_step(double dt, std::size_t substeps);
+    // Collision sphere spacing at rest, m.
+    double sphere_spacing() const;
+    // Starts the environment effect with these obstacles.
+    void add_environment(const std::vector<collision::Obstacle>& obstacles);
+    // Bounds, substep limit and energies after the set of effects changed.
+    void refinalize();
     // Fills a free snapshot slot from the current state and publishes it.
     void publish();
 
@@ -53,9 +64,12 @@ private:
     mechanics::State state_;
     mechanics::State backup_;  // the state before the current step, for rollbacks
     double explicit_substep_limit_;
+    double rest_length_;
+    double radius_;
+    CollisionConfig collision_;
+    std::size_t obstacles_ = 0;
     double total_mass_;
-    double kinetic_energy_ = 0.0;
-    double potential_energy_ = 0.0;
+    mechanics::Dynamics::Energies energies_;  // of the current state
     SceneStats stats_;
     SnapshotPublisher publisher_;
 };

@@ -9,6 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "collision/contact_model.h"
+#include "collision/obstacle.h"
+
 namespace enteron::scene {
 
 using Vec3 = std::array<double, 3>;
@@ -66,6 +69,13 @@ struct PinnedConfig {
     std::vector<uint32_t> points;  // further control point indices
 };
 
+// Settings shared by every contact of the bowel (the environment now; self-contact and
+// tools use the same spheres and law).
+struct CollisionConfig {
+    double sphere_spacing = 0.0;  // m at rest; 0: radius / 2
+    collision::ContactParameters contact;
+};
+
 struct SceneConfig {
     IntestineConfig intestine;
     SolverConfig solver;
@@ -73,6 +83,9 @@ struct SceneConfig {
     std::optional<DampingConfig> damping;
     std::optional<MesenteryConfig> mesentery;
     std::optional<PinnedConfig> pinned;
+    CollisionConfig collision;
+    std::vector<collision::Obstacle> environment;  // empty: the environment effect is off
+    bool self_collision = false;                   // folds that touch push apart
 };
 
 }  // namespace enteron::scene

@@ -117,6 +117,8 @@ public:
     void damping(const DampingConfig& damping) const;
     void mesentery(const MesenteryConfig& mesentery) const;
     void pinned(const PinnedConfig& pinned, std::size_t control_points) const;
+    void collision(const CollisionConfig& collision, double radius) const;
+    void obstacle(const collision::Obstacle& obstacle, std::size_t index) const;
 
 private:
     const FieldNames& names_;
@@ -223,6 +225,54 @@ void Validator::pinned(const PinnedConfig& pinned, std::size_t control_points) c
     }
 }
 
+void Validator::collision(const CollisionConfig& collision, double radius) const {
+    check(collision.sphere_spacing, Field::sphere_spacing).at_least(0.0).at_most(radius, name(Field::radius));
+    check(collision.contact.stiffness, Field::contact_stiffness).at_least(0.0);
+    check(collision.contact.damping, Field::contact_damping).at_least(0.0);
+    check(collision.contact.friction, Field::contact_friction).at_least(0.0);
+    check(collision.contact.slip_speed, Field::contact_slip_speed).above(0.0);
+}
+
+void Validator::obstacle(const collision::Obstacle& o, std::size_t index) const {
+    using collision::ObstacleKind;
+    const std::string base = indexed(name(Field::obstacle), index);
+    const auto field = [&](const char* key) { return base + "." + key; };
+    Checked<int32_t>(static_cast<int32_t>(o.kind), field("kind"), names_.code)
+        .at_least(static_cast<int32_t>(ObstacleKind::box_inside))
+        .at_most(static_cast<int32_t>(ObstacleKind::capsule));
+    const auto finite = [&](const Vec3& v, const char* key) {
+        for (std::size_t k = 0; k < 3; ++k) Checked<double>(v[k], indexed(field(key), k), names_.code);
+    };
+    switch (o.kind) {
+        case ObstacleKind::box_inside:
+            finite(o.center, "center");
+            for (std::size_t k = 0; k < 3; ++k)
+                Checked<double>(o.extent[k], indexed(field("half_extents"), k), names_.code).above(0.0);
+            break;
+        case ObstacleKind::plane:
+            finite(o.center, "point");
+            finite(o.extent, "normal");
+            if (o.extent[0] == 0.0 && o.extent[1] == 0.0 && o.extent[2] == 0.0)
+                fail(field("normal"), "must not be zero, got [0, 0, 0]");
+            {
+                // Its length must be computable to normalise it.
+                const double length2 = o.extent[0] * o.extent[0] + o.extent[1] * o.extent[1] + o.extent[2] * o.extent[2];
+                if (!(length2 > 0.0) || !std::isfinite(length2))
+                    fail(field("normal"), "must have a length between 1e-150 and 1e150, got " + format(o.extent));
+            }
+            break;
+        case ObstacleKind::sphere:
+            finite(o.center, "center");
+            Checked<double>(o.radius, field("radius"), names_.code).above(0.0);
+            break;
+        case ObstacleKind::capsule:
+            finite(o.center, "start");
+            finite(o.extent, "end");
+            Checked<double>(o.radius, field("radius"), names_.code).above(0.0);
+            break;
+    }
+}
+
 FieldNames make_field_names(ErrorCode code, bool shape_points_nested,
                             std::initializer_list<std::pair<Field, const char*>> entries) {
     FieldNames names{code, shape_points_nested, {}};
@@ -266,6 +316,12 @@ const FieldNames& json_field_names() {
             {Field::mesentery_rest_length, "mesentery.rest_length"},
             {Field::pinned_ends, "pinned.ends"},
             {Field::pinned_points, "pinned.control_points"},
+            {Field::sphere_spacing, "collision.sphere_spacing"},
+            {Field::contact_stiffness, "collision.stiffness"},
+            {Field::contact_damping, "collision.damping"},
+            {Field::contact_friction, "collision.friction"},
+            {Field::contact_slip_speed, "collision.slip_speed"},
+            {Field::obstacle, "environment"},
         });
     return names;
 }
@@ -304,6 +360,12 @@ const FieldNames& c_field_names() {
             {Field::mesentery_rest_length, "mesentery_rest_length_m"},
             {Field::pinned_ends, "pinned_ends"},
             {Field::pinned_points, "pinned_points"},
+            {Field::sphere_spacing, "collision_sphere_spacing_m"},
+            {Field::contact_stiffness, "contact_stiffness_N_per_m"},
+            {Field::contact_damping, "contact_damping_N_s_per_m"},
+            {Field::contact_friction, "contact_friction"},
+            {Field::contact_slip_speed, "contact_slip_speed_m_per_s"},
+            {Field::obstacle, "obstacle"},
         });
     return names;
 }
@@ -316,6 +378,12 @@ void validate(const SceneConfig& config, const FieldNames& names) {
     if (config.damping) validator.damping(*config.damping);
     if (config.mesentery) validator.mesentery(*config.mesentery);
     if (config.pinned) validator.pinned(*config.pinned, config.intestine.control_points);
+    validator.collision(config.collision, config.intestine.radius);
+    for (std::size_t i = 0; i < config.environment.size(); ++i) validator.obstacle(config.environment[i], i);
+}
+
+void validate_obstacle(const collision::Obstacle& obstacle, std::size_t index, const FieldNames& names) {
+    Validator(names).obstacle(obstacle, index);
 }
 
 }  // namespace enteron::scene

@@ -44,6 +44,12 @@ enum class Field : std::size_t {
     mesentery_rest_length,
     pinned_ends,
     pinned_points,
+    sphere_spacing,
+    contact_stiffness,
+    contact_damping,
+    contact_friction,
+    contact_slip_speed,
+    obstacle,
     count  // not a field: the number of fields
 };
 
@@ -74,5 +80,9 @@ const FieldNames& c_field_names();
 // Throws Error(names.code, message) for the first bad value, the message naming it:
 // "intestine.radius must be > 0, got -1". Does nothing else.
 void validate(const SceneConfig& config, const FieldNames& names);
+
+// Checks one obstacle (kind in range, finite, sizes > 0, a non-zero plane normal); index
+// names it in a list ("environment[2].radius must be > 0, got -1").
+void validate_obstacle(const collision::Obstacle& obstacle, std::size_t index, const FieldNames& names);
 
 }  // namespace enteron::scene

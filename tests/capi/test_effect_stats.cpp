@@ -79,7 +79,8 @@ TEST(EffectStats, NamedEffectsRunAndReportTheirCost) {
     static const uint32_t pins[1] = {5};
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
                    ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) |
-                   ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+                   ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED) |
+                   ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
     desc.control_points = 40;
     desc.length_m = 1.0;
     desc.mesentery_attachments = 10;
@@ -87,6 +88,10 @@ TEST(EffectStats, NamedEffectsRunAndReportTheirCost) {
     desc.pinned_point_count = 1;
     ScenePtr scene = create(desc);
     ASSERT_TRUE(scene);
+    // The environment has no bit: its first obstacle turns it on.
+    ent_obstacle_desc cavity;
+    ent_obstacle_desc_default(&cavity);
+    ASSERT_EQ(ent_scene_add_obstacle(scene.get(), &cavity, nullptr), ENT_OK) << ent_last_error();
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 20));
     for (int32_t effect = 0; effect < ENT_EFFECT_COUNT; ++effect) {
         const ent_effect_stats s = effect_stats(scene.get(), effect);
@@ -95,10 +100,16 @@ TEST(EffectStats, NamedEffectsRunAndReportTheirCost) {
     }
 }
 
+// The effects a description turns on by its bit: all but the environment, which starts
+// with the first obstacle (ent_scene_add_obstacle).
+constexpr uint32_t kDescEffects =
+    ((1u << ENT_EFFECT_COUNT) - 1u) & ~ENT_EFFECT_BIT(ENT_EFFECT_ENVIRONMENT);
+
 TEST(EffectStats, OnlyTheNamedEffectsAreEnabledForEverySubset) {
-    // All 64 subsets of the six effects (pins need points to hold).
+    // Every subset of the effects a description can name (pins need points to hold).
     static const uint32_t pins[1] = {0};
     for (uint32_t effects = 0; effects < (1u << ENT_EFFECT_COUNT); ++effects) {
+        if ((effects & ~kDescEffects) != 0) continue;
         ent_scene_desc desc = default_desc();
         desc.effects = effects;
         desc.control_points = 8;
@@ -121,6 +132,21 @@ TEST(EffectStats, OnlyTheNamedEffectsAreEnabledForEverySubset) {
                 EXPECT_EQ(s.total_time_ns, 0u) << "effects " << effects << ", " << ent_effect_name(effect);
             }
         }
+    }
+}
+
+TEST(EffectStats, TheEnvironmentBitIsRefusedInADescription) {
+    for (uint32_t effects : {ENT_EFFECT_BIT(ENT_EFFECT_ENVIRONMENT),
+                             ENT_EFFECT_BIT(ENT_EFFECT_ENVIRONMENT) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY)}) {
+        ent_scene_desc desc = default_desc();
+        desc.effects = effects;
+        desc.control_points = 8;
+        desc.length_m = 0.5;
+        ent_scene* scene = nullptr;
+        EXPECT_EQ(ent_scene_create(&desc, &scene), ENT_ERROR_INVALID_ARGUMENT) << "effects " << effects;
+        EXPECT_EQ(scene, nullptr);
+        EXPECT_NE(std::string(ent_last_error()).find("effects"), std::string::npos) << ent_last_error();
+        if (scene != nullptr) ent_scene_destroy(scene);
     }
 }
 

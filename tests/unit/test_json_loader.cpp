@@ -280,9 +280,49 @@ TEST(JsonLoader, LongKeysAndStringsAreShortenedInMessages) {
 }
 
 TEST(JsonLoader, KeysOfLaterVersionsAreNotSupportedYet) {
-    expect_scene_error(R"({"self_collision": {}})", "self_collision is not supported by this version");
-    expect_scene_error(R"({"environment": []})", "environment is not supported by this version");
     expect_scene_error(R"({"tools": []})", "tools is not supported by this version");
+}
+
+TEST(JsonLoader, CollisionAndEnvironmentGiveEveryValue) {
+    using collision::ObstacleKind;
+    const SceneConfig c = load(R"({
+      "collision": { "sphere_spacing": 0.005, "stiffness": 800, "damping": 0.7, "friction": 0.4,
+                     "slip_speed": 0.02 },
+      "environment": [
+        { "type": "box_inside", "center": [0.1, 0.2, 0.3], "half_extents": [0.11, 0.12, 0.13] },
+        { "type": "plane", "point": [1, 2, 3], "normal": [0, 0, 2] },
+        { "type": "sphere", "center": [4, 5, 6], "radius": 0.07 },
+        { "type": "capsule", "start": [7, 8, 9], "end": [10, 11, 12], "radius": 0.03 }
+      ]
+    })");
+    EXPECT_EQ(c.collision.sphere_spacing, 0.005);
+    EXPECT_EQ(c.collision.contact.stiffness, 800.0);
+    EXPECT_EQ(c.collision.contact.damping, 0.7);
+    EXPECT_EQ(c.collision.contact.friction, 0.4);
+    EXPECT_EQ(c.collision.contact.slip_speed, 0.02);
+    ASSERT_EQ(c.environment.size(), 4u);
+    EXPECT_EQ(c.environment[0].kind, ObstacleKind::box_inside);
+    EXPECT_EQ(c.environment[0].center, (Vec3{0.1, 0.2, 0.3}));
+    EXPECT_EQ(c.environment[0].extent, (Vec3{0.11, 0.12, 0.13}));
+    EXPECT_EQ(c.environment[1].kind, ObstacleKind::plane);
+    EXPECT_EQ(c.environment[1].center, (Vec3{1, 2, 3}));
+    EXPECT_EQ(c.environment[1].extent, (Vec3{0, 0, 2}));  // normalised when the scene is built
+    EXPECT_EQ(c.environment[2].kind, ObstacleKind::sphere);
+    EXPECT_EQ(c.environment[2].center, (Vec3{4, 5, 6}));
+    EXPECT_EQ(c.environment[2].radius, 0.07);
+    EXPECT_EQ(c.environment[3].kind, ObstacleKind::capsule);
+    EXPECT_EQ(c.environment[3].center, (Vec3{7, 8, 9}));
+    EXPECT_EQ(c.environment[3].extent, (Vec3{10, 11, 12}));
+    EXPECT_EQ(c.environment[3].radius, 0.03);
+
+    // Absent: the defaults of scene_config.h and contact_model.h, and no obstacle.
+    const SceneConfig d = load("{}");
+    EXPECT_EQ(d.collision.sphere_spacing, 0.0);
+    EXPECT_EQ(d.collision.contact.stiffness, 500.0);
+    EXPECT_EQ(d.collision.contact.damping, 0.5);
+    EXPECT_EQ(d.collision.contact.friction, 0.3);
+    EXPECT_EQ(d.collision.contact.slip_speed, 0.01);
+    EXPECT_TRUE(d.environment.empty());
 }
 
 TEST(JsonLoader, RepeatedKeysAreRejected) {

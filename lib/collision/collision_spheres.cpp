@@ -1,0 +1,67 @@
+#include "collision/collision_spheres.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace enteron::collision {
+
+CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_length, double spacing,
+                                   double radius, std::pmr::memory_resource* memory)
+    : control_points_(control_points),
+      radius_(radius),
+      rest_spacing_(0.0),
+      sample_weights_(memory),
+      sample_points_(memory),
+      sample_arc_(memory),
+      spheres_(memory) {
+    const std::size_t segments = control_points - 1;
+    const std::size_t per_segment = kSamplesPerSegment + 1;  // both ends of every segment
+    sample_weights_.reserve(segments * per_segment);
+    for (std::size_t segment = 0; segment < segments; ++segment)
+        for (std::size_t k = 0; k <= kSamplesPerSegment; ++k)
+            sample_weights_.push_back(spline::segment_weights(
+                control_points, segment, double(k) / kSamplesPerSegment, spline::Derivative::value));
+    sample_points_.assign(3 * sample_weights_.size(), 0.0);
+    sample_arc_.assign(sample_weights_.size(), 0.0);
+    const std::size_t count = static_cast<std::size_t>(std::llround(rest_length / spacing)) + 1;
+    rest_spacing_ = rest_length / double(count - 1);
+    spheres_.resize(std::max<std::size_t>(count, 2));
+}
+
+void CollisionSpheres::update(const double* control_points) {
+    const std::size_t samples = sample_weights_.size();
+    double arc = 0.0;
+    for (std::size_t i = 0; i < samples; ++i) {
+        double* p = &sample_points_[3 * i];
+        spline::evaluate(control_points, sample_weights_[i], p);
+        // The first sample of a segment repeats the last one of the previous segment.
+        if (i > 0 && i % (kSamplesPerSegment + 1) != 0) {
+            const double* prev = p - 3;
+            arc += std::sqrt((p[0] - prev[0]) * (p[0] - prev[0]) + (p[1] - prev[1]) * (p[1] - prev[1]) +
+                             (p[2] - prev[2]) * (p[2] - prev[2]));
+        }
+        sample_arc_[i] = arc;
+    }
+    const double total = arc;
+    const std::size_t count = spheres_.size();
+    std::size_t interval = 0;  // sample index of the interval's start
+    for (std::size_t j = 0; j < count; ++j) {
+        const double target = total * double(j) / double(count - 1);
+        while (interval + 2 < samples &&
+               ((interval + 1) % (kSamplesPerSegment + 1) == 0 || sample_arc_[interval + 1] < target))
+            ++interval;
+        if ((interval + 1) % (kSamplesPerSegment + 1) == 0) --interval;  // never across a segment joint
+        const double a0 = sample_arc_[interval], a1 = sample_arc_[interval + 1];
+        const double t = a1 > a0 ? std::clamp((target - a0) / (a1 - a0), 0.0, 1.0) : 0.0;
+        const spline::SegmentWeights& w0 = sample_weights_[interval];
+        const spline::SegmentWeights& w1 = sample_weights_[interval + 1];
+        Sphere& sphere = spheres_[j];
+        sphere.weights.first = w0.first;
+        for (int k = 0; k < 4; ++k) sphere.weights.w[k] = (1.0 - t) * w0.w[k] + t * w1.w[k];
+        const double* p0 = &sample_points_[3 * interval];
+        for (int c = 0; c < 3; ++c) sphere.center[c] = (1.0 - t) * p0[c] + t * p0[3 + c];
+        sphere.arc_length = target;
+    }
+}
+
+}  // namespace enteron::collision

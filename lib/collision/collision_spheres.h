@@ -1,0 +1,51 @@
+// The collision geometry of the bowel (France et al. 2002, section 2.2): spheres of the
+// intestine radius R centred on the axis, evenly spaced in arc length. Their number is
+// fixed when the scene is made (rest length / spacing), and each update spreads them over
+// the current length, so the spacing stays even however the segments stretch.
+//
+// To stay cheap at 1 kHz the axis is followed as a fine polyline (a few samples per
+// segment, whose basis weights are constant) and a sphere's centre and weights are
+// interpolated on it; its force then reaches the control points through those weights.
+#pragma once
+
+#include <cstddef>
+#include <memory_resource>
+#include <vector>
+
+#include "spline/catmull_rom.h"
+
+namespace enteron::collision {
+
+struct Sphere {
+    spline::SegmentWeights weights;  // of the centre, on four control points
+    double center[3];                // m
+    double arc_length;               // from the first end, m
+};
+
+class CollisionSpheres {
+public:
+    // `spacing` (m) at rest; the count is round(rest_length / spacing) + 1.
+    CollisionSpheres(std::size_t control_points, double rest_length, double spacing, double radius,
+                     std::pmr::memory_resource* memory);
+
+    // Places the spheres on the axis given by the control points (x y z each).
+    void update(const double* control_points);
+
+    std::size_t size() const { return spheres_.size(); }
+    const Sphere& operator[](std::size_t i) const { return spheres_[i]; }
+    double radius() const { return radius_; }
+    double rest_spacing() const { return rest_spacing_; }
+
+private:
+    static constexpr std::size_t kSamplesPerSegment = 4;  // polyline intervals per segment
+
+    std::size_t control_points_;
+    double radius_;
+    double rest_spacing_;
+    std::pmr::vector<spline::SegmentWeights> sample_weights_;  // (kSamples + 1) per segment
+    std::pmr::vector<double> sample_points_;                   // x y z per sample
+    std::pmr::vector<double> sample_arc_;                      // arc length at each sample
+    std::pmr::vector<Sphere> spheres_;
+};
+
+}  // namespace enteron::collision

@@ -1,0 +1,45 @@
+// The penalty contact law shared by every contact of the bowel (environment, self-contact,
+// tools): a normal spring on the penetration depth, a damper that acts only while the
+// surfaces approach (so contacts never pull), and Coulomb friction regularised below a
+// slip speed so it stays smooth. Units: N/m, N s/m, and the friction coefficient.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace enteron::collision {
+
+struct ContactParameters {
+    double stiffness = 500.0;      // N/m per sphere contact
+    double damping = 0.5;          // N s/m, on approach only
+    double friction = 0.3;         // Coulomb coefficient
+    double slip_speed = 0.01;      // m/s: friction is viscous below about this speed
+};
+
+// The force on the bowel's sphere for a contact of depth `depth` (> 0) along the unit
+// normal n (pointing out of the obstacle), with the sphere's velocity v relative to it.
+// Also the linearisation: normal stiffness k, normal damping c (0 when separating) and the
+// tangential friction damping c_t, so that H = k n n^T and C = c n n^T + c_t (I - n n^T).
+struct ContactForce {
+    double force[3];
+    double normal_force;  // N, >= 0
+    double stiffness;
+    double damping;
+    double friction_damping;
+};
+
+inline ContactForce contact_force(const ContactParameters& p, double depth, const double n[3], const double v[3]) {
+    ContactForce out{};
+    const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+    const double approach = std::max(0.0, -vn);
+    out.normal_force = std::max(0.0, p.stiffness * depth + p.damping * approach);
+    out.stiffness = p.stiffness;
+    out.damping = approach > 0.0 ? p.damping : 0.0;
+    const double vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
+    const double slip = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2] + p.slip_speed * p.slip_speed);
+    out.friction_damping = p.friction * out.normal_force / slip;
+    for (int c = 0; c < 3; ++c) out.force[c] = out.normal_force * n[c] - out.friction_damping * vt[c];
+    return out;
+}
+
+}  // namespace enteron::collision

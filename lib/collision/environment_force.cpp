@@ -1,0 +1,104 @@
+#include "collision/environment_force.h"
+
+#include <cmath>
+
+#include "mechanics/system_matrix.h"
+
+namespace enteron::collision {
+
+using mechanics::add_axial_block;
+using mechanics::add_point_force;
+
+EnvironmentForce::EnvironmentForce(const mechanics::AxisModel& model, double rest_length, double radius,
+                                   double sphere_spacing, const ContactParameters& contact,
+                                   const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
+                                   std::pmr::memory_resource* memory)
+    : spheres_(model.control_points, rest_length, sphere_spacing, radius, memory),
+      contact_(contact),
+      obstacles_(memory) {
+    obstacles_.reserve(obstacles.size());
+    for (const Obstacle& obstacle : obstacles) add_obstacle(obstacle);
+    spheres_.update(initial.q.data());  // the stability bounds use the spheres' weights
+}
+
+void EnvironmentForce::add_obstacle(const Obstacle& obstacle) {
+    Obstacle o = obstacle;
+    if (o.kind == ObstacleKind::plane) {
+        const double norm = std::sqrt(o.extent[0] * o.extent[0] + o.extent[1] * o.extent[1] + o.extent[2] * o.extent[2]);
+        for (double& c : o.extent) c /= norm;
+    }
+    obstacles_.push_back(o);
+}
+
+void EnvironmentForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
+    spheres_.update(state.q.data());
+    last_ = {};
+    const double r = spheres_.radius();
+    for (std::size_t i = 0; i < spheres_.size(); ++i) {
+        const Sphere& sphere = spheres_[i];
+        double v[3];
+        spline::evaluate(state.v.data(), sphere.weights, v);
+        for (const Obstacle& obstacle : obstacles_) {
+            for_each_contact(obstacle, sphere.center, r, [&](const ObstacleContact& c) {
+                const ContactForce f = contact_force(contact_, c.depth, c.normal, v);
+                add_point_force(sphere.weights, f.force, force);
+                last_.count += 1;
+                last_.max_penetration = std::max(last_.max_penetration, c.depth);
+                if (lin == nullptr) return;
+                const double h = lin->h;
+                // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I.
+                add_axial_block(*lin->system, sphere.weights, c.normal,
+                                h * h * f.stiffness + h * f.damping - h * f.friction_damping,
+                                h * f.friction_damping, 1.0);
+                const double vn = v[0] * c.normal[0] + v[1] * c.normal[1] + v[2] * c.normal[2];
+                const double hv[3] = {f.stiffness * vn * c.normal[0], f.stiffness * vn * c.normal[1],
+                                      f.stiffness * vn * c.normal[2]};
+                add_point_force(sphere.weights, hv, lin->stiffness_times_velocity);
+            });
+        }
+    }
+}
+
+double EnvironmentForce::potential_energy(const mechanics::State& state) const {
+    spheres_.update(state.q.data());
+    double energy = 0.0;
+    const double r = spheres_.radius();
+    for (std::size_t i = 0; i < spheres_.size(); ++i)
+        for (const Obstacle& obstacle : obstacles_)
+            for_each_contact(obstacle, spheres_[i].center, r, [&](const ObstacleContact& c) {
+                energy += 0.5 * contact_.stiffness * c.depth * c.depth;
+            });
+    return energy;
+}
+
+double EnvironmentForce::max_contacts_per_sphere() const {
+    double contacts = 0.0;
+    for (const Obstacle& obstacle : obstacles_) contacts += obstacle.kind == ObstacleKind::box_inside ? 3.0 : 1.0;
+    return contacts;
+}
+
+void EnvironmentForce::add_sphere_gram(double scale, spline::ScalarBandMatrix& bound) const {
+    for (std::size_t i = 0; i < spheres_.size(); ++i) {
+        const spline::SegmentWeights& sw = spheres_[i].weights;
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k <= j; ++k) bound.add(sw.first + j, sw.first + k, scale * sw.w[j] * sw.w[k]);
+    }
+}
+
+void EnvironmentForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+    add_sphere_gram(contact_.stiffness * max_contacts_per_sphere(), bound);
+}
+
+void EnvironmentForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+    // Friction's damping grows with the normal force (mu f_n / slip speed); this bounds it
+    // for contacts up to R / 4 deep. Deeper piles rely on the guard.
+    const double friction = contact_.friction * contact_.stiffness * 0.25 * spheres_.radius() / contact_.slip_speed;
+    add_sphere_gram((contact_.damping + friction) * max_contacts_per_sphere(), bound);
+}
+
+void EnvironmentForce::summary_add(mechanics::ContactSummary& summary) const {
+    summary.count += last_.count;
+    summary.max_penetration = std::max(summary.max_penetration, last_.max_penetration);
+}
+
+}  // namespace enteron::collision

@@ -1,0 +1,47 @@
+// Contact of the bowel with its rigid surroundings (the abdominal cavity and other organs):
+// every collision sphere against every obstacle, penalty response (contact_model.h) mapped
+// to the control points through the sphere's basis weights. A contact touches only four
+// consecutive control points, so its linearisation goes into the implicit system.
+#pragma once
+
+#include <memory_resource>
+#include <vector>
+
+#include "collision/collision_spheres.h"
+#include "collision/contact_model.h"
+#include "collision/obstacle.h"
+#include "mechanics/axis_model.h"
+#include "mechanics/effect.h"
+
+namespace enteron::collision {
+
+class EnvironmentForce final : public mechanics::Effect {
+public:
+    EnvironmentForce(const mechanics::AxisModel& model, double rest_length, double radius, double sphere_spacing,
+                     const ContactParameters& contact, const std::vector<Obstacle>& obstacles,
+                     const mechanics::State& initial, std::pmr::memory_resource* memory);
+
+    EffectId id() const override { return EffectId::environment; }
+    void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
+    double potential_energy(const mechanics::State& state) const override;
+    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_contacts(mechanics::ContactSummary& summary) const override { summary_add(summary); }
+
+    // Adds an obstacle (validated; a plane's normal is normalised here). The caller
+    // refinalises the dynamics, since the stability bounds change.
+    void add_obstacle(const Obstacle& obstacle);
+
+private:
+    void summary_add(mechanics::ContactSummary& summary) const;
+    // Contact planes one sphere may touch at once, summed over the obstacles.
+    double max_contacts_per_sphere() const;
+    void add_sphere_gram(double scale, spline::ScalarBandMatrix& bound) const;
+
+    mutable CollisionSpheres spheres_;  // placed anew for each state evaluated
+    ContactParameters contact_;
+    std::pmr::vector<Obstacle> obstacles_;
+    mechanics::ContactSummary last_;
+};
+
+}  // namespace enteron::collision

@@ -1,0 +1,172 @@
+// Self-contact of the bowel: the spatial hash finds exactly the pairs a brute-force search
+// finds, folds closer than 2R push apart, and neighbours along the axis never collide.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory_resource>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "collision/self_contact_force.h"
+#include "collision/spatial_hash.h"
+#include "mechanics/state.h"
+
+namespace {
+
+using enteron::collision::ContactParameters;
+using enteron::collision::SelfContactForce;
+using enteron::collision::SpatialHash;
+using enteron::mechanics::AxisModel;
+using enteron::mechanics::ContactSummary;
+using enteron::mechanics::State;
+
+TEST(SpatialHash, CandidatePairsCoverBruteForceAndRepeatNone) {
+    std::mt19937 random(7);
+    for (int trial = 0; trial < 20; ++trial) {
+        const std::size_t count = 50 + 40 * trial;
+        const double cell = 0.025;
+        std::uniform_real_distribution<double> coordinate(-0.1, 0.1);
+        std::vector<double> points(3 * count);
+        for (double& p : points) p = coordinate(random);
+        SpatialHash grid(count, cell, std::pmr::new_delete_resource());
+        grid.build(points.data(), count, 3);
+        std::set<std::pair<std::size_t, std::size_t>> found;
+        std::size_t visits = 0;
+        grid.for_each_candidate_pair([&](std::size_t i, std::size_t j) {
+            ++visits;
+            found.insert({std::min(i, j), std::max(i, j)});
+        });
+        EXPECT_EQ(visits, found.size()) << "a pair was visited twice";
+        for (std::size_t i = 0; i < count; ++i)
+            for (std::size_t j = i + 1; j < count; ++j) {
+                const double* a = &points[3 * i];
+                const double* b = &points[3 * j];
+                const double d2 = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                  (a[2] - b[2]) * (a[2] - b[2]);
+                if (d2 < cell * cell) {
+                    EXPECT_TRUE(found.count({i, j})) << "missed pair " << i << ", " << j;
+                }
+            }
+    }
+}
+
+constexpr double kRadius = 0.0125;
+
+// A bowel axis through the given control points, with the default contact law.
+struct Axis {
+    explicit Axis(const std::vector<double>& points) : state(std::pmr::new_delete_resource()) {
+        const std::size_t n = points.size() / 3;
+        state.resize(n);
+        state.q.assign(points.begin(), points.end());
+        length = 0.0;
+        for (std::size_t i = 1; i < n; ++i) {
+            const double* a = &points[3 * (i - 1)];
+            const double* b = &points[3 * i];
+            length += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                (a[2] - b[2]) * (a[2] - b[2]));
+        }
+        model.control_points = n;
+        model.rest_segment_length = length / double(n - 1);
+        model.linear_density = 0.3;
+    }
+    // Contacts and generalised force of the self-contact effect on this axis.
+    ContactSummary contacts(std::vector<double>* force = nullptr) const {
+        SelfContactForce effect(model, length, kRadius, 0.5 * kRadius, ContactParameters{}, state,
+                                std::pmr::new_delete_resource());
+        std::vector<double> f(state.q.size(), 0.0);
+        effect.evaluate(state, f.data(), nullptr);
+        if (force != nullptr) *force = f;
+        ContactSummary summary;
+        effect.add_contacts(summary);
+        return summary;
+    }
+    State state;
+    AxisModel model;
+    double length;
+};
+
+std::vector<double> straight_line(std::size_t n, double spacing) {
+    std::vector<double> points;
+    for (std::size_t i = 0; i < n; ++i) points.insert(points.end(), {spacing * double(i), 0.0, 0.0});
+    return points;
+}
+
+TEST(SelfContact, NeighboursAlongAStraightAxisNeverCollide) {
+    const Axis axis(straight_line(40, 0.01));
+    EXPECT_EQ(axis.contacts().count, 0u);
+}
+
+TEST(SelfContact, ATightestBendMakesNoContact) {
+    // A half circle of radius R: as tight as a tube can bend without overlapping itself.
+    std::vector<double> points;
+    for (int i = 0; i <= 30; ++i) {
+        const double angle = 3.14159265358979 * i / 30.0;
+        points.insert(points.end(), {kRadius * std::cos(angle), kRadius * std::sin(angle), 0.0});
+    }
+    const Axis axis(points);
+    const ContactSummary summary = axis.contacts();
+    EXPECT_LT(summary.max_penetration, 0.02 * kRadius);
+}
+
+// A U-turn: two straight legs along x, `gap` apart axis to axis, joined by a half circle.
+std::vector<double> u_turn(double gap) {
+    std::vector<double> points;
+    const double leg = 0.2, step = 0.005;
+    for (double x = leg; x > 0.0; x -= step) points.insert(points.end(), {x, 0.0, 0.0});
+    for (int i = 0; i <= 12; ++i) {
+        const double angle = 3.14159265358979 * i / 12.0;
+        points.insert(points.end(), {-0.5 * gap * std::sin(angle), 0.5 * gap * (1.0 - std::cos(angle)), 0.0});
+    }
+    for (double x = step; x <= leg; x += step) points.insert(points.end(), {x, gap, 0.0});
+    return points;
+}
+
+TEST(SelfContact, TheLegsOfATouchingUTurnCollideAndPushApart) {
+    const Axis axis(u_turn(1.8 * kRadius));
+    std::vector<double> force;
+    const ContactSummary summary = axis.contacts(&force);
+    EXPECT_GT(summary.count, 10u);
+    EXPECT_NEAR(summary.max_penetration, 0.2 * kRadius, 0.05 * kRadius);
+    // The legs are pushed apart: the first leg (y = 0) toward -y, the second toward +y.
+    double first_leg = 0.0, second_leg = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < axis.state.count(); ++i) {
+        const double x = axis.state.q[3 * i], y = axis.state.q[3 * i + 1];
+        total += force[3 * i + 1];
+        if (x < 0.05) continue;  // the turn
+        (y < 0.5 * 1.8 * kRadius ? first_leg : second_leg) += force[3 * i + 1];
+    }
+    EXPECT_LT(first_leg, 0.0);
+    EXPECT_GT(second_leg, 0.0);
+    // Action and reaction: the contacts add no net force to the bowel.
+    EXPECT_NEAR(total, 0.0, 1e-9 * std::fabs(first_leg));
+}
+
+TEST(SelfContact, LegsApartMakeNoContact) {
+    const Axis axis(u_turn(2.2 * kRadius));
+    EXPECT_EQ(axis.contacts().count, 0u);
+}
+
+TEST(SelfContact, TwoCrossingFoldsPushApart) {
+    // One straight piece along x at z = 0, a second along y at z = 1.5 R above it, joined
+    // far away so they are not neighbours along the axis.
+    std::vector<double> points;
+    for (int i = 0; i <= 20; ++i) points.insert(points.end(), {-0.1 + 0.01 * i, 0.0, 0.0});
+    for (int i = 1; i <= 10; ++i) points.insert(points.end(), {0.1, 0.01 * i, 0.01 * i});
+    for (int i = 1; i <= 20; ++i) points.insert(points.end(), {0.1 - 0.005 * i, 0.1 - 0.01 * i, 0.1});
+    // Bring the last straight piece down so it crosses the first at z = 1.5 R.
+    for (int i = 0; i < 20; ++i) points[3 * (31 + i) + 2] = 1.5 * kRadius;
+    for (int i = 0; i < 20; ++i) points[3 * (31 + i) + 0] = 0.0;
+    const Axis axis(points);
+    std::vector<double> force;
+    const ContactSummary summary = axis.contacts(&force);
+    ASSERT_GT(summary.count, 0u);
+    EXPECT_NEAR(summary.max_penetration, 0.5 * kRadius, 0.1 * kRadius);
+    double lower = 0.0, upper = 0.0;
+    for (std::size_t i = 0; i < axis.state.count(); ++i) (i <= 20 ? lower : upper) += force[3 * i + 2];
+    EXPECT_LT(lower, 0.0);
+    EXPECT_GT(upper, 0.0);
+}
+
+}  // namespace
