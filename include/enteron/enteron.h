@@ -142,8 +142,20 @@ typedef struct ent_callbacks {
     void* user_data;
 } ent_callbacks;
 
+/**
+ * Fills the first struct_size bytes of *callbacks with no hooks (silent, malloc/free) and
+ * sets callbacks->struct_size to struct_size; nothing past struct_size is written. Call it
+ * through ent_callbacks_default, which passes the size from the header the program was
+ * compiled with, so a program built against an older header never has its smaller struct
+ * overrun by a newer library.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (callbacks NULL); ENT_ERROR_VERSION (a size
+ *         no release of ent_callbacks has; nothing written).
+ */
+ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_size);
+
 /** Fills *callbacks with no hooks (silent, malloc/free) and sets struct_size. NULL is ignored. */
-ENT_API void ent_callbacks_default(ent_callbacks* callbacks);
+#define ent_callbacks_default(callbacks) \
+    ((void)ent_callbacks_init((callbacks), (uint32_t)sizeof(ent_callbacks)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Scene description                                                                    */
@@ -241,8 +253,20 @@ typedef struct ent_scene_desc {
     const ent_callbacks* callbacks;
 } ent_scene_desc;
 
+/**
+ * Fills the first struct_size bytes of *desc with the defaults listed above and sets
+ * desc->struct_size to struct_size; nothing past struct_size is written. Call it through
+ * ent_scene_desc_default, which passes the size from the header the program was compiled
+ * with: a program built against an older header gets its older, smaller struct filled
+ * (never overrun), and the library serves the fields it lacks with their defaults.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (desc NULL); ENT_ERROR_VERSION (a size no
+ *         release of ent_scene_desc has; nothing written).
+ */
+ENT_API ent_status ent_scene_desc_init(ent_scene_desc* desc, uint32_t struct_size);
+
 /** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
-ENT_API void ent_scene_desc_default(ent_scene_desc* desc);
+#define ent_scene_desc_default(desc) \
+    ((void)ent_scene_desc_init((desc), (uint32_t)sizeof(ent_scene_desc)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Scene                                                                                */
