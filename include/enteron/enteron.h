@@ -15,12 +15,25 @@
  * failing call changes nothing: the scene is exactly as it was before the call (only the
  * work counters of ent_stats and ent_effect_stats record a step the guard gave up on).
  *
- * Threads: one thread drives a scene (create, step, tools, destroy). The query calls
- * (ent_scene_axis, ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats)
- * read the last published state, an immutable snapshot made after every successful step,
- * and may run on any number of other threads at the same time as the step. The stepping
- * thread never waits on a reader for more than a pointer swap. ent_scene_destroy must not
- * race with any other call on that scene.
+ * Threads:
+ * - One thread at a time drives a scene: ent_scene_step (and, as they come, the tool
+ *   calls). Driving calls on one scene must not overlap; the driving thread may change
+ *   if the caller hands the scene over (e.g. under its own mutex).
+ * - The queries (ent_scene_axis, ent_scene_control_points, ent_scene_stats,
+ *   ent_scene_effect_stats) read the last published snapshot: an immutable copy of the
+ *   state made at creation and at the end of every step (a step that fails publishes the
+ *   same state with its work counters). Any number of threads may query at the same time
+ *   as each other and as the step; each query sees one whole snapshot, never a mix of
+ *   two, and snapshots seen by one thread never go back in time. A query pins a snapshot
+ *   only while it copies from it, and the stepping thread never waits for a copy: it
+ *   publishes into a free slot of a small pool (8 slots; with up to 7 queries running at
+ *   once every step is published, beyond that a publication may be skipped and the next
+ *   one goes through).
+ * - ent_scene_destroy must not overlap any other call on that scene.
+ * - Different scenes are independent; the calls that take no scene (ent_version,
+ *   ent_status_string, ent_last_error, ent_effect_name, the _init/_default functions)
+ *   are safe from any thread. ent_last_error is per thread. Callbacks run on the thread
+ *   of the call that triggers them.
  *
  * The library never prints, never aborts and never exits. It logs only through the
  * optional callback given in ent_callbacks.
