@@ -15,12 +15,25 @@
  * failing call changes nothing: the scene is exactly as it was before the call (only the
  * work counters of ent_stats and ent_effect_stats record a step the guard gave up on).
  *
- * Threads: one thread drives a scene (create, step, tools, destroy). The query calls
- * (ent_scene_axis, ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats)
- * read the last published state, an immutable snapshot made after every successful step,
- * and may run on any number of other threads at the same time as the step. The stepping
- * thread never waits on a reader for more than a pointer swap. ent_scene_destroy must not
- * race with any other call on that scene.
+ * Threads:
+ * - One thread at a time drives a scene: ent_scene_step (and, as they come, the tool
+ *   calls). Driving calls on one scene must not overlap; the driving thread may change
+ *   if the caller hands the scene over (e.g. under its own mutex).
+ * - The queries (ent_scene_axis, ent_scene_control_points, ent_scene_stats,
+ *   ent_scene_effect_stats) read the last published snapshot: an immutable copy of the
+ *   state made at creation and at the end of every step (a step that fails publishes the
+ *   same state with its work counters). Any number of threads may query at the same time
+ *   as each other and as the step; each query sees one whole snapshot, never a mix of
+ *   two, and snapshots seen by one thread never go back in time. A query pins a snapshot
+ *   only while it copies from it, and the stepping thread never waits for a copy: it
+ *   publishes into a free slot of a small pool (8 slots; with up to 7 queries running at
+ *   once every step is published, beyond that a publication may be skipped and the next
+ *   one goes through).
+ * - ent_scene_destroy must not overlap any other call on that scene.
+ * - Different scenes are independent; the calls that take no scene (ent_version,
+ *   ent_status_string, ent_last_error, ent_effect_name, the _init/_default functions)
+ *   are safe from any thread. ent_last_error is per thread. Callbacks run on the thread
+ *   of the call that triggers them.
  *
  * The library never prints, never aborts and never exits. It logs only through the
  * optional callback given in ent_callbacks.
@@ -142,8 +155,20 @@ typedef struct ent_callbacks {
     void* user_data;
 } ent_callbacks;
 
+/**
+ * Fills the first struct_size bytes of *callbacks with no hooks (silent, malloc/free) and
+ * sets callbacks->struct_size to struct_size; nothing past struct_size is written. Call it
+ * through ent_callbacks_default, which passes the size from the header the program was
+ * compiled with, so a program built against an older header never has its smaller struct
+ * overrun by a newer library.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (callbacks NULL); ENT_ERROR_VERSION (a size
+ *         no release of ent_callbacks has; nothing written).
+ */
+ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_size);
+
 /** Fills *callbacks with no hooks (silent, malloc/free) and sets struct_size. NULL is ignored. */
-ENT_API void ent_callbacks_default(ent_callbacks* callbacks);
+#define ent_callbacks_default(callbacks) \
+    ((void)ent_callbacks_init((callbacks), (uint32_t)sizeof(ent_callbacks)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Scene description                                                                    */
@@ -251,8 +276,20 @@ typedef struct ent_scene_desc {
     double contact_slip_speed_m_per_s;  /**< friction is viscous below about this sliding speed (default 0.01). */
 } ent_scene_desc;
 
+/**
+ * Fills the first struct_size bytes of *desc with the defaults listed above and sets
+ * desc->struct_size to struct_size; nothing past struct_size is written. Call it through
+ * ent_scene_desc_default, which passes the size from the header the program was compiled
+ * with: a program built against an older header gets its older, smaller struct filled
+ * (never overrun), and the library serves the fields it lacks with their defaults.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (desc NULL); ENT_ERROR_VERSION (a size no
+ *         release of ent_scene_desc has; nothing written).
+ */
+ENT_API ent_status ent_scene_desc_init(ent_scene_desc* desc, uint32_t struct_size);
+
 /** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
-ENT_API void ent_scene_desc_default(ent_scene_desc* desc);
+#define ent_scene_desc_default(desc) \
+    ((void)ent_scene_desc_init((desc), (uint32_t)sizeof(ent_scene_desc)))
 
 /* ------------------------------------------------------------------------------------ */
 /* Scene                                                                                */
@@ -386,8 +423,17 @@ typedef struct ent_obstacle_desc {
     double radius_m;           /**< sphere, capsule: radius, > 0 (default 0.05). */
 } ent_obstacle_desc;
 
+/**
+ * Fills the first struct_size bytes of *desc with the defaults listed above and sets
+ * desc->struct_size; nothing past struct_size is written. Call it through
+ * ent_obstacle_desc_default, which passes the size of the header the program was built with.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (desc NULL); ENT_ERROR_VERSION (unknown size).
+ */
+ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t struct_size);
+
 /** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
-ENT_API void ent_obstacle_desc_default(ent_obstacle_desc* desc);
+#define ent_obstacle_desc_default(desc) \
+    ((void)ent_obstacle_desc_init((desc), (uint32_t)sizeof(ent_obstacle_desc)))
 
 /**
  * Adds a rigid obstacle to the scene's environment. The first obstacle turns the

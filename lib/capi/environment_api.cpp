@@ -43,15 +43,20 @@ enteron::collision::Obstacle obstacle_from(const ent_obstacle_desc& desc) {
 
 extern "C" {
 
-ENT_API void ent_obstacle_desc_default(ent_obstacle_desc* desc) {
-    if (desc == nullptr) return;
-    std::memset(desc, 0, sizeof *desc);
-    desc->struct_size = sizeof *desc;
-    desc->kind = ENT_OBSTACLE_BOX_INSIDE;
-    for (int c = 0; c < 3; ++c) desc->half_extents_m[c] = 0.12;
-    desc->normal[2] = 1.0;
-    desc->end_m[2] = 0.1;
-    desc->radius_m = 0.05;
+ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t struct_size) {
+    return enteron::capi::guarded([&] {
+        enteron::capi::require(desc, "desc");
+        enteron::capi::check_struct_size(struct_size, {sizeof(ent_obstacle_desc)}, "ent_obstacle_desc");
+        ent_obstacle_desc defaults;
+        std::memset(&defaults, 0, sizeof defaults);
+        defaults.struct_size = struct_size;
+        defaults.kind = ENT_OBSTACLE_BOX_INSIDE;
+        for (int c = 0; c < 3; ++c) defaults.half_extents_m[c] = 0.12;
+        defaults.normal[2] = 1.0;
+        defaults.end_m[2] = 0.1;
+        defaults.radius_m = 0.05;
+        std::memcpy(desc, &defaults, struct_size);
+    });
 }
 
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle) {

@@ -1,6 +1,7 @@
 // The scene entry points of the C API: create, destroy, step and the snapshot queries.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory_resource>
 #include <optional>
@@ -57,8 +58,9 @@ ENT_API ent_status ent_scene_create(const ent_scene_desc* desc, ent_scene** out_
     return guarded([&] {
         require(desc, "desc");
         require(out_scene, "out_scene");
-        const enteron::scene::SceneConfig config = enteron::capi::config_from_desc(*desc);
-        *out_scene = make_handle(desc->callbacks, config);
+        const ent_scene_desc complete = enteron::capi::complete_desc(*desc);
+        const enteron::scene::SceneConfig config = enteron::capi::config_from_desc(complete);
+        *out_scene = make_handle(complete.callbacks, config);
     });
 }
 
@@ -126,7 +128,11 @@ ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
     return guarded([&] {
         const enteron::scene::Scene& s = scene_of(scene);
         require(out, "out");
-        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_stats)}, "ent_stats");
+        // The sizes of ent_stats in released headers; fields past an older size are not
+        // written. 0.0 preview: without last_step_ns (a simulated release, see
+        // complete_desc in scene_desc.cpp and tests/abi/); 0.1: the current header.
+        enteron::capi::check_struct_size(out->struct_size, {offsetof(ent_stats, last_step_ns), sizeof(ent_stats)},
+                                         "ent_stats");
         const auto snapshot = s.read();
         const enteron::scene::SceneStats& stats = snapshot->stats;
         ent_stats full{};

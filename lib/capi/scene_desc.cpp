@@ -1,5 +1,6 @@
 #include "capi/scene_desc.h"
 
+#include <cstddef>
 #include <cstring>
 
 #include "capi/call_guard.h"
@@ -15,27 +16,89 @@ constexpr uint32_t kMaxControlPoints = 100000;
 
 scene::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
 
-// The description as the library sees it: the caller's fields over the defaults, so an
-// older, smaller struct_size gets defaults for the fields it lacks.
-ent_scene_desc complete_desc(const ent_scene_desc& given) {
-    check_struct_size(given.struct_size, {sizeof(ent_scene_desc)}, "ent_scene_desc");
+// The defaults of the current ent_scene_desc, whole.
+ent_scene_desc default_desc() {
     ent_scene_desc desc;
-    ent_scene_desc_default(&desc);
-    std::memcpy(&desc, &given, given.struct_size);
+    const enteron::scene::SceneConfig defaults;
+    const enteron::scene::MesenteryConfig mesentery;
+    const enteron::scene::DampingConfig damping;
+    const enteron::scene::ShapeConfig& shape = defaults.intestine.shape;
+    std::memset(&desc, 0, sizeof desc);
+    desc.struct_size = sizeof desc;
+    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
+                    ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
+    desc.length_m = defaults.intestine.length;
+    desc.radius_m = defaults.intestine.radius;
+    desc.control_points = static_cast<uint32_t>(defaults.intestine.control_points);
+    desc.linear_density_kg_per_m = defaults.intestine.linear_density;
+    desc.stretch_stiffness_N = 100.0;
+    desc.bend_stiffness_N_m2 = 2.5e-3;
+    desc.shape = static_cast<int32_t>(shape.kind);
+    for (int c = 0; c < 3; ++c) {
+        desc.shape_center_m[c] = shape.center[c];
+        desc.shape_direction[c] = shape.direction[c];
+        desc.mesentery_root_start_m[c] = mesentery.root_start[c];
+        desc.mesentery_root_end_m[c] = mesentery.root_end[c];
+    }
+    desc.shape_leg_length_m = shape.leg_length;
+    desc.shape_leg_spacing_m = shape.leg_spacing;
+    desc.shape_helix_radius_m = shape.helix_radius;
+    desc.shape_helix_pitch_m = shape.helix_pitch;
+    desc.integrator = static_cast<int32_t>(defaults.solver.integrator);
+    desc.timestep_s = defaults.solver.timestep;
+    desc.max_substeps = static_cast<uint32_t>(defaults.solver.max_substeps);
+    desc.max_subdivisions = static_cast<uint32_t>(defaults.solver.max_subdivisions);
+    desc.max_speed_m_per_s = defaults.solver.max_speed;
+    desc.gravity_m_per_s2[2] = -9.81;
+    desc.drag_N_s_per_m2 = damping.drag;
+    desc.stretch_damping_N_s = damping.stretch;
+    desc.bend_damping_N_m2_s = damping.bend;
+    desc.mesentery_attachments = static_cast<uint32_t>(mesentery.attachments);
+    desc.mesentery_stiffness_N_per_m = mesentery.stiffness;
+    desc.mesentery_rest_length_m = mesentery.rest_length;
+    desc.pinned_ends = ENT_PIN_NONE;
+    const enteron::scene::CollisionConfig collision;
+    desc.collision_sphere_spacing_m = collision.sphere_spacing;
+    desc.contact_stiffness_N_per_m = collision.contact.stiffness;
+    desc.contact_damping_N_s_per_m = collision.contact.damping;
+    desc.contact_friction = collision.contact.friction;
+    desc.contact_slip_speed_m_per_s = collision.contact.slip_speed;
     return desc;
 }
 
 }  // namespace
 
+// The sizes of ent_scene_desc in released headers. An older size is the offset of the first
+// field its header lacks; those fields take their defaults.
+//   0.0 preview  without `callbacks`. A simulated release: no 0.0 was published, but
+//                tests/abi/enteron_v0_0.h keeps its header so that a test proves older
+//                callers are served (tests/abi/old_caller.c).
+//   0.1          the current header.
+void check_scene_desc_size(uint32_t struct_size) {
+    check_struct_size(struct_size, {offsetof(ent_scene_desc, callbacks), sizeof(ent_scene_desc)},
+                      "ent_scene_desc");
+}
+
+ent_scene_desc complete_desc(const ent_scene_desc& given) {
+    check_scene_desc_size(given.struct_size);
+    ent_scene_desc desc = default_desc();
+    std::memcpy(&desc, &given, given.struct_size);
+    return desc;
+}
+
+// The sizes of ent_callbacks in released headers: only the current one so far.
+void check_callbacks_size(uint32_t struct_size) {
+    check_struct_size(struct_size, {sizeof(ent_callbacks)}, "ent_callbacks");
+}
+
 void check_callbacks(const ent_callbacks& callbacks) {
-    check_struct_size(callbacks.struct_size, {sizeof(ent_callbacks)}, "ent_callbacks");
+    check_callbacks_size(callbacks.struct_size);
     if ((callbacks.allocate == nullptr) != (callbacks.release == nullptr))
         throw Error(ErrorCode::invalid_argument,
                     "ent_callbacks.allocate and ent_callbacks.release must be given together");
 }
 
-scene::SceneConfig config_from_desc(const ent_scene_desc& given) {
-    const ent_scene_desc desc = complete_desc(given);
+scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     scene::SceneConfig config;
     const auto has = [&](int effect) { return (desc.effects & ENT_EFFECT_BIT(effect)) != 0; };
     // The effects a description turns on by bit; the environment starts with an obstacle.
@@ -110,58 +173,26 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& given) {
 
 extern "C" {
 
-ENT_API void ent_callbacks_default(ent_callbacks* callbacks) {
-    if (callbacks == nullptr) return;
-    std::memset(callbacks, 0, sizeof *callbacks);
-    callbacks->struct_size = sizeof *callbacks;
+ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_size) {
+    return enteron::capi::guarded([&] {
+        enteron::capi::require(callbacks, "callbacks");
+        enteron::capi::check_callbacks_size(struct_size);
+        ent_callbacks defaults;
+        std::memset(&defaults, 0, sizeof defaults);
+        defaults.struct_size = struct_size;
+        std::memcpy(callbacks, &defaults, struct_size);
+    });
 }
 
-ENT_API void ent_scene_desc_default(ent_scene_desc* desc) {
-    if (desc == nullptr) return;
-    const enteron::scene::SceneConfig defaults;
-    const enteron::scene::MesenteryConfig mesentery;
-    const enteron::scene::DampingConfig damping;
-    const enteron::scene::ShapeConfig& shape = defaults.intestine.shape;
-    std::memset(desc, 0, sizeof *desc);
-    desc->struct_size = sizeof *desc;
-    desc->effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
-                    ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
-    desc->length_m = defaults.intestine.length;
-    desc->radius_m = defaults.intestine.radius;
-    desc->control_points = static_cast<uint32_t>(defaults.intestine.control_points);
-    desc->linear_density_kg_per_m = defaults.intestine.linear_density;
-    desc->stretch_stiffness_N = 100.0;
-    desc->bend_stiffness_N_m2 = 2.5e-3;
-    desc->shape = static_cast<int32_t>(shape.kind);
-    for (int c = 0; c < 3; ++c) {
-        desc->shape_center_m[c] = shape.center[c];
-        desc->shape_direction[c] = shape.direction[c];
-        desc->mesentery_root_start_m[c] = mesentery.root_start[c];
-        desc->mesentery_root_end_m[c] = mesentery.root_end[c];
-    }
-    desc->shape_leg_length_m = shape.leg_length;
-    desc->shape_leg_spacing_m = shape.leg_spacing;
-    desc->shape_helix_radius_m = shape.helix_radius;
-    desc->shape_helix_pitch_m = shape.helix_pitch;
-    desc->integrator = static_cast<int32_t>(defaults.solver.integrator);
-    desc->timestep_s = defaults.solver.timestep;
-    desc->max_substeps = static_cast<uint32_t>(defaults.solver.max_substeps);
-    desc->max_subdivisions = static_cast<uint32_t>(defaults.solver.max_subdivisions);
-    desc->max_speed_m_per_s = defaults.solver.max_speed;
-    desc->gravity_m_per_s2[2] = -9.81;
-    desc->drag_N_s_per_m2 = damping.drag;
-    desc->stretch_damping_N_s = damping.stretch;
-    desc->bend_damping_N_m2_s = damping.bend;
-    desc->mesentery_attachments = static_cast<uint32_t>(mesentery.attachments);
-    desc->mesentery_stiffness_N_per_m = mesentery.stiffness;
-    desc->mesentery_rest_length_m = mesentery.rest_length;
-    desc->pinned_ends = ENT_PIN_NONE;
-    const enteron::scene::CollisionConfig collision;
-    desc->collision_sphere_spacing_m = collision.sphere_spacing;
-    desc->contact_stiffness_N_per_m = collision.contact.stiffness;
-    desc->contact_damping_N_s_per_m = collision.contact.damping;
-    desc->contact_friction = collision.contact.friction;
-    desc->contact_slip_speed_m_per_s = collision.contact.slip_speed;
+ENT_API ent_status ent_scene_desc_init(ent_scene_desc* desc, uint32_t struct_size) {
+    return enteron::capi::guarded([&] {
+        enteron::capi::require(desc, "desc");
+        enteron::capi::check_scene_desc_size(struct_size);
+        ent_scene_desc defaults = enteron::capi::default_desc();
+        defaults.struct_size = struct_size;
+        // An older caller's struct ends at struct_size: write nothing past it.
+        std::memcpy(desc, &defaults, struct_size);
+    });
 }
 
 }  // extern "C"

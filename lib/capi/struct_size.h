@@ -19,7 +19,7 @@ inline void check_struct_size(uint32_t struct_size, std::initializer_list<std::s
     char message[192];
     std::snprintf(message, sizeof message,
                   "%s.struct_size is %u, which no release of this library (version %d.%d.%d) knows; "
-                  "fill the struct with its _default function first",
+                  "set it to sizeof the struct (the _default macros do it for you)",
                   type, struct_size, ENT_VERSION_MAJOR, ENT_VERSION_MINOR, ENT_VERSION_PATCH);
     throw Error(ErrorCode::version, message);
 }

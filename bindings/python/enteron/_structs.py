@@ -1,0 +1,95 @@
+"""ctypes mirrors of the structs in include/enteron/enteron.h (this binding's header: 0.1).
+
+Every struct starts with struct_size, so a newer library serves this layout unchanged
+and a field appended later simply is not seen here. The test test_layout compares each
+size and offset with the C compiler's.
+"""
+import ctypes
+
+LOG_FUNCTION = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int32, ctypes.c_char_p)
+ALLOCATE_FUNCTION = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_size_t)
+RELEASE_FUNCTION = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t, ctypes.c_size_t)
+
+_vec3 = ctypes.c_double * 3
+
+
+class ent_callbacks(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("log", LOG_FUNCTION),
+        ("allocate", ALLOCATE_FUNCTION),
+        ("release", RELEASE_FUNCTION),
+        ("user_data", ctypes.c_void_p),
+    ]
+
+
+class ent_scene_desc(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("effects", ctypes.c_uint32),
+        ("length_m", ctypes.c_double),
+        ("radius_m", ctypes.c_double),
+        ("control_points", ctypes.c_uint32),
+        ("linear_density_kg_per_m", ctypes.c_double),
+        ("stretch_stiffness_N", ctypes.c_double),
+        ("bend_stiffness_N_m2", ctypes.c_double),
+        ("shape", ctypes.c_int32),
+        ("shape_center_m", _vec3),
+        ("shape_direction", _vec3),
+        ("shape_leg_length_m", ctypes.c_double),
+        ("shape_leg_spacing_m", ctypes.c_double),
+        ("shape_helix_radius_m", ctypes.c_double),
+        ("shape_helix_pitch_m", ctypes.c_double),
+        ("shape_points_xyz_m", ctypes.POINTER(ctypes.c_double)),
+        ("integrator", ctypes.c_int32),
+        ("timestep_s", ctypes.c_double),
+        ("max_substeps", ctypes.c_uint32),
+        ("max_subdivisions", ctypes.c_uint32),
+        ("max_speed_m_per_s", ctypes.c_double),
+        ("gravity_m_per_s2", _vec3),
+        ("drag_N_s_per_m2", ctypes.c_double),
+        ("stretch_damping_N_s", ctypes.c_double),
+        ("bend_damping_N_m2_s", ctypes.c_double),
+        ("mesentery_root_start_m", _vec3),
+        ("mesentery_root_end_m", _vec3),
+        ("mesentery_attachments", ctypes.c_uint32),
+        ("mesentery_stiffness_N_per_m", ctypes.c_double),
+        ("mesentery_rest_length_m", ctypes.c_double),
+        ("pinned_ends", ctypes.c_int32),
+        ("pinned_points", ctypes.POINTER(ctypes.c_uint32)),
+        ("pinned_point_count", ctypes.c_uint32),
+        ("callbacks", ctypes.POINTER(ent_callbacks)),
+        ("collision_sphere_spacing_m", ctypes.c_double),
+        ("contact_stiffness_N_per_m", ctypes.c_double),
+        ("contact_damping_N_s_per_m", ctypes.c_double),
+        ("contact_friction", ctypes.c_double),
+        ("contact_slip_speed_m_per_s", ctypes.c_double),
+    ]
+
+
+class ent_stats(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("control_points", ctypes.c_uint32),
+        ("time_s", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+        ("substeps", ctypes.c_uint64),
+        ("rollbacks", ctypes.c_uint64),
+        ("kinetic_energy_J", ctypes.c_double),
+        ("potential_energy_J", ctypes.c_double),
+        ("contacts", ctypes.c_uint32),
+        ("max_penetration_m", ctypes.c_double),
+        ("last_step_ns", ctypes.c_uint64),
+    ]
+
+
+class ent_effect_stats(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("enabled", ctypes.c_int32),
+        ("calls", ctypes.c_uint64),
+        ("total_time_ns", ctypes.c_uint64),
+    ]
+
+
+ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats)

@@ -1,0 +1,258 @@
+"""Scenes: create, step, query. A Scene owns its ent_scene handle; close it (or use it as a
+context manager) to release it at a known time rather than at garbage collection."""
+import ctypes
+import dataclasses
+import json
+
+import numpy as np
+
+from . import _buffers
+from . import _structs as s
+from ._errors import ERROR_BUFFER_TOO_SMALL, Error, check
+from ._library import lib
+
+EFFECT_STRETCH = 0
+EFFECT_BEND = 1
+EFFECT_DAMPING = 2
+EFFECT_GRAVITY = 3
+EFFECT_MESENTERY = 4
+EFFECT_PINNED = 5
+EFFECT_COUNT = 6  # the effects this binding knows (a newer library may know more)
+
+SHAPE_LINE = 0
+SHAPE_SERPENTINE = 1
+SHAPE_HELIX = 2
+SHAPE_POINTS = 3
+
+INTEGRATOR_RK4 = 0
+INTEGRATOR_SYMPLECTIC_EULER = 1
+INTEGRATOR_IMPLICIT_EULER = 2
+
+PIN_NONE = 0
+PIN_FIRST = 1
+PIN_LAST = 2
+PIN_BOTH = 3
+
+LOG_DEBUG = 0
+LOG_INFO = 1
+LOG_WARNING = 2
+LOG_ERROR = 3
+
+
+def effect_name(effect):
+    """The JSON-style name of an effect number ("stretch", ...), or None if unknown."""
+    name = lib.ent_effect_name(effect)
+    return name.decode() if name is not None else None
+
+
+def effect_number(effect):
+    """An effect given by number or by name ("gravity") as its number."""
+    if isinstance(effect, str):
+        for number in range(EFFECT_COUNT):
+            if effect_name(number) == effect:
+                return number
+        raise ValueError("unknown effect %r (expected one of: %s)"
+                         % (effect, ", ".join(effect_name(n) for n in range(EFFECT_COUNT))))
+    return int(effect)
+
+
+class SceneDesc:
+    """An ent_scene_desc filled with the library's defaults (ent_scene_desc_init), then with
+    the keyword arguments, named as the C fields: SceneDesc(control_points=40, length_m=1.0,
+    gravity_m_per_s2=(0, 0, -9.81), integrator=enteron.INTEGRATOR_RK4). Also:
+      effects             a bit mask, or an iterable of effect numbers or names
+                          ({"gravity", "stretch"}); default: stretch, bend, damping, gravity
+      shape_points_xyz_m  an (n, 3) array-like (sets shape to SHAPE_POINTS and control_points)
+      pinned_points       an iterable of control point indices
+    The arrays are copied and kept with the description until the scene is created."""
+
+    _ARRAYS = ("shape_points_xyz_m", "pinned_points")
+
+    def __init__(self, **fields):
+        self.struct = s.ent_scene_desc()
+        check(lib.ent_scene_desc_init(ctypes.byref(self.struct), ctypes.sizeof(self.struct)),
+              "ent_scene_desc_init")
+        self._keep = {}
+        for name, value in fields.items():
+            setattr(self, name, value)
+
+    def __setattr__(self, name, value):
+        if name in ("struct", "_keep"):
+            object.__setattr__(self, name, value)
+            return
+        known = {field[0] for field in s.ent_scene_desc._fields_} - {"struct_size", "callbacks", "pinned_point_count"}
+        if name not in known:
+            raise AttributeError("ent_scene_desc has no settable field %r" % name)
+        if name == "effects" and not isinstance(value, int):
+            mask = 0
+            for effect in value:
+                mask |= 1 << effect_number(effect)
+            value = mask
+        if name == "shape_points_xyz_m":
+            points = np.ascontiguousarray(value, dtype=np.float64).reshape(-1, 3)
+            self._keep[name] = points
+            self.struct.shape_points_xyz_m = points.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+            self.struct.shape = SHAPE_POINTS
+            self.struct.control_points = len(points)
+            return
+        if name == "pinned_points":
+            indices = np.ascontiguousarray(list(value), dtype=np.uint32)
+            self._keep[name] = indices
+            self.struct.pinned_points = indices.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32))
+            self.struct.pinned_point_count = len(indices)
+            return
+        target = getattr(self.struct, name)
+        if isinstance(target, ctypes.Array):
+            if len(value) != len(target):
+                raise ValueError("%s needs %d values, got %d" % (name, len(target), len(value)))
+            target[:] = [float(v) for v in value]
+        else:
+            setattr(self.struct, name, value)
+
+    def __getattr__(self, name):
+        if name.startswith("_") or name == "struct":
+            raise AttributeError(name)
+        value = getattr(self.struct, name)
+        return list(value) if isinstance(value, ctypes.Array) else value
+
+
+@dataclasses.dataclass(frozen=True)
+class Stats:
+    """ent_stats: counters and energies of the last published state (SI units)."""
+    control_points: int
+    time_s: float
+    steps: int
+    substeps: int
+    rollbacks: int
+    kinetic_energy_J: float
+    potential_energy_J: float
+    contacts: int
+    max_penetration_m: float
+    last_step_ns: int
+
+
+@dataclasses.dataclass(frozen=True)
+class EffectStats:
+    """ent_effect_stats: what one effect cost so far."""
+    effect: int
+    name: str
+    enabled: bool
+    calls: int
+    total_time_ns: int
+
+
+class Scene:
+    """A simulated intestine (ent_scene).
+
+    Scene('{"intestine": {...}}')       from JSON text (str or bytes)
+    Scene({"intestine": {...}})         from a dict, given to the library as JSON
+    Scene(desc=SceneDesc(...))          from a C description (or desc={field: value})
+    log=callable(level, message)        optional: receives the scene's log lines
+    Failures raise enteron.Error. Threads: as in C, one thread steps while others query.
+    """
+
+    def __init__(self, description=None, *, desc=None, log=None):
+        if (description is None) == (desc is None):
+            raise TypeError("give either a JSON description (text or dict) or desc=, not both or neither")
+        self._handle = None
+        self._callbacks = None
+        self._log_function = None
+        if log is not None:
+            self._log_function = s.LOG_FUNCTION(
+                lambda _user, level, message: log(level, message.decode(errors="replace")))
+            self._callbacks = s.ent_callbacks()
+            check(lib.ent_callbacks_init(ctypes.byref(self._callbacks), ctypes.sizeof(self._callbacks)),
+                  "ent_callbacks_init")
+            self._callbacks.log = self._log_function
+        handle = ctypes.c_void_p()
+        if desc is not None:
+            if not isinstance(desc, SceneDesc):
+                desc = SceneDesc(**desc)
+            desc.struct.callbacks = ctypes.pointer(self._callbacks) if self._callbacks is not None else None
+            check(lib.ent_scene_create(ctypes.byref(desc.struct), ctypes.byref(handle)), "ent_scene_create")
+        else:
+            if isinstance(description, dict):
+                description = json.dumps(description)
+            text = description.encode() if isinstance(description, str) else bytes(description)
+            callbacks = ctypes.byref(self._callbacks) if self._callbacks is not None else None
+            check(lib.ent_scene_create_json_with(text, len(text), callbacks, ctypes.byref(handle)),
+                  "ent_scene_create_json")
+        self._handle = handle
+        self._count = self._control_point_count()
+
+    # ---- lifetime -----------------------------------------------------------------------
+    def close(self):
+        """Destroys the scene (ent_scene_destroy). Idempotent; later calls raise ValueError."""
+        handle, self._handle = getattr(self, "_handle", None), None
+        if handle:
+            lib.ent_scene_destroy(handle)
+
+    @property
+    def closed(self):
+        return not self._handle
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        self.close()
+
+    def _live(self):
+        if not self._handle:
+            raise ValueError("operation on a closed enteron.Scene")
+        return self._handle
+
+    # ---- driving --------------------------------------------------------------------------
+    def step(self, dt_s):
+        """Advances by dt_s seconds (ent_scene_step)."""
+        check(lib.ent_scene_step(self._live(), dt_s), "ent_scene_step")
+
+    # ---- queries of the last published state (any thread) ---------------------------------
+    @property
+    def control_point_count(self):
+        return self._count
+
+    def _control_point_count(self):
+        count = ctypes.c_uint32()
+        check(lib.ent_scene_control_points(self._live(), 0, None, ctypes.byref(count)), "ent_scene_control_points")
+        return count.value
+
+    def axis(self, count=100):
+        """count points evenly spaced along the axis, as a (count, 3) float64 array in m."""
+        array, pointer = _buffers.new_array(count, 3)
+        check(lib.ent_scene_axis(self._live(), count, pointer), "ent_scene_axis")
+        return array
+
+    def control_points(self):
+        """The control points, as an (n, 3) float64 array in m (a copy: the C API copies)."""
+        array, pointer = _buffers.new_array(self._count, 3)
+        count = ctypes.c_uint32()
+        status = lib.ent_scene_control_points(self._live(), self._count, pointer, ctypes.byref(count))
+        if status == ERROR_BUFFER_TOO_SMALL:  # cannot happen today: the count is fixed
+            self._count = count.value
+            return self.control_points()
+        check(status, "ent_scene_control_points")
+        return array[: count.value]
+
+    def stats(self):
+        """ent_scene_stats as a Stats dataclass."""
+        raw = s.ent_stats()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_scene_stats(self._live(), ctypes.byref(raw)), "ent_scene_stats")
+        return Stats(**{field: getattr(raw, field) for field in Stats.__dataclass_fields__})
+
+    def effect_stats(self, effect):
+        """ent_scene_effect_stats of one effect, by number (enteron.EFFECT_*) or name."""
+        number = effect_number(effect)
+        raw = s.ent_effect_stats()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_scene_effect_stats(self._live(), number, ctypes.byref(raw)), "ent_scene_effect_stats")
+        return EffectStats(number, effect_name(number), bool(raw.enabled), raw.calls, raw.total_time_ns)
+
+    def all_effect_stats(self):
+        """{name: EffectStats} for every effect this binding knows."""
+        return {effect_name(n): self.effect_stats(n) for n in range(EFFECT_COUNT)}

@@ -1,0 +1,53 @@
+/* Prints the size and field offsets of the public structs as the C compiler lays them out,
+ * as JSON, for the Python binding's test_layout (which compares its ctypes mirrors). */
+#include <enteron/enteron.h>
+
+#include <stddef.h>
+#include <stdio.h>
+
+static int first;
+#define BEGIN(type)                                                                      \
+    printf("%s\"%s\": {\"size\": %u, \"fields\": {", first ? "" : ", ", #type,         \
+           (unsigned)sizeof(type));                                                      \
+    first = 0;                                                                           \
+    {                                                                                    \
+        int first_field = 1;                                                             \
+        typedef type current_type;
+#define FIELD(name)                                                                      \
+    printf("%s\"%s\": [%u, %u]", first_field ? "" : ", ", #name,                        \
+           (unsigned)offsetof(current_type, name), (unsigned)sizeof(((current_type*)0)->name)); \
+    first_field = 0;
+#define END()   \
+    }           \
+    printf("}}");
+
+int main(void) {
+    first = 1;
+    printf("{");
+    BEGIN(ent_callbacks)
+    FIELD(struct_size) FIELD(log) FIELD(allocate) FIELD(release) FIELD(user_data)
+    END()
+    BEGIN(ent_scene_desc)
+    FIELD(struct_size) FIELD(effects) FIELD(length_m) FIELD(radius_m) FIELD(control_points)
+    FIELD(linear_density_kg_per_m) FIELD(stretch_stiffness_N) FIELD(bend_stiffness_N_m2) FIELD(shape)
+    FIELD(shape_center_m) FIELD(shape_direction) FIELD(shape_leg_length_m) FIELD(shape_leg_spacing_m)
+    FIELD(shape_helix_radius_m) FIELD(shape_helix_pitch_m) FIELD(shape_points_xyz_m) FIELD(integrator)
+    FIELD(timestep_s) FIELD(max_substeps) FIELD(max_subdivisions) FIELD(max_speed_m_per_s)
+    FIELD(gravity_m_per_s2) FIELD(drag_N_s_per_m2) FIELD(stretch_damping_N_s) FIELD(bend_damping_N_m2_s)
+    FIELD(mesentery_root_start_m) FIELD(mesentery_root_end_m) FIELD(mesentery_attachments)
+    FIELD(mesentery_stiffness_N_per_m) FIELD(mesentery_rest_length_m) FIELD(pinned_ends) FIELD(pinned_points)
+    FIELD(pinned_point_count) FIELD(callbacks)
+    FIELD(collision_sphere_spacing_m) FIELD(contact_stiffness_N_per_m) FIELD(contact_damping_N_s_per_m)
+    FIELD(contact_friction) FIELD(contact_slip_speed_m_per_s)
+    END()
+    BEGIN(ent_stats)
+    FIELD(struct_size) FIELD(control_points) FIELD(time_s) FIELD(steps) FIELD(substeps) FIELD(rollbacks)
+    FIELD(kinetic_energy_J) FIELD(potential_energy_J) FIELD(contacts) FIELD(max_penetration_m)
+    FIELD(last_step_ns)
+    END()
+    BEGIN(ent_effect_stats)
+    FIELD(struct_size) FIELD(enabled) FIELD(calls) FIELD(total_time_ns)
+    END()
+    printf("}\n");
+    return 0;
+}

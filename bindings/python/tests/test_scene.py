@@ -1,0 +1,227 @@
+"""Scenes through the binding: the values are the C API's, errors raise, handles close."""
+import ctypes
+import threading
+import unittest
+
+import numpy as np
+
+import enteron
+from enteron import _library, _structs
+
+G = (0.5, -1.0, -9.81)  # m/s^2, not along an axis: every coordinate moves
+H = 1e-3                 # s
+
+# A rigid free fall (gravity alone): every control point follows symplectic Euler's exact
+# discrete solution dq = g (t^2 + h t) / 2 with t = k h.
+FREE_FALL = {
+    "intestine": {"length": 1.0, "control_points": 20, "linear_density": 0.3,
+                  "shape": {"kind": "line", "center": [0.1, -0.2, 0.3], "direction": [1, 1, 0]}},
+    "solver": {"integrator": "symplectic_euler", "timestep": H},
+    "gravity": list(G),
+}
+
+
+def raw_axis(scene, count):
+    """ent_scene_axis called directly through ctypes, bypassing the Scene class."""
+    buffer = (ctypes.c_double * (3 * count))()
+    assert _library.lib.ent_scene_axis(scene._handle, count, buffer) == 0
+    return np.array(buffer[:]).reshape(count, 3)
+
+
+class FreeFall(unittest.TestCase):
+    def test_control_points_follow_the_exact_discrete_solution(self):
+        with enteron.Scene(FREE_FALL) as scene:
+            start = scene.control_points()
+            self.assertEqual(start.shape, (20, 3))
+            steps = 250
+            for _ in range(steps):
+                scene.step(H)
+            t = steps * H
+            expected = 0.5 * np.array(G) * (t * t + H * t)
+            np.testing.assert_allclose(scene.control_points() - start, np.tile(expected, (20, 1)), atol=1e-12)
+
+    def test_stats_and_effect_stats(self):
+        with enteron.Scene(FREE_FALL) as scene:
+            for _ in range(100):
+                scene.step(H)
+            stats = scene.stats()
+            self.assertIsInstance(stats, enteron.Stats)
+            self.assertEqual(stats.steps, 100)
+            self.assertEqual(stats.substeps, 100)
+            self.assertEqual(stats.control_points, 20)
+            self.assertAlmostEqual(stats.time_s, 0.1, places=12)
+            mass = 0.3 * 1.0
+            speed2 = sum((g * 0.1) ** 2 for g in G)
+            self.assertAlmostEqual(stats.kinetic_energy_J, 0.5 * mass * speed2, delta=1e-9)
+            gravity = scene.effect_stats("gravity")
+            self.assertEqual(gravity, scene.effect_stats(enteron.EFFECT_GRAVITY))
+            self.assertTrue(gravity.enabled)
+            self.assertEqual(gravity.calls, 100)
+            stretch = scene.effect_stats("stretch")
+            self.assertFalse(stretch.enabled)
+            self.assertEqual(stretch.calls, 0)
+            self.assertEqual(set(scene.all_effect_stats()),
+                             {"stretch", "bend", "damping", "gravity", "mesentery", "pinned"})
+
+
+class SameAsTheCApi(unittest.TestCase):
+    def test_axis_equals_the_raw_c_call(self):
+        with enteron.Scene(json_text()) as scene:
+            for _ in range(20):
+                scene.step(H)
+            for count in (2, 7, 100):
+                axis = scene.axis(count)
+                self.assertEqual(axis.shape, (count, 3))
+                self.assertEqual(axis.dtype, np.float64)
+                np.testing.assert_array_equal(axis, raw_axis(scene, count))
+            # The axis passes through the end control points.
+            points = scene.control_points()
+            np.testing.assert_allclose(scene.axis(50)[[0, -1]], points[[0, -1]], atol=1e-12)
+
+    def test_desc_and_json_give_the_same_scene(self):
+        desc = enteron.SceneDesc(effects={"gravity", "stretch", "bend"}, control_points=24, length_m=1.0,
+                                 shape=enteron.SHAPE_LINE, shape_direction=(0, 1, 0),
+                                 integrator=enteron.INTEGRATOR_RK4, gravity_m_per_s2=(0, 0, -9.81))
+        text = {"intestine": {"length": 1.0, "control_points": 24, "stretch_stiffness": 100,
+                              "bend_stiffness": 2.5e-3,
+                              "shape": {"kind": "line", "direction": [0, 1, 0]}},
+                "solver": {"integrator": "rk4"}, "gravity": [0, 0, -9.81]}
+        with enteron.Scene(desc=desc) as a, enteron.Scene(text) as b:
+            for _ in range(30):
+                a.step(H)
+                b.step(H)
+            np.testing.assert_array_equal(a.control_points(), b.control_points())
+
+    def test_desc_defaults_are_the_libraries(self):
+        desc = enteron.SceneDesc()
+        self.assertEqual(desc.control_points, 240)
+        self.assertEqual(desc.length_m, 6.0)
+        self.assertEqual(desc.gravity_m_per_s2, [0.0, 0.0, -9.81])
+        self.assertEqual(desc.struct_size, ctypes.sizeof(_structs.ent_scene_desc))
+
+    def test_points_shape_and_pinned_points(self):
+        points = np.column_stack([np.linspace(0, 0.5, 11), np.zeros(11), np.zeros(11)])
+        desc = enteron.SceneDesc(shape_points_xyz_m=points, effects={"gravity", "pinned"},
+                                 pinned_points=[0, 10])
+        with enteron.Scene(desc=desc) as scene:
+            np.testing.assert_array_equal(scene.control_points(), points)
+            for _ in range(10):
+                scene.step(H)
+            after = scene.control_points()
+            np.testing.assert_array_equal(after[[0, 10]], points[[0, 10]])
+            self.assertLess(after[5, 2], 0.0)  # the middle falls
+
+
+class Errors(unittest.TestCase):
+    def assertRaisesStatus(self, status, text, function, *args, **kwargs):
+        with self.assertRaises(enteron.Error) as caught:
+            function(*args, **kwargs)
+        self.assertEqual(caught.exception.status, status)
+        self.assertEqual(caught.exception.status_name, enteron.status_string(status))
+        self.assertIn(text, caught.exception.message)
+        self.assertIn(text, str(caught.exception))
+        return caught.exception
+
+    def test_creation_errors_carry_the_library_message(self):
+        self.assertRaisesStatus(enteron.ERROR_PARSE, "byte", enteron.Scene, "{\"intestine\": ,}")
+        self.assertRaisesStatus(enteron.ERROR_INVALID_SCENE, "intestine.radius must be > 0",
+                                enteron.Scene, {"intestine": {"radius": -1}})
+        self.assertRaisesStatus(enteron.ERROR_INVALID_SCENE, 'unknown key "lenght"',
+                                enteron.Scene, {"intestine": {"lenght": 1}})
+        self.assertRaisesStatus(enteron.ERROR_INVALID_ARGUMENT, "radius_m must be > 0",
+                                enteron.Scene, desc={"radius_m": -1.0})
+
+    def test_call_errors(self):
+        with enteron.Scene(FREE_FALL) as scene:
+            self.assertRaisesStatus(enteron.ERROR_INVALID_ARGUMENT, "dt_s", scene.step, -1.0)
+            self.assertRaisesStatus(enteron.ERROR_INVALID_ARGUMENT, "count must be >= 2", scene.axis, 1)
+            self.assertRaisesStatus(enteron.ERROR_NOT_FOUND, "99", scene.effect_stats, 99)
+            self.assertEqual(scene.stats().steps, 0)  # nothing changed
+        with enteron.Scene(dict(FREE_FALL, solver={"integrator": "symplectic_euler", "max_speed": 1e-6})) as scene:
+            self.assertRaisesStatus(enteron.ERROR_UNSTABLE, "unstable", scene.step, H)
+
+    def test_python_level_mistakes(self):
+        with self.assertRaises(AttributeError):
+            enteron.SceneDesc(lenght_m=1.0)
+        with self.assertRaises(ValueError):
+            enteron.SceneDesc(effects={"gravitation"})
+        with self.assertRaises(TypeError):
+            enteron.Scene()
+        with self.assertRaises(TypeError):
+            enteron.Scene(FREE_FALL, desc={})
+
+
+class Lifetime(unittest.TestCase):
+    def test_context_manager_destroys_the_scene_once(self):
+        destroyed = []
+        original = _library.lib.ent_scene_destroy
+
+        def counting_destroy(handle):
+            destroyed.append(handle.value if isinstance(handle, ctypes.c_void_p) else handle)
+            original(handle)
+
+        _library.lib.ent_scene_destroy = counting_destroy
+        try:
+            with enteron.Scene(FREE_FALL) as scene:
+                handle = scene._handle.value
+                self.assertFalse(scene.closed)
+            self.assertTrue(scene.closed)
+            self.assertEqual(destroyed, [handle])
+            scene.close()  # idempotent
+            self.assertEqual(destroyed, [handle])
+            with self.assertRaises(ValueError):
+                scene.step(H)
+            with self.assertRaises(ValueError):
+                scene.axis(10)
+            # An exception inside the block still releases the scene.
+            with self.assertRaises(RuntimeError):
+                with enteron.Scene(FREE_FALL) as other:
+                    raise RuntimeError("boom")
+            self.assertTrue(other.closed)
+            self.assertEqual(len(destroyed), 2)
+        finally:
+            _library.lib.ent_scene_destroy = original
+
+    def test_log_callback_receives_lines(self):
+        lines = []
+        with enteron.Scene(FREE_FALL, log=lambda level, message: lines.append((level, message))) as scene:
+            scene.step(H)
+        self.assertTrue(lines)
+        self.assertTrue(all(enteron.LOG_DEBUG <= level <= enteron.LOG_ERROR and message for level, message in lines))
+
+
+class Threads(unittest.TestCase):
+    def test_queries_run_while_another_thread_steps(self):
+        # ctypes releases the GIL during each call: a reader thread overlaps the stepping.
+        with enteron.Scene(FREE_FALL) as scene:
+            done = threading.Event()
+            problems = []
+            reads = [0]
+
+            def reader():
+                last = -1.0
+                while not done.is_set():
+                    stats = scene.stats()
+                    axis = scene.axis(16)
+                    if stats.time_s < last or not np.all(np.isfinite(axis)):
+                        problems.append(stats)
+                    last = stats.time_s
+                    reads[0] += 1
+
+            thread = threading.Thread(target=reader)
+            thread.start()
+            for _ in range(2000):
+                scene.step(H)
+            done.set()
+            thread.join()
+            self.assertEqual(problems, [])
+            self.assertGreater(reads[0], 0)
+
+
+def json_text():
+    return ('{"intestine": {"length": 1.0, "control_points": 30, "stretch_stiffness": 100,'
+            ' "bend_stiffness": 2.5e-3}, "gravity": [0, 0, -9.81], "damping": {}, "mesentery": {}}')
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,148 @@
+/*
+ * The threads of a simulator: a physics thread steps the scene at 1 kHz, paced by the
+ * wall clock, while a render thread reads the axis at 60 Hz, as a renderer would before
+ * drawing a frame. The render thread never blocks the physics thread: it reads the last
+ * published snapshot (see "Threads" in enteron.h). Skins, when they come, are updated on
+ * the render thread the same way.
+ *
+ *   enteron_render_thread [--seconds S]    (default 1.5)
+ *
+ * Prints one line per thread and exits 0 if every step and every read succeeded and the
+ * render thread saw the simulation advance. Ticks the physics thread could not keep (a
+ * loaded machine) are counted, not treated as failures.
+ */
+#define _POSIX_C_SOURCE 200809L /* clock_nanosleep, pthreads */
+#include <enteron/enteron.h>
+
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define AXIS_POINTS 200
+
+typedef struct {
+    ent_scene* scene;
+    struct timespec start; /* both threads run from here for `seconds` */
+    double seconds;
+    /* physics thread results */
+    long steps, late_ticks, failed_steps;
+    double worst_step_us;
+    /* render thread results */
+    long frames, failed_reads, advanced_frames;
+    double lowest_z, last_time;
+} shared_state;
+
+static double seconds_since(const struct timespec* start) {
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - start->tv_sec) + 1e-9 * (double)(now.tv_nsec - start->tv_nsec);
+}
+
+static struct timespec after(const struct timespec* start, double seconds) {
+    struct timespec t = *start;
+    const double whole = floor(seconds);
+    t.tv_sec += (time_t)whole;
+    t.tv_nsec += (long)((seconds - whole) * 1e9);
+    if (t.tv_nsec >= 1000000000L) {
+        t.tv_sec += 1;
+        t.tv_nsec -= 1000000000L;
+    }
+    return t;
+}
+
+static void* physics_thread(void* argument) {
+    shared_state* s = argument;
+    const double period = 0.001; /* 1 kHz */
+    const long ticks = (long)(s->seconds / period + 0.5);
+    long tick;
+    for (tick = 1; tick <= ticks; ++tick) {
+        const double before = seconds_since(&s->start);
+        if (ent_scene_step(s->scene, period) != ENT_OK) {
+            if (s->failed_steps++ == 0) fprintf(stderr, "render_thread: step: %s\n", ent_last_error());
+        } else {
+            ++s->steps;
+        }
+        {
+            const double took_us = 1e6 * (seconds_since(&s->start) - before);
+            const struct timespec next = after(&s->start, (double)tick * period);
+            if (took_us > s->worst_step_us) s->worst_step_us = took_us;
+            if (seconds_since(&s->start) > (double)tick * period) ++s->late_ticks;
+            clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL);
+        }
+    }
+    return NULL;
+}
+
+static void* render_thread(void* argument) {
+    shared_state* s = argument;
+    static double axis[AXIS_POINTS * 3];
+    const double period = 1.0 / 60.0;
+    long frame;
+    s->lowest_z = HUGE_VAL;
+    s->last_time = -1.0;
+    for (frame = 1; (double)frame * period <= s->seconds; ++frame) {
+        const struct timespec next = after(&s->start, (double)frame * period);
+        ent_stats stats;
+        int i;
+        clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL);
+        memset(&stats, 0, sizeof stats);
+        stats.struct_size = sizeof stats;
+        if (ent_scene_axis(s->scene, AXIS_POINTS, axis) != ENT_OK || ent_scene_stats(s->scene, &stats) != ENT_OK) {
+            if (s->failed_reads++ == 0) fprintf(stderr, "render_thread: read: %s\n", ent_last_error());
+            continue;
+        }
+        /* "Draw" the frame: here, find its lowest point. */
+        for (i = 0; i < AXIS_POINTS; ++i) {
+            if (!isfinite(axis[3 * i + 2])) ++s->failed_reads;
+            else if (axis[3 * i + 2] < s->lowest_z) s->lowest_z = axis[3 * i + 2];
+        }
+        if (stats.time_s > s->last_time) ++s->advanced_frames;
+        s->last_time = stats.time_s;
+        ++s->frames;
+    }
+    return NULL;
+}
+
+int main(int argc, char** argv) {
+    static const char json[] =
+        "{\"intestine\": {\"length\": 2.0, \"control_points\": 80,"
+        "                 \"stretch_stiffness\": 100, \"bend_stiffness\": 2.5e-3,"
+        "                 \"shape\": {\"kind\": \"serpentine\", \"leg_length\": 0.25}},"
+        " \"gravity\": [0, 0, -9.81], \"damping\": {}, \"mesentery\": {}}";
+    shared_state s;
+    pthread_t physics, render;
+    memset(&s, 0, sizeof s);
+    s.seconds = 1.5;
+    if (argc == 3 && strcmp(argv[1], "--seconds") == 0) s.seconds = atof(argv[2]);
+    else if (argc != 1) {
+        fprintf(stderr, "usage: enteron_render_thread [--seconds S]\n");
+        return 2;
+    }
+    if (ent_scene_create_json(json, strlen(json), &s.scene) != ENT_OK) {
+        fprintf(stderr, "render_thread: %s\n", ent_last_error());
+        return 1;
+    }
+    clock_gettime(CLOCK_MONOTONIC, &s.start);
+    if (pthread_create(&physics, NULL, physics_thread, &s) != 0 ||
+        pthread_create(&render, NULL, render_thread, &s) != 0) {
+        fprintf(stderr, "render_thread: cannot start the threads\n");
+        return 1;
+    }
+    pthread_join(physics, NULL);
+    pthread_join(render, NULL);
+    ent_scene_destroy(s.scene);
+
+    printf("render_thread: physics: %ld steps of 1 ms in %.2f s of wall time, %ld late ticks, "
+           "slowest step %.0f us\n", s.steps, s.seconds, s.late_ticks, s.worst_step_us);
+    printf("render_thread: render: %ld frames at 60 Hz, %ld saw a newer state, lowest point z = %.4f m, "
+           "last frame at simulated t = %.3f s\n", s.frames, s.advanced_frames, s.lowest_z, s.last_time);
+    if (s.failed_steps != 0 || s.failed_reads != 0 || s.frames == 0 || s.advanced_frames < s.frames / 2) {
+        fprintf(stderr, "render_thread: FAILED (%ld failed steps, %ld failed reads)\n", s.failed_steps,
+                s.failed_reads);
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,98 @@
+// The struct_size handshake from the library's side: the _init functions behind the
+// _default macros write exactly the size they are given, every released size is served,
+// and sizes no release has are refused with ENT_ERROR_VERSION and nothing written.
+// (tests/abi/old_caller.c does the same from a program built against an older header.)
+#include "capi_test_support.h"
+
+#include <cstddef>
+
+using namespace capi_test;
+
+namespace {
+
+// The released sizes: the 0.0 preview (a simulated release, tests/abi/enteron_v0_0.h)
+// lacked ent_scene_desc.callbacks and ent_stats.last_step_ns.
+constexpr uint32_t kOldDescSize = offsetof(ent_scene_desc, callbacks);
+constexpr uint32_t kOldStatsSize = offsetof(ent_stats, last_step_ns);
+
+bool contains_text(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+bool all_bytes(const void* memory, std::size_t from, std::size_t to, unsigned char value) {
+    const auto* bytes = static_cast<const unsigned char*>(memory);
+    for (std::size_t i = from; i < to; ++i)
+        if (bytes[i] != value) return false;
+    return true;
+}
+
+TEST(StructSize, DescInitWritesExactlyTheSizeItIsGiven) {
+    ent_scene_desc full;
+    ent_scene_desc_default(&full);
+    for (uint32_t size : {kOldDescSize, uint32_t(sizeof(ent_scene_desc))}) {
+        SCOPED_TRACE(size);
+        ent_scene_desc desc;
+        std::memset(&desc, 0xcd, sizeof desc);
+        ASSERT_EQ(ent_scene_desc_init(&desc, size), ENT_OK) << ent_last_error();
+        EXPECT_EQ(desc.struct_size, size);
+        // The bytes up to size are the defaults (struct_size aside), the rest untouched.
+        EXPECT_EQ(std::memcmp(reinterpret_cast<char*>(&desc) + sizeof desc.struct_size,
+                              reinterpret_cast<char*>(&full) + sizeof full.struct_size,
+                              size - sizeof desc.struct_size),
+                  0);
+        EXPECT_TRUE(all_bytes(&desc, size, sizeof desc, 0xcd));
+    }
+}
+
+TEST(StructSize, UnknownSizesAreRefusedAndNothingIsWritten) {
+    for (uint32_t size : {0u, 4u, kOldDescSize - 8, kOldDescSize + 4, uint32_t(sizeof(ent_scene_desc) + 8),
+                          0xffffffffu}) {
+        SCOPED_TRACE(size);
+        ent_scene_desc desc;
+        std::memset(&desc, 0xcd, sizeof desc);
+        EXPECT_EQ(ent_scene_desc_init(&desc, size), ENT_ERROR_VERSION);
+        EXPECT_TRUE(contains_text(ent_last_error(), "ent_scene_desc.struct_size is " + std::to_string(size)))
+            << ent_last_error();
+        EXPECT_TRUE(all_bytes(&desc, 0, sizeof desc, 0xcd));
+    }
+    for (uint32_t size : {0u, uint32_t(sizeof(ent_callbacks) - 8), uint32_t(sizeof(ent_callbacks) + 8)}) {
+        SCOPED_TRACE(size);
+        ent_callbacks callbacks;
+        std::memset(&callbacks, 0xcd, sizeof callbacks);
+        EXPECT_EQ(ent_callbacks_init(&callbacks, size), ENT_ERROR_VERSION);
+        EXPECT_TRUE(contains_text(ent_last_error(), "ent_callbacks.struct_size")) << ent_last_error();
+        EXPECT_TRUE(all_bytes(&callbacks, 0, sizeof callbacks, 0xcd));
+    }
+    EXPECT_EQ(ent_scene_desc_init(nullptr, sizeof(ent_scene_desc)), ENT_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(ent_callbacks_init(nullptr, sizeof(ent_callbacks)), ENT_ERROR_INVALID_ARGUMENT);
+}
+
+TEST(StructSize, AnOldDescriptionGetsTheDefaultsOfTheFieldsItLacks) {
+    // What lies past an old caller's struct is not the caller's: here a bogus callbacks
+    // pointer, which the library must never read (it would crash on it).
+    ent_scene_desc desc = default_desc();
+    desc.control_points = 12;
+    desc.length_m = 0.5;
+    desc.struct_size = kOldDescSize;
+    desc.callbacks = reinterpret_cast<const ent_callbacks*>(uintptr_t{0x10});
+    ent_scene* scene = nullptr;
+    ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
+    ScenePtr owned(scene);
+    ASSERT_TRUE(step_n(scene, 1e-3, 5));
+    EXPECT_EQ(stats(scene).control_points, 12u);
+}
+
+TEST(StructSize, OldStatsAreFilledUpToTheirSizeOnly) {
+    ScenePtr scene = create(default_desc());
+    ASSERT_TRUE(scene);
+    ASSERT_TRUE(step_n(scene.get(), 1e-3, 3));
+    const ent_stats full = stats(scene.get());
+    ent_stats old;
+    std::memset(&old, 0xcd, sizeof old);
+    old.struct_size = kOldStatsSize;
+    ASSERT_EQ(ent_scene_stats(scene.get(), &old), ENT_OK) << ent_last_error();
+    EXPECT_EQ(old.steps, 3u);
+    EXPECT_EQ(old.time_s, full.time_s);
+    EXPECT_EQ(old.kinetic_energy_J, full.kinetic_energy_J);
+    EXPECT_TRUE(all_bytes(&old, kOldStatsSize, sizeof old, 0xcd)) << "last_step_ns was written";
+}
+
+}  // namespace

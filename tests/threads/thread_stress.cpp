@@ -1,0 +1,184 @@
+// Thread stress test of the documented thread model: one thread steps a scene at full speed
+// while reader threads query the last published state, for a given wall time. Run under
+// ThreadSanitizer by scripts/test (preset `tsan`), where a data race fails it.
+//
+//   enteron_thread_stress [--seconds S] [--readers N]
+//
+// Every read must be internally consistent, whichever snapshot it saw:
+//   - the control point count never changes, and every coordinate is finite;
+//   - the axis samples are finite, and both ends of the axis are the end control points
+//     of some published state, so they lie within the box the scene can reach;
+//   - ent_stats comes from one snapshot: time_s = steps x dt exactly (a torn read of two
+//     snapshots would break it), energies are finite, and per reader the time and the
+//     step count never go backwards;
+//   - effect calls never go backwards per reader.
+// The stepping thread's every step must succeed. The test fails (exit 1) with a count of
+// each kind of violation; it also fails if the readers barely overlapped the stepping.
+//
+// More reader kinds (skin updates, tool wrench reads) join as more of the API arrives:
+// add them to kReaders below.
+#include <enteron/enteron.h>
+
+#include <atomic>
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+constexpr uint32_t kControlPoints = 40;
+constexpr uint32_t kAxisSamples = 64;
+constexpr double kDt = 1e-3;        // s per step
+constexpr double kReachable = 10.0;  // m: nothing of this scene gets this far from the origin
+
+struct Violations {
+    std::atomic<long> failed_calls{0};
+    std::atomic<long> count_changed{0};
+    std::atomic<long> not_finite{0};
+    std::atomic<long> out_of_reach{0};
+    std::atomic<long> torn_stats{0};
+    std::atomic<long> went_backwards{0};
+    std::atomic<long> reads{0};
+
+    long total() const {
+        return failed_calls + count_changed + not_finite + out_of_reach + torn_stats + went_backwards;
+    }
+};
+
+bool finite_all(const double* values, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i)
+        if (!std::isfinite(values[i])) return false;
+    return true;
+}
+
+bool within_reach(const double* xyz) {
+    return std::fabs(xyz[0]) < kReachable && std::fabs(xyz[1]) < kReachable && std::fabs(xyz[2]) < kReachable;
+}
+
+// One reader: runs every kind of query in turn until `done`.
+void read_until_done(const ent_scene* scene, const std::atomic<bool>& done, Violations& v) {
+    std::vector<double> points(3 * kControlPoints), axis(3 * kAxisSamples);
+    double last_time = -1.0;
+    uint64_t last_steps = 0;
+    uint64_t last_calls[ENT_EFFECT_COUNT] = {};
+    while (!done.load(std::memory_order_relaxed)) {
+        uint32_t count = 0;
+        if (ent_scene_control_points(scene, kControlPoints, points.data(), &count) != ENT_OK) ++v.failed_calls;
+        else if (count != kControlPoints) ++v.count_changed;
+        else if (!finite_all(points.data(), points.size())) ++v.not_finite;
+
+        if (ent_scene_axis(scene, kAxisSamples, axis.data()) != ENT_OK) ++v.failed_calls;
+        else if (!finite_all(axis.data(), axis.size())) ++v.not_finite;
+        else if (!within_reach(&axis[0]) || !within_reach(&axis[3 * (kAxisSamples - 1)])) ++v.out_of_reach;
+
+        ent_stats stats;
+        std::memset(&stats, 0, sizeof stats);
+        stats.struct_size = sizeof stats;
+        if (ent_scene_stats(scene, &stats) != ENT_OK) {
+            ++v.failed_calls;
+        } else {
+            if (stats.control_points != kControlPoints) ++v.count_changed;
+            if (!std::isfinite(stats.kinetic_energy_J) || !std::isfinite(stats.potential_energy_J)) ++v.not_finite;
+            const double expected_time = double(stats.steps) * kDt;
+            if (std::fabs(stats.time_s - expected_time) > 1e-9 * (1.0 + expected_time)) ++v.torn_stats;
+            if (stats.time_s < last_time || stats.steps < last_steps) ++v.went_backwards;
+            last_time = stats.time_s;
+            last_steps = stats.steps;
+        }
+
+        for (int32_t effect = 0; effect < ENT_EFFECT_COUNT; ++effect) {
+            ent_effect_stats e;
+            std::memset(&e, 0, sizeof e);
+            e.struct_size = sizeof e;
+            if (ent_scene_effect_stats(scene, effect, &e) != ENT_OK) {
+                ++v.failed_calls;
+                continue;
+            }
+            if (e.calls < last_calls[effect]) ++v.went_backwards;
+            last_calls[effect] = e.calls;
+        }
+        ++v.reads;
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    double seconds = 2.0;
+    int readers = 2;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--seconds" && i + 1 < argc) seconds = std::atof(argv[++i]);
+        else if (arg == "--readers" && i + 1 < argc) readers = std::atoi(argv[++i]);
+        else {
+            std::fprintf(stderr, "usage: enteron_thread_stress [--seconds S] [--readers N]\n");
+            return 2;
+        }
+    }
+
+    // Every effect this version has, on a bowel that moves: gravity pulls it out of its
+    // helix against its mesentery, with one end pinned.
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+    desc.control_points = kControlPoints;
+    desc.length_m = 1.0;
+    desc.shape_helix_radius_m = 0.05;
+    desc.mesentery_attachments = 10;
+    desc.pinned_ends = ENT_PIN_FIRST;
+    desc.timestep_s = kDt;
+    ent_scene* scene = nullptr;
+    if (ent_scene_create(&desc, &scene) != ENT_OK) {
+        std::fprintf(stderr, "thread_stress: ent_scene_create: %s\n", ent_last_error());
+        return 1;
+    }
+
+    Violations violations;
+    std::atomic<bool> done{false};
+    std::vector<std::thread> threads;
+    for (int r = 0; r < readers; ++r)
+        threads.emplace_back(read_until_done, scene, std::cref(done), std::ref(violations));
+
+    long steps = 0, failed_steps = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (ent_scene_step(scene, kDt) != ENT_OK) {
+            if (failed_steps++ == 0) std::fprintf(stderr, "thread_stress: step %ld: %s\n", steps, ent_last_error());
+        } else {
+            ++steps;
+        }
+    }
+    done = true;
+    for (std::thread& t : threads) t.join();
+
+    ent_stats final_stats;
+    std::memset(&final_stats, 0, sizeof final_stats);
+    final_stats.struct_size = sizeof final_stats;
+    const bool stats_ok = ent_scene_stats(scene, &final_stats) == ENT_OK && final_stats.steps == uint64_t(steps);
+    ent_scene_destroy(scene);
+
+    std::printf("thread_stress: %.1f s, %ld steps (%.0f per s), %d readers made %ld reads; simulated %.3f s\n",
+                seconds, steps, double(steps) / seconds, readers, violations.reads.load(), final_stats.time_s);
+    std::printf("thread_stress: violations: failed calls %ld, count changed %ld, not finite %ld, out of reach %ld, "
+                "torn stats %ld, went backwards %ld; failed steps %ld\n",
+                violations.failed_calls.load(), violations.count_changed.load(), violations.not_finite.load(),
+                violations.out_of_reach.load(), violations.torn_stats.load(), violations.went_backwards.load(),
+                failed_steps);
+    bool ok = violations.total() == 0 && failed_steps == 0 && stats_ok;
+    // A run where the readers hardly ran proves nothing (TSan slows everything ~10x, so
+    // the bar is low on purpose).
+    if (steps < 100 || violations.reads.load() < 100L * readers) {
+        std::fprintf(stderr, "thread_stress: too little overlap (%ld steps, %ld reads)\n", steps,
+                     violations.reads.load());
+        ok = false;
+    }
+    if (!stats_ok) std::fprintf(stderr, "thread_stress: final stats disagree with the %ld steps made\n", steps);
+    std::printf("thread_stress: %s\n", ok ? "ok" : "FAILED");
+    return ok ? 0 : 1;
+}
