@@ -68,6 +68,7 @@ uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
 Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logger logger)
     : memory_(memory),
       logger_(logger),
+      radius_(config.intestine.radius),
       solver_(config.solver),
       model_(make_model(config.intestine)),
       dynamics_(model_, memory),
