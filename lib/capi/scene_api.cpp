@@ -9,6 +9,7 @@
 #include "base/memory.h"
 #include "capi/call_guard.h"
 #include "capi/scene_desc.h"
+#include "capi/scene_handle.h"
 #include "capi/struct_size.h"
 #include "scene/json_loader.h"
 #include "scene/scene.h"
@@ -68,6 +69,8 @@ const enteron::scene::Scene& scene_of(const ent_scene* scene) {
 }
 
 }  // namespace
+
+const enteron::scene::Scene& enteron::capi::scene_of_handle(const ent_scene* scene) { return *handle_of(scene)->scene; }
 
 extern "C" {
 
