@@ -450,6 +450,149 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
  */
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle);
 
+/* ------------------------------------------------------------------------------------ */
+/* Skins: a closed triangle mesh of the bowel surface, for rendering                    */
+/* ------------------------------------------------------------------------------------ */
+
+/**
+ * A skin builds the surface of the intestine, a tube of radius R around the axis, from the
+ * last published state of its scene. Opaque; made by ent_skin_create. A skin keeps a
+ * reference to its scene: the scene must outlive all its skins.
+ */
+typedef struct ent_skin ent_skin;
+
+/** Skinning methods (ent_skin_desc.method). Passed as int32_t. */
+#define ENT_SKIN_TUBE 0           /**< rings on rotation-minimising frames: fastest; folds over itself at bends tighter than R */
+#define ENT_SKIN_POINT_SKELETON 1 /**< distance surface of point skeletons, marching cubes on a narrow band */
+#define ENT_SKIN_CONVOLUTION 2    /**< local convolution surface of the axis segments (kernel 1/r^3), seeded rings */
+
+/**
+ * How to skin. Fill it with ent_skin_desc_default, change what you need, then call
+ * ent_skin_create; it is not retained. Lengths are in units of the intestine radius R, so
+ * the same settings suit any bowel. Each method reads only the knobs it names.
+ */
+typedef struct ent_skin_desc {
+    uint32_t struct_size;          /**< sizeof(ent_skin_desc); set by ent_skin_desc_default. */
+    int32_t method;                /**< ENT_SKIN_* (default ENT_SKIN_CONVOLUTION). */
+    /** tube, convolution: vertices around each ring, 3 to 1024 (default 16). */
+    uint32_t segments;
+    /** tube, convolution: arc length between rings, in R, 0.05 to 8 (default 0.5). */
+    double ring_spacing_radii;
+    /** tube, convolution: rings of each hemispherical end cap, 0 to 64 (default 4). */
+    uint32_t cap_rings;
+    /** point_skeleton, convolution: arc length between skeleton points / segment ends, in R, 0.05 to 2 (default 0.25). */
+    double skeleton_spacing_radii;
+    /** point_skeleton: edge of a marching-cubes voxel, in R, 0.1 to 2 (default 1/3). */
+    double voxel_size_radii;
+    /** point_skeleton, convolution: half-width D of the arc-length window of local blending, in R, 0.25 to < 2 (default 1).
+     *  A surface point blends only the skeleton within D of its own axis point, so folds never blend. */
+    double window_radii;
+} ent_skin_desc;
+
+/**
+ * Fills the first struct_size bytes of *desc with the defaults listed above and sets
+ * desc->struct_size; nothing past struct_size is written. Call it through
+ * ent_skin_desc_default, which passes the size of the header the program was built with.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (desc NULL); ENT_ERROR_VERSION (unknown size).
+ */
+ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size);
+
+/** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
+#define ent_skin_desc_default(desc) \
+    ((void)ent_skin_desc_init((desc), (uint32_t)sizeof(ent_skin_desc)))
+
+/**
+ * Creates a skin of a scene. The mesh is empty until the first ent_skin_update.
+ * The skin's buffers come from the C++ heap, not from the scene's allocator callbacks.
+ * @param scene the scene to skin; it must outlive the skin.
+ * @param desc filled by ent_skin_desc_default first; not retained.
+ * @param out_skin receives the new skin; untouched on failure.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown method, a knob out of its range:
+ *         the message names the field); ENT_ERROR_VERSION (struct_size not known);
+ *         ENT_ERROR_OUT_OF_MEMORY.
+ * Thread: any thread; it reads only constants of the scene.
+ */
+ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, ent_skin** out_skin);
+
+/**
+ * Rebuilds the mesh from the scene's last published state (the one ent_scene_axis would
+ * read). Safe on a render thread while another thread calls ent_scene_step: it pins the
+ * latest snapshot only while it copies the control points, and the stepping thread never
+ * waits on it for more than a pointer swap. Reuses the skin's buffers: after the first
+ * updates it allocates only when the mesh grows beyond any size it had before.
+ * Invalidates the previous ent_skin_mesh view.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_OUT_OF_MEMORY (the previous
+ *         mesh may then be incomplete: update again).
+ * @warning Calls on one skin (update, mesh, metrics, destroy) must not race each other; use
+ *          one skin per thread, or your own lock.
+ */
+ENT_API ent_status ent_skin_update(ent_skin* skin);
+
+/** A read-only view into a skin's mesh, valid until the next ent_skin_update or ent_skin_destroy. */
+typedef struct ent_mesh_view {
+    uint32_t struct_size;          /**< set by the caller to sizeof(ent_mesh_view). */
+    uint32_t vertex_count;         /**< vertices. */
+    uint32_t triangle_count;       /**< triangles. */
+    const float* positions_xyz_m;  /**< vertex_count x 3 floats, m. */
+    const float* normals_xyz;      /**< vertex_count x 3 floats, unit, pointing out of the bowel. */
+    const float* axis_u;           /**< vertex_count floats in [0, 1]: the vertex's axis point, as arc length / total length (for texturing). */
+    const uint32_t* indices;       /**< triangle_count x 3 vertex indices, counter-clockwise seen from outside. */
+    double time_s;                 /**< simulated time of the state the mesh was made from. */
+    uint64_t updates;              /**< ent_skin_update calls that succeeded so far. */
+} ent_mesh_view;
+
+/**
+ * Points *out at the skin's mesh, without copying. Set out->struct_size first; fields
+ * beyond an older, smaller struct_size are not written. Before the first update the mesh
+ * is empty (counts 0, pointers NULL).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size).
+ */
+ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out);
+
+/**
+ * How close the mesh is to the ideal tube of radius R around the same axis. Used as
+ * `struct ent_skin_metrics` (no typedef: the name is also the function that fills it).
+ */
+struct ent_skin_metrics {
+    uint32_t struct_size;          /**< set by the caller to sizeof(ent_skin_metrics). */
+    uint32_t vertex_count;
+    uint32_t triangle_count;
+    /** 1 if every edge is shared by exactly two triangles (a closed surface), else 0. */
+    int32_t watertight;
+    uint32_t open_edges;           /**< edges of only one triangle. */
+    uint32_t nonmanifold_edges;    /**< edges of three or more triangles. */
+    /** Vertices closer than 1.1 R to a part of the axis more than 4 R away along it: pulled into another fold. */
+    uint32_t blended_vertices;
+    /** Triangles facing their axis: the tube's fold-over at bends tighter than R. */
+    uint32_t inverted_triangles;
+    double radius_error_rms;       /**< RMS over vertices of | |v - A(u)| - R | / R, A(u) the vertex's own axis point. */
+    double radius_error_max;       /**< largest of those. */
+    double normal_deviation_rms_rad; /**< RMS angle between the vertex normal and the ideal tube's normal (v - A(u)) / |v - A(u)|. */
+    double normal_deviation_max_rad; /**< largest of those. */
+    double volume_m3;              /**< enclosed volume (divergence theorem). */
+    double volume_error;           /**< (volume - pi R^2 L) / (pi R^2 L); rounded ends add 4 R / (3 L). */
+    double axis_length_m;          /**< L, arc length of the axis skinned. */
+    uint64_t last_update_ns;       /**< wall time of the last ent_skin_update. */
+};
+
+/**
+ * Measures the current mesh against the axis it was built from (see ent_skin_metrics).
+ * Costs more than an update (it allocates work space and checks every edge): for tests,
+ * benchmarks and tuning, not for every frame. Set out->struct_size first. Before the
+ * first update every measure is 0.
+ * @code
+ *   struct ent_skin_metrics m = {0};
+ *   m.struct_size = sizeof m;
+ *   if (ent_skin_metrics(skin, &m) == ENT_OK) printf("radius RMS %.3f %%\n", 100 * m.radius_error_rms);
+ * @endcode
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
+ *         ENT_ERROR_OUT_OF_MEMORY.
+ */
+ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metrics* out);
+
+/** Destroys a skin and its mesh (any view of it becomes invalid). NULL is ignored. */
+ENT_API void ent_skin_destroy(ent_skin* skin);
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif

@@ -11,6 +11,7 @@
 #include "capi/call_guard.h"
 #include "capi/scene_handle.h"
 #include "capi/scene_desc.h"
+#include "capi/scene_handle.h"
 #include "capi/struct_size.h"
 #include "scene/json_loader.h"
 #include "scene/scene.h"
@@ -51,6 +52,8 @@ const enteron::scene::Scene& scene_of(const ent_scene* scene) {
 }
 
 }  // namespace
+
+
 
 extern "C" {
 

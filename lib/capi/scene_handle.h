@@ -33,4 +33,7 @@ struct SceneHandle {
 inline SceneHandle* handle_of(ent_scene* scene) { return reinterpret_cast<SceneHandle*>(scene); }
 inline const SceneHandle* handle_of(const ent_scene* scene) { return reinterpret_cast<const SceneHandle*>(scene); }
 
+// The scene of a non-NULL handle.
+inline const scene::Scene& scene_of_handle(const ent_scene* scene) { return *handle_of(scene)->scene; }
+
 }  // namespace enteron::capi

@@ -40,6 +40,8 @@ public:
     SnapshotPublisher::Reader read() const { return SnapshotPublisher::Reader(publisher_); }
 
     std::size_t control_points() const { return model_.control_points; }
+    // Tube radius R of the intestine, m (what skins reconstruct around the axis).
+    double radius() const { return radius_; }
     std::pmr::memory_resource* memory() const { return memory_; }
     const Logger& logger() const { return logger_; }
 

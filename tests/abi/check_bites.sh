@@ -56,7 +56,7 @@ edit lib/capi/status.cpp \
     '^(ENT_API const char\* ent_effect_name\(int32_t effect\) \{.*?^\}\n)' \
     '#if ENTERON_ABI_VARIANT != 1 /* removed_function */\n\1#endif\n'
 edit include/enteron/enteron.h \
-    '^(    double time_s; [^\n]*\n)' \
+    '^(    double time_s; +/\*\*< simulated time\. \*/\n)' \
     '\1#if ENTERON_ABI_VARIANT == 2 /* inserted_field */\n    double inserted_by_abi_test;\n#endif\n'
 edit include/enteron/enteron.h \
     '^(    double length_m; [^\n]*\n)' \

@@ -1,0 +1,187 @@
+// The skin entry points of the C API: a skin wraps a lib/skinning skin, the scene it reads
+// and the copy of the axis it reads into.
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "capi/call_guard.h"
+#include "capi/scene_handle.h"
+#include "capi/struct_size.h"
+#include "skinning/skin.h"
+#include "skinning/skin_metrics.h"
+
+using enteron::Error;
+using enteron::ErrorCode;
+using enteron::capi::guarded;
+using enteron::capi::require;
+
+namespace {
+
+// What an ent_skin* points to. ent_skin itself is never defined (opaque in the ABI).
+struct SkinHandle {
+    const enteron::scene::Scene* scene = nullptr;
+    std::unique_ptr<enteron::skinning::Skin> skin;
+    std::vector<double> points;  // control points copied from the snapshot
+    double time_s = 0.0;
+    uint64_t updates = 0;
+    uint64_t last_update_ns = 0;
+};
+
+SkinHandle* handle_of(ent_skin* skin) { return reinterpret_cast<SkinHandle*>(skin); }
+const SkinHandle* handle_of(const ent_skin* skin) { return reinterpret_cast<const SkinHandle*>(skin); }
+
+void check_range(double value, double low, double high, bool high_inclusive, const char* field) {
+    const bool ok = std::isfinite(value) && value >= low && (high_inclusive ? value <= high : value < high);
+    if (!ok)
+        throw Error(ErrorCode::invalid_argument, std::string(field) + " must be in [" + std::to_string(low) + ", " +
+                                                     std::to_string(high) + (high_inclusive ? "]" : ")") + ", got " +
+                                                     std::to_string(value));
+}
+
+void check_count(uint32_t value, uint32_t low, uint32_t high, const char* field) {
+    if (value < low || value > high)
+        throw Error(ErrorCode::invalid_argument, std::string(field) + " must be in [" + std::to_string(low) + ", " +
+                                                     std::to_string(high) + "], got " + std::to_string(value));
+}
+
+enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& desc, double radius) {
+    enteron::capi::check_struct_size(desc.struct_size, {sizeof(ent_skin_desc)}, "ent_skin_desc");
+    if (desc.method != ENT_SKIN_TUBE && desc.method != ENT_SKIN_POINT_SKELETON && desc.method != ENT_SKIN_CONVOLUTION)
+        throw Error(ErrorCode::invalid_argument,
+                    "method must be ENT_SKIN_TUBE, ENT_SKIN_POINT_SKELETON or ENT_SKIN_CONVOLUTION (0, 1, 2), got " +
+                        std::to_string(desc.method));
+    check_count(desc.segments, 3, 1024, "segments");
+    check_range(desc.ring_spacing_radii, 0.05, 8.0, true, "ring_spacing_radii");
+    check_count(desc.cap_rings, 0, 64, "cap_rings");
+    check_range(desc.skeleton_spacing_radii, 0.05, 2.0, true, "skeleton_spacing_radii");
+    check_range(desc.voxel_size_radii, 0.1, 2.0, true, "voxel_size_radii");
+    check_range(desc.window_radii, 0.25, 2.0, false, "window_radii");
+    enteron::skinning::SkinSettings s;
+    s.method = static_cast<enteron::skinning::SkinMethod>(desc.method);
+    s.radius = radius;
+    s.segments = desc.segments;
+    s.ring_spacing = desc.ring_spacing_radii * radius;
+    s.cap_rings = desc.cap_rings;
+    s.skeleton_spacing = desc.skeleton_spacing_radii * radius;
+    s.voxel_size = desc.voxel_size_radii * radius;
+    s.window = desc.window_radii * radius;
+    return s;
+}
+
+}  // namespace
+
+extern "C" {
+
+ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size) {
+    return guarded([&] {
+        require(desc, "desc");
+        enteron::capi::check_struct_size(struct_size, {sizeof(ent_skin_desc)}, "ent_skin_desc");
+        ent_skin_desc defaults{};
+        defaults.struct_size = struct_size;
+        defaults.method = ENT_SKIN_CONVOLUTION;
+        defaults.segments = 16;
+        defaults.ring_spacing_radii = 0.5;
+        defaults.cap_rings = 4;
+        defaults.skeleton_spacing_radii = 0.25;
+        defaults.voxel_size_radii = 1.0 / 3.0;
+        defaults.window_radii = 1.0;
+        std::memcpy(desc, &defaults, struct_size);
+    });
+}
+
+ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, ent_skin** out_skin) {
+    return guarded([&] {
+        require(scene, "scene");
+        require(desc, "desc");
+        require(out_skin, "out_skin");
+        const enteron::scene::Scene& s = enteron::capi::scene_of_handle(scene);
+        const enteron::skinning::SkinSettings settings = settings_from_desc(*desc, s.radius());
+        auto handle = std::make_unique<SkinHandle>();
+        handle->scene = &s;
+        handle->skin = enteron::skinning::make_skin(settings);
+        handle->points.resize(3 * s.control_points());
+        *out_skin = reinterpret_cast<ent_skin*>(handle.release());
+    });
+}
+
+ENT_API ent_status ent_skin_update(ent_skin* skin) {
+    return guarded([&] {
+        require(skin, "skin");
+        SkinHandle& h = *handle_of(skin);
+        const auto start = std::chrono::steady_clock::now();
+        {
+            // Pin the snapshot only for the copy: the stepping thread keeps publishing.
+            const auto snapshot = h.scene->read();
+            std::memcpy(h.points.data(), snapshot->control_points.data(), h.points.size() * sizeof(double));
+            h.time_s = snapshot->stats.time;
+        }
+        h.skin->update(h.points.data(), h.points.size() / 3);
+        h.updates += 1;
+        h.last_update_ns = static_cast<uint64_t>(
+            std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+    });
+}
+
+ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out) {
+    return guarded([&] {
+        require(skin, "skin");
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_mesh_view)}, "ent_mesh_view");
+        const SkinHandle& h = *handle_of(skin);
+        const enteron::skinning::Mesh& mesh = h.skin->mesh();
+        ent_mesh_view full{};
+        full.struct_size = out->struct_size;
+        const bool empty = h.updates == 0 || mesh.vertex_count() == 0;
+        full.vertex_count = empty ? 0 : static_cast<uint32_t>(mesh.vertex_count());
+        full.triangle_count = empty ? 0 : static_cast<uint32_t>(mesh.triangle_count());
+        full.positions_xyz_m = empty ? nullptr : mesh.positions.data();
+        full.normals_xyz = empty ? nullptr : mesh.normals.data();
+        full.axis_u = empty ? nullptr : mesh.u.data();
+        full.indices = empty ? nullptr : mesh.indices.data();
+        full.time_s = h.time_s;
+        full.updates = h.updates;
+        std::memcpy(out, &full, out->struct_size);
+    });
+}
+
+ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metrics* out) {
+    return guarded([&] {
+        require(skin, "skin");
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {sizeof(struct ent_skin_metrics)}, "ent_skin_metrics");
+        const SkinHandle& h = *handle_of(skin);
+        struct ent_skin_metrics full{};
+        full.struct_size = out->struct_size;
+        if (h.updates > 0) {
+            const auto& sk = *h.skin;
+            const enteron::skinning::SkinMetrics m = enteron::skinning::measure_skin(
+                sk.mesh(), sk.axis_points(), sk.axis_count(), sk.arc_length(), sk.settings().radius);
+            full.vertex_count = static_cast<uint32_t>(m.vertices);
+            full.triangle_count = static_cast<uint32_t>(m.triangles);
+            full.watertight = m.watertight ? 1 : 0;
+            full.open_edges = static_cast<uint32_t>(m.open_edges);
+            full.nonmanifold_edges = static_cast<uint32_t>(m.nonmanifold_edges);
+            full.blended_vertices = static_cast<uint32_t>(m.blended_vertices);
+            full.inverted_triangles = static_cast<uint32_t>(m.inverted_triangles);
+            full.radius_error_rms = m.radius_error_rms;
+            full.radius_error_max = m.radius_error_max;
+            full.normal_deviation_rms_rad = m.normal_deviation_rms;
+            full.normal_deviation_max_rad = m.normal_deviation_max;
+            full.volume_m3 = m.volume;
+            full.volume_error = m.volume_error;
+            full.axis_length_m = m.axis_length;
+        }
+        full.last_update_ns = h.last_update_ns;
+        std::memcpy(out, &full, out->struct_size);
+    });
+}
+
+ENT_API void ent_skin_destroy(ent_skin* skin) {
+    if (skin == nullptr) return;
+    delete handle_of(skin);
+}
+
+}  // extern "C"

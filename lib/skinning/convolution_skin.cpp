@@ -1,0 +1,165 @@
+#include "skinning/convolution_skin.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "skinning/segment_kernel.h"
+
+namespace enteron::skinning {
+
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+
+void put(std::vector<float>& buffer, std::size_t index, Vec3 v) {
+    buffer[3 * index] = float(v.x);
+    buffer[3 * index + 1] = float(v.y);
+    buffer[3 * index + 2] = float(v.z);
+}
+}  // namespace
+
+ConvolutionSkin::ConvolutionSkin(const SkinSettings& settings) : Skin(settings) {
+    // Calibration: the windowed field of a straight skeleton (segments of the skeleton
+    // spacing along x, clipped to [-D, D]) at distance R from it.
+    const double D = settings_.window, h = settings_.skeleton_spacing;
+    const auto pieces = static_cast<std::size_t>(std::ceil(2.0 * D / h));
+    double sum = 0.0;
+    const Vec3 p{0.0, settings_.radius, 0.0};
+    for (std::size_t i = 0; i < pieces; ++i) {
+        const double x0 = -D + double(i) * h, x1 = std::min(D, x0 + h);
+        sum += segment_field(p, Vec3{x0, 0, 0}, Vec3{x1, 0, 0});
+    }
+    iso_ = sum;
+}
+
+void ConvolutionSkin::gather_window(double s) {
+    const double D = settings_.window, h = skeleton_.spacing();
+    const double e = double(skeleton_.phantoms());
+    const double last = double(skeleton_.size() - 1);
+    const double first_index = std::clamp(std::floor((s - D) / h + e), 0.0, last);
+    const double last_index = std::clamp(std::ceil((s + D) / h + e), 0.0, last);
+    window_.clear();
+    for (auto i = std::size_t(first_index); i < std::size_t(last_index); ++i) {
+        const double s0 = skeleton_.arc_length(i);
+        Vec3 a = skeleton_.position(i), b = skeleton_.position(i + 1);
+        const Vec3 d = b - a;
+        const double lo = std::max(0.0, (s - D - s0) / h), hi = std::min(1.0, (s + D - s0) / h);
+        if (!(hi > lo)) continue;
+        window_.push_back(a + lo * d);
+        window_.push_back(a + hi * d);
+    }
+}
+
+double ConvolutionSkin::field(Vec3 p) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i + 1 < window_.size(); i += 2) sum += segment_field(p, window_[i], window_[i + 1]);
+    return sum;
+}
+
+double ConvolutionSkin::solve_ray(Vec3 origin, Vec3 direction, double start) {
+    const double R = settings_.radius, D = settings_.window;
+    const double t_max = 3.0 * R;
+    double lo = 0.0, hi = t_max;
+    double t = std::clamp(start, 0.05 * R, t_max);
+    for (int iteration = 0; iteration < 40; ++iteration) {
+        const double value = field(origin + t * direction);
+        ++evaluations_;
+        const double f = value - iso_;
+        if (f > 0.0) lo = t; else hi = t;
+        // Slope of the field of a straight window along the ray: exact for a straight axis,
+        // a good model elsewhere; the bracket [lo, hi] catches the rest.
+        const double slope = value * (-2.0 / t - t / (t * t + D * D));
+        double next = slope < 0.0 ? t - f / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (std::fabs(next - t) < 1e-7 * R) return next;
+        t = next;
+    }
+    return t;
+}
+
+void ConvolutionSkin::rebuild() {
+    const double R = settings_.radius;
+    const std::size_t S = settings_.segments;
+    evaluations_ = 0;
+    skeleton_.build(table_, points_.data(), axis_count(), settings_.skeleton_spacing,
+                    settings_.window + settings_.skeleton_spacing);
+    rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
+    const std::size_t n = rings_.size();
+    frames_.build(&rings_.position(0), &rings_.tangent(0), n);
+    grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
+    mesh_.resize_vertices(grid_.vertex_count());
+    if (cosine_.size() != S) {
+        cosine_.resize(S);
+        sine_.resize(S);
+        for (std::size_t j = 0; j < S; ++j) {
+            cosine_[j] = std::cos(kTwoPi * double(j) / double(S));
+            sine_[j] = std::sin(kTwoPi * double(j) / double(S));
+        }
+        previous_rings_ = 0;
+    }
+
+    // Starting radii: last frame's, resampled by u when the number of rings changed.
+    radius_.resize(n * S);
+    if (previous_rings_ == n) {
+        std::copy(previous_.begin(), previous_.begin() + std::ptrdiff_t(n * S), radius_.begin());
+    } else if (previous_rings_ >= 2) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const double x = double(k) / double(n - 1) * double(previous_rings_ - 1);
+            const auto k0 = std::min(std::size_t(x), previous_rings_ - 2);
+            const double w = x - double(k0);
+            for (std::size_t j = 0; j < S; ++j)
+                radius_[k * S + j] = (1 - w) * previous_[k0 * S + j] + w * previous_[(k0 + 1) * S + j];
+        }
+    } else {
+        std::fill(radius_.begin(), radius_.end(), R);
+    }
+
+    const double length = rings_.length();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double s = rings_.arc_length(k);
+        gather_window(s);
+        const Vec3 centre = rings_.position(k);
+        const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
+        const float u = float(length > 0.0 ? s / length : 0.0);
+        const std::size_t row = grid_.body_row(k);
+        for (std::size_t j = 0; j < S; ++j) {
+            const Vec3 direction = cosine_[j] * nrm + sine_[j] * bin;
+            const double r = solve_ray(centre, direction, radius_[k * S + j]);
+            radius_[k * S + j] = r;
+            const std::size_t v = grid_.vertex(row, j);
+            put(mesh_.positions, v, centre + r * direction);
+            mesh_.u[v] = u;
+        }
+    }
+
+    // Caps: hemispheres scaled, angle by angle, to the end ring's solved radius.
+    for (std::size_t row = 0; row < grid_.rows(); ++row) {
+        const bool first = row <= grid_.cap_rings();
+        if (!first && row < grid_.body_row(n - 1) + 1) continue;
+        const std::size_t k = first ? 0 : n - 1;
+        const Vec3 centre = rings_.position(k), t = rings_.tangent(k);
+        const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
+        const float u = first ? 0.0f : 1.0f;
+        if (row == 0 || row + 1 == grid_.rows()) {
+            double mean = 0.0;
+            for (std::size_t j = 0; j < S; ++j) mean += radius_[k * S + j];
+            mean /= double(S);
+            const std::size_t v = grid_.vertex(row, 0);
+            put(mesh_.positions, v, centre + (first ? -mean : mean) * t);
+            mesh_.u[v] = u;
+            continue;
+        }
+        const double phi = grid_.cap_angle(row);
+        for (std::size_t j = 0; j < S; ++j) {
+            const Vec3 direction = std::cos(phi) * (cosine_[j] * nrm + sine_[j] * bin) + std::sin(phi) * t;
+            const std::size_t v = grid_.vertex(row, j);
+            put(mesh_.positions, v, centre + radius_[k * S + j] * direction);
+            mesh_.u[v] = u;
+        }
+    }
+    grid_.grid_normals(mesh_.positions.data(), rings_.tangent(0), rings_.tangent(n - 1), mesh_.normals.data());
+
+    previous_.swap(radius_);
+    previous_rings_ = n;
+}
+
+}  // namespace enteron::skinning

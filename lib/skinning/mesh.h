@@ -1,0 +1,34 @@
+// The triangle mesh a skin produces: flat float arrays a renderer can upload as they are.
+// Buffers only grow (resize keeps capacity), so a skin updated every frame stops
+// allocating once it has seen its largest mesh.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace enteron::skinning {
+
+struct Mesh {
+    std::vector<float> positions;  // x y z per vertex, m
+    std::vector<float> normals;    // unit outward normal per vertex
+    std::vector<float> u;          // axis parameter per vertex: arc length / total length, [0, 1]
+    std::vector<uint32_t> indices; // 3 per triangle, counter-clockwise seen from outside
+
+    std::size_t vertex_count() const { return u.size(); }
+    std::size_t triangle_count() const { return indices.size() / 3; }
+
+    void resize_vertices(std::size_t count) {
+        positions.resize(3 * count);
+        normals.resize(3 * count);
+        u.resize(count);
+    }
+    void clear() {
+        positions.clear();
+        normals.clear();
+        u.clear();
+        indices.clear();
+    }
+};
+
+}  // namespace enteron::skinning

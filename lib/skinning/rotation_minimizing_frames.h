@@ -1,0 +1,30 @@
+// Rotation-minimising frames along sampled axis points, by the double reflection method of
+// Wang, Juettler, Zheng and Liu (ACM TOG 2008). Rings placed on these frames do not twist
+// around the axis (a Frenet frame would flip at inflections and spin on straight parts),
+// so texture coordinates and the ring-to-ring quads stay regular.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "skinning/vec3.h"
+
+namespace enteron::skinning {
+
+class RotationMinimizingFrames {
+public:
+    // Frames for `count` samples (positions x, unit tangents t). The first normal is the
+    // previous call's first normal made perpendicular to the new first tangent, so the
+    // frames do not jump from one frame of the animation to the next.
+    void build(const Vec3* x, const Vec3* t, std::size_t count);
+
+    const Vec3& normal(std::size_t i) const { return normal_[i]; }      // r_i, unit, perpendicular to t_i
+    const Vec3& binormal(std::size_t i) const { return binormal_[i]; }  // s_i = t_i x r_i
+
+private:
+    std::vector<Vec3> normal_;
+    std::vector<Vec3> binormal_;
+    Vec3 first_normal_{0.0, 0.0, 0.0};
+};
+
+}  // namespace enteron::skinning

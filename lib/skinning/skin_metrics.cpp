@@ -1,0 +1,140 @@
+#include "skinning/skin_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "skinning/vec3.h"
+#include "spline/catmull_rom.h"
+
+namespace enteron::skinning {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 vertex_at(const std::vector<float>& buffer, std::size_t i) {
+    return {buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]};
+}
+
+// Dense samples of the axis in a uniform grid, to find the axis points near a vertex.
+class AxisPointGrid {
+public:
+    AxisPointGrid(const spline::ArcLengthTable& table, const double* points, std::size_t count, double spacing,
+                  double cell)
+        : cell_(cell) {
+        const double length = table.total_length();
+        const auto n = std::max<std::size_t>(2, std::size_t(std::ceil(length / spacing)) + 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            const double s = length * double(i) / double(n - 1);
+            double p[3];
+            spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value), p);
+            positions_.push_back(load(p));
+            arc_.push_back(s);
+            cells_[key(load(p))].push_back(uint32_t(i));
+        }
+    }
+
+    // Smallest distance from p to an axis sample farther than `window` in arc length from s.
+    double nearest_other_fold(Vec3 p, double s, double window) const {
+        double best = 1e300;
+        const long cx = long(std::floor(p.x / cell_)), cy = long(std::floor(p.y / cell_)),
+                   cz = long(std::floor(p.z / cell_));
+        for (long dx = -1; dx <= 1; ++dx)
+            for (long dy = -1; dy <= 1; ++dy)
+                for (long dz = -1; dz <= 1; ++dz) {
+                    const auto it = cells_.find(pack(cx + dx, cy + dy, cz + dz));
+                    if (it == cells_.end()) continue;
+                    for (uint32_t i : it->second) {
+                        if (std::fabs(arc_[i] - s) <= window) continue;
+                        best = std::min(best, norm(positions_[i] - p));
+                    }
+                }
+        return best;
+    }
+
+private:
+    static uint64_t pack(long x, long y, long z) {
+        const auto m = [](long v) { return uint64_t(v + (1L << 20)) & 0x1fffffULL; };
+        return (m(x) << 42) | (m(y) << 21) | m(z);
+    }
+    uint64_t key(Vec3 p) const {
+        return pack(long(std::floor(p.x / cell_)), long(std::floor(p.y / cell_)), long(std::floor(p.z / cell_)));
+    }
+
+    double cell_;
+    std::vector<Vec3> positions_;
+    std::vector<double> arc_;
+    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+};
+
+}  // namespace
+
+SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
+                         const spline::ArcLengthTable& table, double radius) {
+    SkinMetrics m;
+    const double R = radius;
+    const double length = table.total_length();
+    m.axis_length = length;
+    m.vertices = mesh.vertex_count();
+    m.triangles = mesh.triangle_count();
+    if (m.vertices == 0) return m;
+
+    // Per vertex: radius error, normal deviation, blending; keep the analytic directions.
+    const AxisPointGrid grid(table, points_xyz, count, R / 8.0, 2.0 * R);
+    std::vector<Vec3> radial(m.vertices);
+    double sum_radius2 = 0.0, sum_normal2 = 0.0;
+    for (std::size_t i = 0; i < m.vertices; ++i) {
+        const double s = double(mesh.u[i]) * length;
+        double a[3];
+        spline::evaluate(points_xyz, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value), a);
+        const Vec3 v = vertex_at(mesh.positions, i);
+        const Vec3 r = v - load(a);
+        const double distance = norm(r);
+        radial[i] = normalized(r, Vec3{0, 0, 0});
+        const double error = std::fabs(distance - R) / R;
+        sum_radius2 += error * error;
+        m.radius_error_max = std::max(m.radius_error_max, error);
+        const Vec3 n = normalized(vertex_at(mesh.normals, i), Vec3{0, 0, 0});
+        const double angle = std::acos(std::clamp(dot(n, radial[i]), -1.0, 1.0));
+        sum_normal2 += angle * angle;
+        m.normal_deviation_max = std::max(m.normal_deviation_max, angle);
+        if (grid.nearest_other_fold(v, s, kNeighbourWindow * R) < kBlendBand * R) ++m.blended_vertices;
+    }
+    m.radius_error_rms = std::sqrt(sum_radius2 / double(m.vertices));
+    m.normal_deviation_rms = std::sqrt(sum_normal2 / double(m.vertices));
+
+    // Per triangle: orientation against the axis, volume, edges.
+    std::vector<uint64_t> edges;
+    edges.reserve(3 * m.triangles);
+    const Vec3 origin = vertex_at(mesh.positions, 0);
+    double volume6 = 0.0;
+    for (std::size_t t = 0; t < m.triangles; ++t) {
+        const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
+        const Vec3 p0 = vertex_at(mesh.positions, i0) - origin, p1 = vertex_at(mesh.positions, i1) - origin,
+                   p2 = vertex_at(mesh.positions, i2) - origin;
+        const Vec3 face = cross(p1 - p0, p2 - p0);
+        volume6 += dot(p0, cross(p1, p2));
+        if (dot(face, radial[i0] + radial[i1] + radial[i2]) < 0.0) ++m.inverted_triangles;
+        const uint32_t corners[3] = {i0, i1, i2};
+        for (int e = 0; e < 3; ++e) {
+            const uint32_t a = corners[e], b = corners[(e + 1) % 3];
+            edges.push_back((uint64_t(std::min(a, b)) << 32) | std::max(a, b));
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        if (j - i == 1) ++m.open_edges;
+        if (j - i > 2) ++m.nonmanifold_edges;
+        i = j;
+    }
+    m.watertight = m.triangles > 0 && m.open_edges == 0 && m.nonmanifold_edges == 0;
+    m.volume = volume6 / 6.0;
+    const double ideal = kPi * R * R * length;
+    m.volume_error = ideal > 0.0 ? (m.volume - ideal) / ideal : 0.0;
+    return m;
+}
+
+}  // namespace enteron::skinning

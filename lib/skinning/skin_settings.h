@@ -1,0 +1,22 @@
+// The knobs of a skin, in the library's own units: lengths in metres (the C API converts
+// its radius-relative knobs). One struct for the three methods; each reads only its own.
+#pragma once
+
+#include <cstdint>
+
+namespace enteron::skinning {
+
+enum class SkinMethod : int32_t { tube = 0, point_skeleton = 1, convolution = 2 };
+
+struct SkinSettings {
+    SkinMethod method = SkinMethod::convolution;
+    double radius = 0.0125;          // R, m
+    uint32_t segments = 16;          // vertices around a ring (tube, convolution)
+    double ring_spacing = 0.00625;   // arc length between rings, m (tube, convolution)
+    uint32_t cap_rings = 4;          // rings of each hemispherical end cap (tube, convolution)
+    double skeleton_spacing = 0.003125;  // arc length between skeleton samples, m
+    double voxel_size = 0.0041667;   // marching-cubes cell edge, m (point_skeleton)
+    double window = 0.0125;          // half-width of the local blending window in arc length, m
+};
+
+}  // namespace enteron::skinning

@@ -1,0 +1,55 @@
+#include "skinning/tube_skin.h"
+
+#include <cmath>
+
+namespace enteron::skinning {
+
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+
+void put(std::vector<float>& buffer, std::size_t index, Vec3 v) {
+    buffer[3 * index] = float(v.x);
+    buffer[3 * index + 1] = float(v.y);
+    buffer[3 * index + 2] = float(v.z);
+}
+}  // namespace
+
+void TubeSkin::rebuild() {
+    const double R = settings_.radius;
+    const std::size_t S = settings_.segments;
+    rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
+    const std::size_t n = rings_.size();
+    frames_.build(&rings_.position(0), &rings_.tangent(0), n);
+    grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
+    mesh_.resize_vertices(grid_.vertex_count());
+    if (cosine_.size() != S) {
+        cosine_.resize(S);
+        sine_.resize(S);
+        for (std::size_t j = 0; j < S; ++j) {
+            cosine_[j] = std::cos(kTwoPi * double(j) / double(S));
+            sine_[j] = std::sin(kTwoPi * double(j) / double(S));
+        }
+    }
+    const double length = rings_.length();
+    for (std::size_t row = 0; row < grid_.rows(); ++row) {
+        // Body rows sit on their ring; cap rows on a hemisphere around an end point.
+        std::size_t k = 0;
+        if (row > grid_.cap_rings()) k = std::min(row - grid_.cap_rings() - 1, n - 1);
+        const double phi = grid_.cap_angle(row);
+        const Vec3 centre = rings_.position(k), t = rings_.tangent(k);
+        const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
+        const float u = float(length > 0.0 ? rings_.arc_length(k) / length : 0.0);
+        const bool pole = row == 0 || row + 1 == grid_.rows();
+        const std::size_t count = pole ? 1 : S;
+        for (std::size_t j = 0; j < count; ++j) {
+            Vec3 direction = pole ? (row == 0 ? -1.0 * t : t)
+                                  : std::cos(phi) * (cosine_[j] * nrm + sine_[j] * bin) + std::sin(phi) * t;
+            const std::size_t v = grid_.vertex(row, j);
+            put(mesh_.positions, v, centre + R * direction);
+            put(mesh_.normals, v, direction);
+            mesh_.u[v] = u;
+        }
+    }
+}
+
+}  // namespace enteron::skinning
