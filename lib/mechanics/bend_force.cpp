@@ -13,8 +13,11 @@ BendForce::BendForce(const AxisModel& model, double bend_stiffness, std::pmr::me
 }
 
 void BendForce::evaluate(const State& state, double* force, const Linearization* lin) {
-    add_per_coordinate_product(stiffness_, state.q.data(), -1.0, force);
-    if (lin != nullptr) add_per_coordinate_product(stiffness_, state.v.data(), 1.0, lin->stiffness_times_velocity);
+    if (lin != nullptr)  // K q and K v in one pass over K
+        add_per_coordinate_products(stiffness_, state.q.data(), -1.0, force, state.v.data(), 1.0,
+                                    lin->stiffness_times_velocity);
+    else
+        add_per_coordinate_product(stiffness_, state.q.data(), -1.0, force);
 }
 
 void BendForce::add_constant_linearization(double h, SystemMatrix& system) const {

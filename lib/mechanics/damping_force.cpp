@@ -1,5 +1,6 @@
 #include "mechanics/damping_force.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace enteron::mechanics {
@@ -14,7 +15,8 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
       coefficients_(coefficients),
       constant_(memory),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory)) {
+                                        kNodesPerSegment, memory)),
+      axial_nodes_(nodes_.size(), AxialNode{}, memory) {
     const std::size_t n = model.control_points;
     const double l0 = model.rest_segment_length;
     constant_.resize(n);
@@ -27,37 +29,47 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
 
     const double l0 = model_.rest_segment_length;
     const double c = coefficients_.stretch;
-    const double tiny = 1e-12 * l0;
+    const double c_per_l0 = c / l0;
+    const double tiny = 1e-12 * l0, tiny2 = tiny * tiny;
     // With d = dP/dt and u = d / |d|: the force -c w (u . rate / l0) u and the block
     // (c / l0) u u^T are both d (d . x) / |d|^2 forms, so no square root is needed.
-    // The two nodes of a segment share their four control points: their blocks go into the
-    // system together (add_axial_block_pair).
+    // The two nodes of a segment share their four control points: their forces are added
+    // together, both divisions come before any store (they overlap), and the blocks go into
+    // the system in a second pass, two at a time (add_axial_block_pair).
     static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
     const std::size_t count = nodes_.size();
     for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
-        double d[2][3] = {}, axial[2] = {};
+        const spline::QuadratureNode* node = &nodes_[first];
+        double length2[2], inv2[2], f[2][3] = {};
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
-            const spline::QuadratureNode& node = nodes_[first + m];
-            const spline::SegmentWeights& sw = node.weights;
-            double rate[3];
-            spline::evaluate(state.q.data(), sw, d[m]);
-            const double length2 = d[m][0] * d[m][0] + d[m][1] * d[m][1] + d[m][2] * d[m][2];
-            if (!(length2 > tiny * tiny)) {  // no direction: the node adds nothing
-                d[m][0] = d[m][1] = d[m][2] = 0.0;
+            double* d = axial_nodes_[first + m].d;
+            spline::evaluate(state.q.data(), node[m].weights, d);
+            length2[m] = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            inv2[m] = 1.0 / std::max(length2[m], tiny2);
+        }
+        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+            AxialNode& axial_node = axial_nodes_[first + m];
+            double* d = axial_node.d;
+            if (!(length2[m] > tiny2)) {  // no direction: the node adds nothing
+                d[0] = d[1] = d[2] = 0.0;
+                axial_node.axial = 0.0;
                 continue;
             }
-            const double inv2 = 1.0 / length2;
-            spline::evaluate(state.v.data(), sw, rate);
+            double rate[3];
+            spline::evaluate(state.v.data(), node[m].weights, rate);
             // node.weight c (u . rate) / l0 along u, as a multiple of d
             const double scale =
-                node.weight * c * (d[m][0] * rate[0] + d[m][1] * rate[1] + d[m][2] * rate[2]) * inv2 / l0;
-            const double f[3] = {-scale * d[m][0], -scale * d[m][1], -scale * d[m][2]};
-            add_point_force(sw, f, force);
-            if (lin != nullptr) axial[m] = lin->h * node.weight * (c / l0) * inv2;
+                node[m].weight * c_per_l0 * (d[0] * rate[0] + d[1] * rate[1] + d[2] * rate[2]) * inv2[m];
+            for (int k = 0; k < 3; ++k) f[m][k] = -scale * d[k];
+            if (lin != nullptr) axial_node.axial = lin->h * node[m].weight * c_per_l0 * inv2[m];
         }
-        if (lin != nullptr)
-            add_axial_block_pair(*lin->system, nodes_[first].weights, d[0], axial[0], 0.0,
-                                 nodes_[first + 1].weights, d[1], axial[1], 0.0);
+        add_point_force_pair(node[0].weights, f[0], node[1].weights, f[1], force);
+    }
+    if (lin == nullptr) return;
+    for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
+        const AxialNode* a = &axial_nodes_[first];
+        add_axial_block_pair(*lin->system, nodes_[first].weights, a[0].d, a[0].axial, 0.0,
+                             nodes_[first + 1].weights, a[1].d, a[1].axial, 0.0);
     }
 }
 

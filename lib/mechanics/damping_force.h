@@ -36,6 +36,13 @@ private:
     DampingCoefficients coefficients_;
     spline::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
     std::pmr::vector<spline::QuadratureNode> nodes_;
+    // Per node, between the force pass and the block pass of evaluate: the tangent d and the
+    // block's coefficient h w c / (l0 |d|^2) (see add_axial_block_pair).
+    struct AxialNode {
+        double d[3];
+        double axial;
+    };
+    std::pmr::vector<AxialNode> axial_nodes_;
 };
 
 }  // namespace enteron::mechanics

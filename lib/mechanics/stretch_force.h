@@ -31,6 +31,14 @@ private:
     AxisModel model_;
     double stiffness_;  // EA, N
     std::pmr::vector<spline::QuadratureNode> nodes_;
+    // Per node, between the force pass and the stiffness-block pass of evaluate: the unit
+    // tangent and the block's coefficients h^2 w a and h^2 w b (see add_axial_block_pair).
+    struct AxialNode {
+        double u[3];
+        double axial;
+        double transverse;
+    };
+    std::pmr::vector<AxialNode> axial_nodes_;
 };
 
 }  // namespace enteron::mechanics

@@ -45,6 +45,15 @@ inline void add_point_force(const spline::SegmentWeights& weights, const double 
         for (int c = 0; c < 3; ++c) o[3 * k + c] += weights.w[k] * f[c];
 }
 
+// add_point_force for two spline points on the same four control points (the two Gauss
+// nodes of a segment): each coordinate of `out` is read and written once.
+inline void add_point_force_pair(const spline::SegmentWeights& weights0, const double f0[3],
+                                 const spline::SegmentWeights& weights1, const double f1[3], double* out) {
+    double* o = out + 3 * weights0.first;
+    for (int k = 0; k < 4; ++k)
+        for (int c = 0; c < 3; ++c) o[3 * k + c] += weights0.w[k] * f0[c] + weights1.w[k] * f1[c];
+}
+
 }  // namespace enteron::mechanics
 
 namespace enteron::mechanics {
@@ -56,5 +65,10 @@ void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemM
 // out += scale * B x for each coordinate (x and out hold 3n values).
 void add_per_coordinate_product(const spline::ScalarBandMatrix& b, const double* x, double scale,
                                 double* out);
+
+// out0 += scale0 * B x0 and out1 += scale1 * B x1 in one pass over B (two products with the
+// same matrix, such as K q and K v).
+void add_per_coordinate_products(const spline::ScalarBandMatrix& b, const double* x0, double scale0,
+                                 double* out0, const double* x1, double scale1, double* out1);
 
 }  // namespace enteron::mechanics
