@@ -64,4 +64,12 @@ void CollisionSpheres::update(const double* control_points) {
     }
 }
 
+void CollisionSpheres::add_weight_products(double scale, spline::ScalarBandMatrix& bound) const {
+    for (const Sphere& sphere : spheres_) {
+        const spline::SegmentWeights& sw = sphere.weights;
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k <= j; ++k) bound.add(sw.first + j, sw.first + k, scale * sw.w[j] * sw.w[k]);
+    }
+}
+
 }  // namespace enteron::collision

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "spline/catmull_rom.h"
+#include "spline/gram_matrix.h"
 
 namespace enteron::collision {
 
@@ -35,6 +36,10 @@ public:
     const Sphere& operator[](std::size_t i) const { return spheres_[i]; }
     double radius() const { return radius_; }
     double rest_spacing() const { return rest_spacing_; }
+
+    // bound += scale * sum over spheres of w w^T (per coordinate): the stiffness bound of
+    // a law of stiffness `scale` acting on every sphere at once.
+    void add_weight_products(double scale, spline::ScalarBandMatrix& bound) const;
 
 private:
     static constexpr std::size_t kSamplesPerSegment = 4;  // polyline intervals per segment

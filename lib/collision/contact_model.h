@@ -16,6 +16,12 @@ struct ContactParameters {
     double slip_speed = 0.01;      // m/s: friction is viscous below about this speed
 };
 
+// A bound on the friction's damping mu f_n / slip speed, for contacts up to R / 4 deep
+// (the explicit integrators' stable substep; deeper piles rely on the stability guard).
+inline double friction_damping_bound(const ContactParameters& p, double radius) {
+    return p.friction * p.stiffness * 0.25 * radius / p.slip_speed;
+}
+
 // The force on the bowel's sphere for a contact of depth `depth` (> 0) along the unit
 // normal n (pointing out of the obstacle), with the sphere's velocity v relative to it.
 // Also the linearisation: normal stiffness k, normal damping c (0 when separating) and the

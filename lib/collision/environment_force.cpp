@@ -77,23 +77,13 @@ double EnvironmentForce::max_contacts_per_sphere() const {
     return contacts;
 }
 
-void EnvironmentForce::add_sphere_gram(double scale, spline::ScalarBandMatrix& bound) const {
-    for (std::size_t i = 0; i < spheres_.size(); ++i) {
-        const spline::SegmentWeights& sw = spheres_[i].weights;
-        for (int j = 0; j < 4; ++j)
-            for (int k = 0; k <= j; ++k) bound.add(sw.first + j, sw.first + k, scale * sw.w[j] * sw.w[k]);
-    }
-}
-
 void EnvironmentForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
-    add_sphere_gram(contact_.stiffness * max_contacts_per_sphere(), bound);
+    spheres_.add_weight_products(contact_.stiffness * max_contacts_per_sphere(), bound);
 }
 
 void EnvironmentForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
-    // Friction's damping grows with the normal force (mu f_n / slip speed); this bounds it
-    // for contacts up to R / 4 deep. Deeper piles rely on the guard.
-    const double friction = contact_.friction * contact_.stiffness * 0.25 * spheres_.radius() / contact_.slip_speed;
-    add_sphere_gram((contact_.damping + friction) * max_contacts_per_sphere(), bound);
+    const double friction = friction_damping_bound(contact_, spheres_.radius());
+    spheres_.add_weight_products((contact_.damping + friction) * max_contacts_per_sphere(), bound);
 }
 
 void EnvironmentForce::summary_add(mechanics::ContactSummary& summary) const {

@@ -36,7 +36,6 @@ private:
     void summary_add(mechanics::ContactSummary& summary) const;
     // Contact planes one sphere may touch at once, summed over the obstacles.
     double max_contacts_per_sphere() const;
-    void add_sphere_gram(double scale, spline::ScalarBandMatrix& bound) const;
 
     mutable CollisionSpheres spheres_;  // placed anew for each state evaluated
     ContactParameters contact_;

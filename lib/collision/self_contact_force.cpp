@@ -119,22 +119,14 @@ double SelfContactForce::potential_energy(const mechanics::State& state) const {
     return energy;
 }
 
-void SelfContactForce::add_sphere_gram(double scale, spline::ScalarBandMatrix& bound) const {
-    for (std::size_t i = 0; i < spheres_.size(); ++i) {
-        const spline::SegmentWeights& sw = spheres_[i].weights;
-        for (int j = 0; j < 4; ++j)
-            for (int k = 0; k <= j; ++k) bound.add(sw.first + j, sw.first + k, scale * sw.w[j] * sw.w[k]);
-    }
-}
-
 void SelfContactForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
     // A pair's stiffness k (w_a - w_b)(w_a - w_b)^T is at most 2k (w_a w_a^T + w_b w_b^T).
-    add_sphere_gram(2.0 * contact_.stiffness * kMaxContactsPerSphere, bound);
+    spheres_.add_weight_products(2.0 * contact_.stiffness * kMaxContactsPerSphere, bound);
 }
 
 void SelfContactForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
-    const double friction = contact_.friction * contact_.stiffness * 0.25 * spheres_.radius() / contact_.slip_speed;
-    add_sphere_gram(2.0 * (contact_.damping + friction) * kMaxContactsPerSphere, bound);
+    const double friction = friction_damping_bound(contact_, spheres_.radius());
+    spheres_.add_weight_products(2.0 * (contact_.damping + friction) * kMaxContactsPerSphere, bound);
 }
 
 void SelfContactForce::add_contacts(mechanics::ContactSummary& summary) const {

@@ -44,7 +44,6 @@ private:
     // Calls visit(a, b, depth, normal) for every listed pair in contact (normal b to a).
     template <class Visit>
     void for_each_contact(Visit&& visit) const;
-    void add_sphere_gram(double scale, spline::ScalarBandMatrix& bound) const;
 
     mutable CollisionSpheres spheres_;
     mutable std::pmr::vector<double> centers_;  // the spheres' centres, x y z each, for the grid

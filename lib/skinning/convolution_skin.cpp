@@ -9,12 +9,6 @@ namespace enteron::skinning {
 
 namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
-
-void put(std::vector<float>& buffer, std::size_t index, Vec3 v) {
-    buffer[3 * index] = float(v.x);
-    buffer[3 * index + 1] = float(v.y);
-    buffer[3 * index + 2] = float(v.z);
-}
 }  // namespace
 
 ConvolutionSkin::ConvolutionSkin(const SkinSettings& settings) : Skin(settings) {
@@ -126,7 +120,7 @@ void ConvolutionSkin::rebuild() {
             const double r = solve_ray(centre, direction, radius_[k * S + j]);
             radius_[k * S + j] = r;
             const std::size_t v = grid_.vertex(row, j);
-            put(mesh_.positions, v, centre + r * direction);
+            store_vec3(mesh_.positions, v, centre + r * direction);
             mesh_.u[v] = u;
         }
     }
@@ -144,7 +138,7 @@ void ConvolutionSkin::rebuild() {
             for (std::size_t j = 0; j < S; ++j) mean += radius_[k * S + j];
             mean /= double(S);
             const std::size_t v = grid_.vertex(row, 0);
-            put(mesh_.positions, v, centre + (first ? -mean : mean) * t);
+            store_vec3(mesh_.positions, v, centre + (first ? -mean : mean) * t);
             mesh_.u[v] = u;
             continue;
         }
@@ -152,7 +146,7 @@ void ConvolutionSkin::rebuild() {
         for (std::size_t j = 0; j < S; ++j) {
             const Vec3 direction = std::cos(phi) * (cosine_[j] * nrm + sine_[j] * bin) + std::sin(phi) * t;
             const std::size_t v = grid_.vertex(row, j);
-            put(mesh_.positions, v, centre + radius_[k * S + j] * direction);
+            store_vec3(mesh_.positions, v, centre + radius_[k * S + j] * direction);
             mesh_.u[v] = u;
         }
     }

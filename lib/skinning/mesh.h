@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "skinning/vec3.h"
+
 namespace enteron::skinning {
 
 struct Mesh {
@@ -30,5 +32,12 @@ struct Mesh {
         indices.clear();
     }
 };
+
+// Writes v as the index-th float triple of a positions or normals buffer.
+inline void store_vec3(std::vector<float>& buffer, std::size_t index, Vec3 v) {
+    buffer[3 * index] = float(v.x);
+    buffer[3 * index + 1] = float(v.y);
+    buffer[3 * index + 2] = float(v.z);
+}
 
 }  // namespace enteron::skinning

@@ -6,12 +6,6 @@ namespace enteron::skinning {
 
 namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
-
-void put(std::vector<float>& buffer, std::size_t index, Vec3 v) {
-    buffer[3 * index] = float(v.x);
-    buffer[3 * index + 1] = float(v.y);
-    buffer[3 * index + 2] = float(v.z);
-}
 }  // namespace
 
 void TubeSkin::rebuild() {
@@ -45,8 +39,8 @@ void TubeSkin::rebuild() {
             Vec3 direction = pole ? (row == 0 ? -1.0 * t : t)
                                   : std::cos(phi) * (cosine_[j] * nrm + sine_[j] * bin) + std::sin(phi) * t;
             const std::size_t v = grid_.vertex(row, j);
-            put(mesh_.positions, v, centre + R * direction);
-            put(mesh_.normals, v, direction);
+            store_vec3(mesh_.positions, v, centre + R * direction);
+            store_vec3(mesh_.normals, v, direction);
             mesh_.u[v] = u;
         }
     }
