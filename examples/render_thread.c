@@ -1,13 +1,15 @@
 /*
  * The threads of a simulator: a physics thread steps the scene at 1 kHz, paced by the
- * wall clock, while a render thread reads the axis at 60 Hz, as a renderer would before
- * drawing a frame. The render thread never blocks the physics thread: it reads the last
- * published snapshot (see "Threads" in enteron.h). Skins, when they come, are updated on
- * the render thread the same way.
+ * wall clock, while a render thread at 60 Hz reads the axis and updates a convolution
+ * skin, the triangle mesh a renderer would draw. The render thread never blocks the
+ * physics thread: both the axis read and the skin update read the last published
+ * snapshot (see "Threads" in enteron.h). The skin belongs to the render thread: it alone
+ * updates it and reads its mesh.
  *
  *   enteron_render_thread [--seconds S]    (default 1.5)
  *
- * Prints one line per thread and exits 0 if every step and every read succeeded and the
+ * Prints one line per thread and exits 0 if every step, every read and every skin update
+ * succeeded, every mesh was whole (triangles, indices below the vertex count) and the
  * render thread saw the simulation advance. Ticks the physics thread could not keep (a
  * loaded machine) are counted, not treated as failures.
  */
@@ -33,6 +35,9 @@ typedef struct {
     /* render thread results */
     long frames, failed_reads, advanced_frames;
     double lowest_z, last_time;
+    ent_skin* skin;             /* updated by the render thread only */
+    uint32_t min_triangles, max_triangles, last_triangles;
+    double skin_update_us_sum, skin_update_us_max;
 } shared_state;
 
 static double seconds_since(const struct timespec* start) {
@@ -86,7 +91,9 @@ static void* render_thread(void* argument) {
     for (frame = 1; (double)frame * period <= s->seconds; ++frame) {
         const struct timespec next = after(&s->start, (double)frame * period);
         ent_stats stats;
-        int i;
+        ent_mesh_view mesh;
+        double skin_start, skin_us;
+        uint32_t i;
         clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL);
         memset(&stats, 0, sizeof stats);
         stats.struct_size = sizeof stats;
@@ -94,7 +101,25 @@ static void* render_thread(void* argument) {
             if (s->failed_reads++ == 0) fprintf(stderr, "render_thread: read: %s\n", ent_last_error());
             continue;
         }
-        /* "Draw" the frame: here, find its lowest point. */
+        /* Rebuild the bowel's surface from the same kind of snapshot, and time it. */
+        skin_start = seconds_since(&s->start);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.struct_size = sizeof mesh;
+        if (ent_skin_update(s->skin) != ENT_OK || ent_skin_mesh(s->skin, &mesh) != ENT_OK) {
+            if (s->failed_reads++ == 0) fprintf(stderr, "render_thread: skin: %s\n", ent_last_error());
+            continue;
+        }
+        skin_us = 1e6 * (seconds_since(&s->start) - skin_start);
+        s->skin_update_us_sum += skin_us;
+        if (skin_us > s->skin_update_us_max) s->skin_update_us_max = skin_us;
+        /* "Draw" the mesh: here, check that every triangle names a vertex of it. */
+        if (mesh.triangle_count == 0) ++s->failed_reads;
+        for (i = 0; i < 3 * mesh.triangle_count; ++i)
+            if (mesh.indices[i] >= mesh.vertex_count) ++s->failed_reads;
+        if (s->frames == 0 || mesh.triangle_count < s->min_triangles) s->min_triangles = mesh.triangle_count;
+        if (mesh.triangle_count > s->max_triangles) s->max_triangles = mesh.triangle_count;
+        s->last_triangles = mesh.triangle_count;
+        /* And find the axis's lowest point. */
         for (i = 0; i < AXIS_POINTS; ++i) {
             if (!isfinite(axis[3 * i + 2])) ++s->failed_reads;
             else if (axis[3 * i + 2] < s->lowest_z) s->lowest_z = axis[3 * i + 2];
@@ -113,6 +138,7 @@ int main(int argc, char** argv) {
         "                 \"shape\": {\"kind\": \"serpentine\", \"leg_length\": 0.25}},"
         " \"gravity\": [0, 0, -9.81], \"damping\": {}, \"mesentery\": {}}";
     shared_state s;
+    ent_skin_desc skin_desc;
     pthread_t physics, render;
     memset(&s, 0, sizeof s);
     s.seconds = 1.5;
@@ -125,6 +151,13 @@ int main(int argc, char** argv) {
         fprintf(stderr, "render_thread: %s\n", ent_last_error());
         return 1;
     }
+    ent_skin_desc_default(&skin_desc);
+    skin_desc.method = ENT_SKIN_CONVOLUTION;
+    if (ent_skin_create(s.scene, &skin_desc, &s.skin) != ENT_OK) {
+        fprintf(stderr, "render_thread: %s\n", ent_last_error());
+        ent_scene_destroy(s.scene);
+        return 1;
+    }
     clock_gettime(CLOCK_MONOTONIC, &s.start);
     if (pthread_create(&physics, NULL, physics_thread, &s) != 0 ||
         pthread_create(&render, NULL, render_thread, &s) != 0) {
@@ -133,12 +166,16 @@ int main(int argc, char** argv) {
     }
     pthread_join(physics, NULL);
     pthread_join(render, NULL);
+    ent_skin_destroy(s.skin); /* skins first: the scene must outlive them */
     ent_scene_destroy(s.scene);
 
     printf("render_thread: physics: %ld steps of 1 ms in %.2f s of wall time, %ld late ticks, "
            "slowest step %.0f us\n", s.steps, s.seconds, s.late_ticks, s.worst_step_us);
     printf("render_thread: render: %ld frames at 60 Hz, %ld saw a newer state, lowest point z = %.4f m, "
            "last frame at simulated t = %.3f s\n", s.frames, s.advanced_frames, s.lowest_z, s.last_time);
+    printf("render_thread: skin: convolution, %u triangles in the last frame (%u to %u), update %.0f us mean, "
+           "%.0f us worst\n", (unsigned)s.last_triangles, (unsigned)s.min_triangles, (unsigned)s.max_triangles,
+           s.frames > 0 ? s.skin_update_us_sum / (double)s.frames : 0.0, s.skin_update_us_max);
     if (s.failed_steps != 0 || s.failed_reads != 0 || s.frames == 0 || s.advanced_frames < s.frames / 2) {
         fprintf(stderr, "render_thread: FAILED (%ld failed steps, %ld failed reads)\n", s.failed_steps,
                 s.failed_reads);

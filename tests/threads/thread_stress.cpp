@@ -2,7 +2,11 @@
 // while reader threads query the last published state, for a given wall time. Run under
 // ThreadSanitizer by scripts/test (preset `tsan`), where a data race fails it.
 //
-//   enteron_thread_stress [--seconds S] [--readers N]
+//   enteron_thread_stress [--seconds S] [--readers N] [--skins N]
+//
+// Axis readers (--readers, default 2) query the scene; skin threads (--skins, default 2:
+// a convolution skin, then a tube skin, alternating) each own a skin and update it in a
+// loop, as render threads do.
 //
 // Every read must be internally consistent, whichever snapshot it saw:
 //   - the control point count never changes, and every coordinate is finite;
@@ -11,12 +15,14 @@
 //   - ent_stats comes from one snapshot: time_s = steps x dt exactly (a torn read of two
 //     snapshots would break it), energies are finite, and per reader the time and the
 //     step count never go backwards;
-//   - effect calls never go backwards per reader.
+//   - effect calls never go backwards per reader;
+//   - every skin mesh is whole: vertices and triangles > 0, every index < the vertex
+//     count, every position and normal finite, within reach, time and update count never
+//     going backwards; a convolution skin's metrics say it is watertight.
 // The stepping thread's every step must succeed. The test fails (exit 1) with a count of
 // each kind of violation; it also fails if the readers barely overlapped the stepping.
 //
-// More reader kinds (skin updates, tool wrench reads) join as more of the API arrives:
-// add them to kReaders below.
+// More reader kinds (tool wrench reads) join as more of the API arrives.
 #include <enteron/enteron.h>
 
 #include <atomic>
@@ -44,10 +50,14 @@ struct Violations {
     std::atomic<long> out_of_reach{0};
     std::atomic<long> torn_stats{0};
     std::atomic<long> went_backwards{0};
+    std::atomic<long> bad_mesh{0};      // empty, or an index past the vertex count
+    std::atomic<long> not_watertight{0};
     std::atomic<long> reads{0};
+    std::atomic<long> skin_updates{0};
 
     long total() const {
-        return failed_calls + count_changed + not_finite + out_of_reach + torn_stats + went_backwards;
+        return failed_calls + count_changed + not_finite + out_of_reach + torn_stats + went_backwards + bad_mesh +
+               not_watertight;
     }
 };
 
@@ -107,17 +117,87 @@ void read_until_done(const ent_scene* scene, const std::atomic<bool>& done, Viol
     }
 }
 
+bool finite_all(const float* values, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i)
+        if (!std::isfinite(values[i])) return false;
+    return true;
+}
+
+// One skin thread: owns a skin of `method`, updates it until `done` and checks every mesh.
+void skin_until_done(ent_scene* scene, int32_t method, const std::atomic<bool>& done, Violations& v) {
+    ent_skin_desc desc;
+    ent_skin_desc_default(&desc);
+    desc.method = method;
+    ent_skin* skin = nullptr;
+    if (ent_skin_create(scene, &desc, &skin) != ENT_OK) {
+        std::fprintf(stderr, "thread_stress: ent_skin_create: %s\n", ent_last_error());
+        ++v.failed_calls;
+        return;
+    }
+    double last_time = -1.0;
+    uint64_t last_updates = 0;
+    while (!done.load(std::memory_order_relaxed)) {
+        if (ent_skin_update(skin) != ENT_OK) {
+            ++v.failed_calls;
+            continue;
+        }
+        ent_mesh_view mesh;
+        std::memset(&mesh, 0, sizeof mesh);
+        mesh.struct_size = sizeof mesh;
+        if (ent_skin_mesh(skin, &mesh) != ENT_OK) {
+            ++v.failed_calls;
+            continue;
+        }
+        ++v.skin_updates;
+        if (mesh.vertex_count == 0 || mesh.triangle_count == 0 || !mesh.positions_xyz_m || !mesh.indices) {
+            ++v.bad_mesh;
+            continue;
+        }
+        for (std::size_t i = 0; i < 3 * std::size_t(mesh.triangle_count); ++i) {
+            if (mesh.indices[i] >= mesh.vertex_count) {
+                ++v.bad_mesh;
+                break;
+            }
+        }
+        const std::size_t coordinates = 3 * std::size_t(mesh.vertex_count);
+        if (!finite_all(mesh.positions_xyz_m, coordinates) || !finite_all(mesh.normals_xyz, coordinates) ||
+            !finite_all(mesh.axis_u, mesh.vertex_count)) {
+            ++v.not_finite;
+        } else {
+            for (std::size_t i = 0; i < coordinates; ++i) {
+                if (std::fabs(mesh.positions_xyz_m[i]) >= kReachable) {
+                    ++v.out_of_reach;
+                    break;
+                }
+            }
+        }
+        if (mesh.time_s < last_time || mesh.updates <= last_updates) ++v.went_backwards;
+        last_time = mesh.time_s;
+        last_updates = mesh.updates;
+        if (method == ENT_SKIN_CONVOLUTION) {
+            struct ent_skin_metrics metrics;
+            std::memset(&metrics, 0, sizeof metrics);
+            metrics.struct_size = sizeof metrics;
+            if (ent_skin_metrics(skin, &metrics) != ENT_OK) ++v.failed_calls;
+            else if (!metrics.watertight || metrics.vertex_count != mesh.vertex_count) ++v.not_watertight;
+        }
+    }
+    ent_skin_destroy(skin);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     double seconds = 2.0;
     int readers = 2;
+    int skins = 2;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--seconds" && i + 1 < argc) seconds = std::atof(argv[++i]);
         else if (arg == "--readers" && i + 1 < argc) readers = std::atoi(argv[++i]);
+        else if (arg == "--skins" && i + 1 < argc) skins = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: enteron_thread_stress [--seconds S] [--readers N]\n");
+            std::fprintf(stderr, "usage: enteron_thread_stress [--seconds S] [--readers N] [--skins N]\n");
             return 2;
         }
     }
@@ -144,6 +224,9 @@ int main(int argc, char** argv) {
     std::vector<std::thread> threads;
     for (int r = 0; r < readers; ++r)
         threads.emplace_back(read_until_done, scene, std::cref(done), std::ref(violations));
+    for (int k = 0; k < skins; ++k)
+        threads.emplace_back(skin_until_done, scene, k % 2 == 0 ? ENT_SKIN_CONVOLUTION : ENT_SKIN_TUBE,
+                             std::cref(done), std::ref(violations));
 
     long steps = 0, failed_steps = 0;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -163,19 +246,21 @@ int main(int argc, char** argv) {
     const bool stats_ok = ent_scene_stats(scene, &final_stats) == ENT_OK && final_stats.steps == uint64_t(steps);
     ent_scene_destroy(scene);
 
-    std::printf("thread_stress: %.1f s, %ld steps (%.0f per s), %d readers made %ld reads; simulated %.3f s\n",
-                seconds, steps, double(steps) / seconds, readers, violations.reads.load(), final_stats.time_s);
+    std::printf("thread_stress: %.1f s, %ld steps (%.0f per s), %d readers made %ld reads, %d skins made %ld "
+                "updates; simulated %.3f s\n",
+                seconds, steps, double(steps) / seconds, readers, violations.reads.load(), skins,
+                violations.skin_updates.load(), final_stats.time_s);
     std::printf("thread_stress: violations: failed calls %ld, count changed %ld, not finite %ld, out of reach %ld, "
-                "torn stats %ld, went backwards %ld; failed steps %ld\n",
+                "torn stats %ld, went backwards %ld, bad mesh %ld, not watertight %ld; failed steps %ld\n",
                 violations.failed_calls.load(), violations.count_changed.load(), violations.not_finite.load(),
                 violations.out_of_reach.load(), violations.torn_stats.load(), violations.went_backwards.load(),
-                failed_steps);
+                violations.bad_mesh.load(), violations.not_watertight.load(), failed_steps);
     bool ok = violations.total() == 0 && failed_steps == 0 && stats_ok;
     // A run where the readers hardly ran proves nothing (TSan slows everything ~10x, so
     // the bar is low on purpose).
-    if (steps < 100 || violations.reads.load() < 100L * readers) {
-        std::fprintf(stderr, "thread_stress: too little overlap (%ld steps, %ld reads)\n", steps,
-                     violations.reads.load());
+    if (steps < 100 || violations.reads.load() < 100L * readers || violations.skin_updates.load() < 10L * skins) {
+        std::fprintf(stderr, "thread_stress: too little overlap (%ld steps, %ld reads, %ld skin updates)\n", steps,
+                     violations.reads.load(), violations.skin_updates.load());
         ok = false;
     }
     if (!stats_ok) std::fprintf(stderr, "thread_stress: final stats disagree with the %ld steps made\n", steps);

@@ -9,6 +9,10 @@ A ctypes binding of the C API of libenteron (no compile step). Quick start:
         for _ in range(1000):
             scene.step(0.001)
         axis = scene.axis(100)          # (100, 3) numpy array, m
+        with enteron.Skin(scene, "convolution", segments=24) as skin:
+            skin.update()
+            mesh = skin.mesh()          # numpy views of the skin's buffers, valid until the next update
+            print(mesh.triangle_count, skin.metrics().radius_error_rms)
 
 Failures raise enteron.Error (status, status_name, message from ent_last_error). The
 library is found through ENTERON_LIBRARY, next to the installed package, in the source
@@ -25,6 +29,7 @@ from .scene import (EFFECT_BEND, EFFECT_COUNT, EFFECT_DAMPING, EFFECT_GRAVITY, E
                     LOG_DEBUG, LOG_ERROR, LOG_INFO, LOG_WARNING, PIN_BOTH, PIN_FIRST, PIN_LAST, PIN_NONE,
                     SHAPE_HELIX, SHAPE_LINE, SHAPE_POINTS, SHAPE_SERPENTINE, EffectStats, Scene, SceneDesc, Stats,
                     effect_name)
+from .skin import SKIN_CONVOLUTION, SKIN_POINT_SKELETON, SKIN_TUBE, Mesh, Skin, SkinMetrics
 
 #: The loaded library's version, (major, minor, patch).
 version = (_version >> 16, (_version >> 8) & 0xFF, _version & 0xFF)

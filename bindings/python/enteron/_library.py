@@ -86,6 +86,13 @@ _declare("ent_scene_control_points", _status, _scene_p, ctypes.c_uint32, _double
          ctypes.POINTER(ctypes.c_uint32))
 _declare("ent_scene_stats", _status, _scene_p, ctypes.POINTER(s.ent_stats))
 _declare("ent_scene_effect_stats", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_effect_stats))
+_skin_p = ctypes.c_void_p
+_declare("ent_skin_desc_init", _status, ctypes.POINTER(s.ent_skin_desc), ctypes.c_uint32)
+_declare("ent_skin_create", _status, _scene_p, ctypes.POINTER(s.ent_skin_desc), ctypes.POINTER(_skin_p))
+_declare("ent_skin_update", _status, _skin_p)
+_declare("ent_skin_mesh", _status, _skin_p, ctypes.POINTER(s.ent_mesh_view))
+_declare("ent_skin_metrics", _status, _skin_p, ctypes.POINTER(s.ent_skin_metrics))
+_declare("ent_skin_destroy", None, _skin_p)
 
 version = lib.ent_version()
 if version >> 16 != SUPPORTED_MAJOR:

@@ -92,4 +92,53 @@ class ent_effect_stats(ctypes.Structure):
     ]
 
 
-ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats)
+class ent_skin_desc(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("method", ctypes.c_int32),
+        ("segments", ctypes.c_uint32),
+        ("ring_spacing_radii", ctypes.c_double),
+        ("cap_rings", ctypes.c_uint32),
+        ("skeleton_spacing_radii", ctypes.c_double),
+        ("voxel_size_radii", ctypes.c_double),
+        ("window_radii", ctypes.c_double),
+    ]
+
+
+class ent_mesh_view(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("vertex_count", ctypes.c_uint32),
+        ("triangle_count", ctypes.c_uint32),
+        # Addresses (c_void_p, not POINTER(c_float)) so the binding can view them with numpy.
+        ("positions_xyz_m", ctypes.c_void_p),
+        ("normals_xyz", ctypes.c_void_p),
+        ("axis_u", ctypes.c_void_p),
+        ("indices", ctypes.c_void_p),
+        ("time_s", ctypes.c_double),
+        ("updates", ctypes.c_uint64),
+    ]
+
+
+class ent_skin_metrics(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("vertex_count", ctypes.c_uint32),
+        ("triangle_count", ctypes.c_uint32),
+        ("watertight", ctypes.c_int32),
+        ("open_edges", ctypes.c_uint32),
+        ("nonmanifold_edges", ctypes.c_uint32),
+        ("blended_vertices", ctypes.c_uint32),
+        ("inverted_triangles", ctypes.c_uint32),
+        ("radius_error_rms", ctypes.c_double),
+        ("radius_error_max", ctypes.c_double),
+        ("normal_deviation_rms_rad", ctypes.c_double),
+        ("normal_deviation_max_rad", ctypes.c_double),
+        ("volume_m3", ctypes.c_double),
+        ("volume_error", ctypes.c_double),
+        ("axis_length_m", ctypes.c_double),
+        ("last_update_ns", ctypes.c_uint64),
+    ]
+
+
+ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_skin_desc, ent_mesh_view, ent_skin_metrics)

@@ -3,6 +3,7 @@ context manager) to release it at a known time rather than at garbage collection
 import ctypes
 import dataclasses
 import json
+import weakref
 
 import numpy as np
 
@@ -155,6 +156,7 @@ class Scene:
         if (description is None) == (desc is None):
             raise TypeError("give either a JSON description (text or dict) or desc=, not both or neither")
         self._handle = None
+        self._skins = weakref.WeakSet()  # closed before the scene: a skin must not outlive it
         self._callbacks = None
         self._log_function = None
         if log is not None:
@@ -182,9 +184,12 @@ class Scene:
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
-        """Destroys the scene (ent_scene_destroy). Idempotent; later calls raise ValueError."""
+        """Destroys the scene (ent_scene_destroy), after closing its skins. Idempotent; later
+        calls raise ValueError."""
         handle, self._handle = getattr(self, "_handle", None), None
         if handle:
+            for skin in list(getattr(self, "_skins", ())):
+                skin.close()
             lib.ent_scene_destroy(handle)
 
     @property

@@ -6,8 +6,10 @@
 #include <stdio.h>
 
 static int first;
-#define BEGIN(type)                                                                      \
-    printf("%s\"%s\": {\"size\": %u, \"fields\": {", first ? "" : ", ", #type,         \
+/* BEGIN_AS: for a struct used without a typedef (struct ent_skin_metrics), named as its tag. */
+#define BEGIN(type) BEGIN_AS(#type, type)
+#define BEGIN_AS(name, type)                                                             \
+    printf("%s\"%s\": {\"size\": %u, \"fields\": {", first ? "" : ", ", name,          \
            (unsigned)sizeof(type));                                                      \
     first = 0;                                                                           \
     {                                                                                    \
@@ -47,6 +49,20 @@ int main(void) {
     END()
     BEGIN(ent_effect_stats)
     FIELD(struct_size) FIELD(enabled) FIELD(calls) FIELD(total_time_ns)
+    END()
+    BEGIN(ent_skin_desc)
+    FIELD(struct_size) FIELD(method) FIELD(segments) FIELD(ring_spacing_radii) FIELD(cap_rings)
+    FIELD(skeleton_spacing_radii) FIELD(voxel_size_radii) FIELD(window_radii)
+    END()
+    BEGIN(ent_mesh_view)
+    FIELD(struct_size) FIELD(vertex_count) FIELD(triangle_count) FIELD(positions_xyz_m) FIELD(normals_xyz)
+    FIELD(axis_u) FIELD(indices) FIELD(time_s) FIELD(updates)
+    END()
+    BEGIN_AS("ent_skin_metrics", struct ent_skin_metrics)
+    FIELD(struct_size) FIELD(vertex_count) FIELD(triangle_count) FIELD(watertight) FIELD(open_edges)
+    FIELD(nonmanifold_edges) FIELD(blended_vertices) FIELD(inverted_triangles) FIELD(radius_error_rms)
+    FIELD(radius_error_max) FIELD(normal_deviation_rms_rad) FIELD(normal_deviation_max_rad) FIELD(volume_m3)
+    FIELD(volume_error) FIELD(axis_length_m) FIELD(last_update_ns)
     END()
     printf("}\n");
     return 0;

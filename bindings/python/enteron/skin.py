@@ -1,0 +1,169 @@
+"""Skins: the bowel's surface as a triangle mesh (ent_skin), for rendering.
+
+    with enteron.Scene(...) as scene, enteron.Skin(scene, "convolution", segments=24) as skin:
+        scene.step(0.001)
+        skin.update()
+        mesh = skin.mesh()        # numpy views of the library's buffers: no copy
+        draw(mesh.positions, mesh.normals, mesh.indices)
+
+The arrays of mesh() view the skin's own buffers, without copying; they are read-only and
+keep the Skin alive, but they are valid only until the next update() or close() of the
+skin (the library may reuse or move its buffers then). Call mesh() again after each
+update(); copy (numpy.array(view)) what must outlive it.
+"""
+import ctypes
+import dataclasses
+
+import numpy as np
+
+from . import _buffers
+from . import _structs as s
+from ._errors import check
+from ._library import lib
+
+SKIN_TUBE = 0
+SKIN_POINT_SKELETON = 1
+SKIN_CONVOLUTION = 2
+
+_METHODS = {"tube": SKIN_TUBE, "point_skeleton": SKIN_POINT_SKELETON, "convolution": SKIN_CONVOLUTION}
+_KNOBS = tuple(name for name, _ in s.ent_skin_desc._fields_ if name not in ("struct_size", "method"))
+
+
+def skin_method(method):
+    """A method given by name ('tube' | 'point_skeleton' | 'convolution') or number."""
+    if isinstance(method, str):
+        try:
+            return _METHODS[method]
+        except KeyError:
+            raise ValueError("unknown skin method %r (expected one of: %s)"
+                             % (method, ", ".join(_METHODS))) from None
+    return int(method)
+
+
+@dataclasses.dataclass(frozen=True)
+class Mesh:
+    """One ent_skin_mesh: positions (V, 3) float32 in m, normals (V, 3) float32 (unit,
+    outward), u (V,) float32 (axis arc length / total length, in [0, 1]), indices (T, 3)
+    uint32 (counter-clockwise seen from outside). The arrays view the skin's buffers:
+    valid until the skin's next update() or close()."""
+    positions: np.ndarray
+    normals: np.ndarray
+    u: np.ndarray
+    indices: np.ndarray
+    time_s: float   # simulated time of the state the mesh was made from
+    updates: int    # successful updates of the skin so far
+
+    @property
+    def vertex_count(self):
+        return len(self.positions)
+
+    @property
+    def triangle_count(self):
+        return len(self.indices)
+
+
+@dataclasses.dataclass(frozen=True)
+class SkinMetrics:
+    """struct ent_skin_metrics: how close the mesh is to the ideal tube of radius R."""
+    vertex_count: int
+    triangle_count: int
+    watertight: bool
+    open_edges: int
+    nonmanifold_edges: int
+    blended_vertices: int
+    inverted_triangles: int
+    radius_error_rms: float
+    radius_error_max: float
+    normal_deviation_rms_rad: float
+    normal_deviation_max_rad: float
+    volume_m3: float
+    volume_error: float
+    axis_length_m: float
+    last_update_ns: int
+
+
+class Skin:
+    """A skin of a scene (ent_skin).
+
+    Skin(scene, "convolution", segments=24, ring_spacing_radii=0.5)
+    method: 'tube' | 'point_skeleton' | 'convolution' (or enteron.SKIN_*); default the
+    library's (convolution). The keyword arguments are the knobs of ent_skin_desc, named as
+    its fields (segments, ring_spacing_radii, cap_rings, skeleton_spacing_radii,
+    voxel_size_radii, window_radii); the others keep the library's defaults.
+    The mesh is empty until the first update(). Failures raise enteron.Error.
+    The skin keeps its Scene alive; closing the Scene closes its skins first.
+    Threads: one thread per skin (update, mesh, metrics, close must not race), which may
+    differ from the thread that steps the scene.
+    """
+
+    def __init__(self, scene, method=None, **knobs):
+        self._handle = None
+        desc = s.ent_skin_desc()
+        check(lib.ent_skin_desc_init(ctypes.byref(desc), ctypes.sizeof(desc)), "ent_skin_desc_init")
+        if method is not None:
+            desc.method = skin_method(method)
+        for name, value in knobs.items():
+            if name not in _KNOBS:
+                raise TypeError("ent_skin_desc has no knob %r (knobs: %s)" % (name, ", ".join(_KNOBS)))
+            setattr(desc, name, value)
+        handle = ctypes.c_void_p()
+        check(lib.ent_skin_create(scene._live(), ctypes.byref(desc), ctypes.byref(handle)), "ent_skin_create")
+        self._handle = handle
+        self._scene = scene
+        self.method = desc.method
+        scene._skins.add(self)
+
+    # ---- lifetime -----------------------------------------------------------------------
+    def close(self):
+        """Destroys the skin (ent_skin_destroy); views of its mesh become invalid.
+        Idempotent; later calls of other methods raise ValueError."""
+        handle, self._handle = getattr(self, "_handle", None), None
+        if handle:
+            lib.ent_skin_destroy(handle)
+
+    @property
+    def closed(self):
+        return not self._handle
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def __del__(self):
+        self.close()
+
+    def _live(self):
+        if not self._handle:
+            raise ValueError("operation on a closed enteron.Skin")
+        return self._handle
+
+    # ---- the mesh -------------------------------------------------------------------------
+    def update(self):
+        """Rebuilds the mesh from the scene's last published state (ent_skin_update).
+        Invalidates the arrays of earlier mesh() calls."""
+        check(lib.ent_skin_update(self._live()), "ent_skin_update")
+
+    def mesh(self):
+        """The current mesh as a Mesh of numpy arrays that view the library's buffers
+        (ent_skin_mesh), without copying; valid until the next update() or close()."""
+        raw = s.ent_mesh_view()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_skin_mesh(self._live(), ctypes.byref(raw)), "ent_skin_mesh")
+        v, t = raw.vertex_count, raw.triangle_count
+        return Mesh(positions=_buffers.view(raw.positions_xyz_m, (v, 3), ctypes.c_float, self),
+                    normals=_buffers.view(raw.normals_xyz, (v, 3), ctypes.c_float, self),
+                    u=_buffers.view(raw.axis_u, (v,), ctypes.c_float, self),
+                    indices=_buffers.view(raw.indices, (t, 3), ctypes.c_uint32, self),
+                    time_s=raw.time_s, updates=raw.updates)
+
+    def metrics(self):
+        """ent_skin_metrics as a SkinMetrics (costs more than an update: not every frame)."""
+        raw = s.ent_skin_metrics()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_skin_metrics(self._live(), ctypes.byref(raw)), "ent_skin_metrics")
+        values = {field: getattr(raw, field) for field in SkinMetrics.__dataclass_fields__}
+        values["watertight"] = bool(values["watertight"])
+        return SkinMetrics(**values)

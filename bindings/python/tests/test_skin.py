@@ -1,0 +1,189 @@
+"""Skins through the binding: the mesh arrays are the C API's buffers (no copy), a fresh
+mesh() follows each update, errors raise enteron.Error, handles close safely."""
+import ctypes
+import gc
+import unittest
+
+import numpy as np
+
+import enteron
+from enteron import _library, _structs
+
+H = 1e-3  # s
+
+SCENE = {
+    "intestine": {"length": 0.6, "control_points": 24, "stretch_stiffness": 100, "bend_stiffness": 2.5e-3,
+                  "shape": {"kind": "serpentine", "leg_length": 0.15}},
+    "gravity": [0, 0, -9.81],
+    "damping": {},
+}
+
+
+def raw_mesh(skin):
+    """ent_skin_mesh called directly, its buffers copied out byte for byte (not the binding's views)."""
+    view = _structs.ent_mesh_view()
+    view.struct_size = ctypes.sizeof(view)
+    assert _library.lib.ent_skin_mesh(skin._handle, ctypes.byref(view)) == 0
+    v, t = view.vertex_count, view.triangle_count
+
+    def copy(address, count, dtype):
+        return np.frombuffer(ctypes.string_at(address, count * np.dtype(dtype).itemsize), dtype=dtype).copy()
+
+    return view, {"positions": copy(view.positions_xyz_m, 3 * v, np.float32).reshape(v, 3),
+                  "normals": copy(view.normals_xyz, 3 * v, np.float32).reshape(v, 3),
+                  "u": copy(view.axis_u, v, np.float32),
+                  "indices": copy(view.indices, 3 * t, np.uint32).reshape(t, 3)}
+
+
+class MeshIsTheCApis(unittest.TestCase):
+    def test_arrays_equal_the_c_buffers_for_every_method(self):
+        with enteron.Scene(SCENE) as scene:
+            for _ in range(10):
+                scene.step(H)
+            for method in ("tube", "point_skeleton", "convolution"):
+                with self.subTest(method=method), enteron.Skin(scene, method) as skin:
+                    empty = skin.mesh()
+                    self.assertEqual((empty.vertex_count, empty.triangle_count, empty.updates), (0, 0, 0))
+                    skin.update()
+                    mesh = skin.mesh()
+                    view, raw = raw_mesh(skin)
+                    self.assertGreater(mesh.triangle_count, 100)
+                    self.assertEqual(mesh.positions.shape, (view.vertex_count, 3))
+                    self.assertEqual(mesh.normals.shape, (view.vertex_count, 3))
+                    self.assertEqual(mesh.u.shape, (view.vertex_count,))
+                    self.assertEqual(mesh.indices.shape, (view.triangle_count, 3))
+                    self.assertEqual((mesh.positions.dtype, mesh.normals.dtype, mesh.u.dtype, mesh.indices.dtype),
+                                     (np.float32, np.float32, np.float32, np.uint32))
+                    for name, expected in raw.items():
+                        np.testing.assert_array_equal(getattr(mesh, name), expected, err_msg=name)
+                    self.assertEqual(mesh.updates, 1)
+                    self.assertEqual(mesh.time_s, view.time_s)
+                    self.assertAlmostEqual(mesh.time_s, 10 * H, places=12)
+                    self.assertLess(int(mesh.indices.max()), mesh.vertex_count)
+                    np.testing.assert_allclose(np.linalg.norm(mesh.normals, axis=1), 1.0, atol=1e-4)
+
+    def test_metrics_are_the_c_apis(self):
+        with enteron.Scene(SCENE) as scene, enteron.Skin(scene, "convolution", segments=20) as skin:
+            skin.update()
+            metrics = skin.metrics()
+            raw = _structs.ent_skin_metrics()
+            raw.struct_size = ctypes.sizeof(raw)
+            self.assertEqual(_library.lib.ent_skin_metrics(skin._handle, ctypes.byref(raw)), 0)
+            self.assertIsInstance(metrics, enteron.SkinMetrics)
+            for field in enteron.SkinMetrics.__dataclass_fields__:
+                if field != "watertight":
+                    self.assertEqual(getattr(metrics, field), getattr(raw, field), field)
+            self.assertIs(metrics.watertight, bool(raw.watertight))
+            self.assertTrue(metrics.watertight)
+            mesh = skin.mesh()
+            self.assertEqual((metrics.vertex_count, metrics.triangle_count), (mesh.vertex_count, mesh.triangle_count))
+            self.assertEqual(mesh.vertex_count % 20, 2)  # rings of 20, plus the two cap tips
+            self.assertLess(metrics.radius_error_rms, 0.05)
+            self.assertAlmostEqual(metrics.axis_length_m, 0.6, delta=0.01)
+
+    def test_knobs_reach_the_library(self):
+        with enteron.Scene(SCENE) as scene:
+            counts = {}
+            for segments in (8, 32):
+                with enteron.Skin(scene, "tube", segments=segments, cap_rings=0) as skin:
+                    self.assertEqual(skin.method, enteron.SKIN_TUBE)
+                    skin.update()
+                    counts[segments] = skin.mesh().vertex_count
+            self.assertEqual(counts[8] % 8, counts[32] % 32)
+            self.assertEqual(counts[32] * 8 - counts[8] * 32, (counts[32] % 32) * 8 - (counts[8] % 8) * 32)
+            self.assertGreater(counts[32], 3 * counts[8])
+
+
+class ZeroCopy(unittest.TestCase):
+    def test_views_are_the_librarys_memory_and_follow_updates(self):
+        with enteron.Scene(SCENE) as scene, enteron.Skin(scene, "convolution") as skin:
+            skin.update()
+            first = skin.mesh()
+            view, _ = raw_mesh(skin)
+            self.assertEqual(first.positions.ctypes.data, view.positions_xyz_m)
+            self.assertEqual(first.normals.ctypes.data, view.normals_xyz)
+            self.assertEqual(first.u.ctypes.data, view.axis_u)
+            self.assertEqual(first.indices.ctypes.data, view.indices)
+            self.assertFalse(first.positions.flags.writeable)
+            self.assertFalse(first.positions.flags.owndata)
+            before = np.array(first.positions)  # a copy, to compare with later
+
+            for _ in range(200):  # the bowel falls: every vertex moves
+                scene.step(H)
+            skin.update()
+            second = skin.mesh()
+            view, raw = raw_mesh(skin)
+            self.assertEqual(second.updates, 2)
+            self.assertEqual(second.positions.ctypes.data, view.positions_xyz_m)
+            self.assertEqual(second.indices.ctypes.data, view.indices)
+            np.testing.assert_array_equal(second.positions, raw["positions"])
+            self.assertGreater(second.time_s, first.time_s)
+            self.assertFalse(np.array_equal(second.positions, before))
+            self.assertLess(second.positions[:, 2].mean(), before[:, 2].mean())  # fell under gravity
+
+    def test_a_view_keeps_its_skin_alive(self):
+        scene = enteron.Scene(SCENE)
+        skin = enteron.Skin(scene, "tube")
+        skin.update()
+        positions = skin.mesh().positions
+        expected = np.array(positions)
+        del skin
+        gc.collect()
+        self.assertEqual(len(scene._skins), 1)  # still alive, held by the view
+        np.testing.assert_array_equal(positions, expected)
+        del positions
+        gc.collect()
+        self.assertEqual(len(scene._skins), 0)
+        scene.close()
+
+
+class Errors(unittest.TestCase):
+    def test_bad_knob_raises_with_the_library_message(self):
+        with enteron.Scene(SCENE) as scene:
+            with self.assertRaises(enteron.Error) as caught:
+                enteron.Skin(scene, "tube", segments=2)
+            self.assertEqual(caught.exception.status, enteron.ERROR_INVALID_ARGUMENT)
+            self.assertIn("segments", caught.exception.message)
+            self.assertEqual(caught.exception.call, "ent_skin_create")
+            with self.assertRaises(enteron.Error) as caught:
+                enteron.Skin(scene, "convolution", window_radii=5.0)
+            self.assertIn("window_radii", caught.exception.message)
+            with self.assertRaises(enteron.Error) as caught:
+                enteron.Skin(scene, 7)
+            self.assertEqual(caught.exception.status, enteron.ERROR_INVALID_ARGUMENT)
+            self.assertIn("method", caught.exception.message)
+
+    def test_python_side_mistakes(self):
+        with enteron.Scene(SCENE) as scene:
+            with self.assertRaises(ValueError):
+                enteron.Skin(scene, "marching")
+            with self.assertRaises(TypeError):
+                enteron.Skin(scene, "tube", radius=1.0)
+
+
+class Lifetime(unittest.TestCase):
+    def test_closing_twice_is_safe(self):
+        with enteron.Scene(SCENE) as scene:
+            skin = enteron.Skin(scene, "tube")
+            with skin:
+                skin.update()
+            self.assertTrue(skin.closed)
+            skin.close()
+            skin.close()
+            for call in (skin.update, skin.mesh, skin.metrics):
+                with self.assertRaises(ValueError):
+                    call()
+
+    def test_closing_the_scene_closes_its_skins_first(self):
+        scene = enteron.Scene(SCENE)
+        skin = enteron.Skin(scene, "convolution")
+        skin.update()
+        scene.close()
+        self.assertTrue(skin.closed)
+        skin.close()
+        with self.assertRaises(ValueError):
+            enteron.Skin(scene, "tube")
+
+
+if __name__ == "__main__":
+    unittest.main()
