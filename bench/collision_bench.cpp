@@ -1,7 +1,7 @@
 // Wall time of one ent_scene_step(scene, 1 ms) of the 6 m small bowel piled in the
 // abdominal cavity with every effect on: stretch, bend, damping, gravity, mesentery,
-// environment (the inside of a 30 cm box) and self-collision (spheres of radius R every
-// R/2 along the axis), per integrator. Through the C API only. The scene is the demo's
+// environment (the inside of a 30 cm box), self-collision (spheres of radius R every R/2
+// along the axis) and a tool pressed into the pile and sweeping it, per integrator. Through the C API only. The scene is the demo's
 // (examples/demo.c) with N control points: a helix dropped near the floor of the box,
 // held by its mesentery, settled for settle_s with implicit Euler. Every timed scene
 // starts at rest from that settled pile (its control points as the initial shape, so the
@@ -12,8 +12,8 @@
 // With MuJoCo (ENTERON_BENCH_MUJOCO, Debian's libmujoco-dev), the same run also times
 // MuJoCo's rope of the same length, point count, radius, mass per length, bending
 // stiffness, time step, gravity, friction and self-collision rule in the same box
-// (bench/peers/mujoco_rope.h), from the same settled pile. It reports whether the rope
-// stayed finite.
+// (bench/peers/mujoco_rope.h), from the same settled pile, without the tool. It reports
+// whether the rope stayed finite.
 //
 // Every benchmark iteration is one step, timed on its own (manual time); the counters
 // median_us and p99_us come from those samples. Each benchmark runs a fixed number of
@@ -168,6 +168,31 @@ bool axis_finite(const ent_scene* scene, uint32_t control_points) {
     return std::all_of(points.begin(), points.end(), [](double x) { return std::isfinite(x); });
 }
 
+// The tool in contact: a grasper (the default tool, 5 mm shaft) coming down vertically onto
+// the highest control point of the pile and holding its tip tool_press_m into the bowel
+// above that point as the point moves, while sliding tool_sweep_m back and forth along x
+// at tool_sweep_hz (friction drags the surface), its pose set before every step from the
+// last published state, as a haptic loop would.
+constexpr double tool_press_m = 0.005;
+constexpr double tool_sweep_m = 0.01;
+constexpr double tool_sweep_hz = 1.0;
+constexpr double kPi = 3.14159265358979323846;
+
+std::size_t highest_point(const std::vector<double>& points) {
+    std::size_t top = 0;
+    for (std::size_t i = 0; 3 * i < points.size(); ++i)
+        if (points[3 * i + 2] > points[3 * top + 2]) top = i;
+    return top;
+}
+
+// The tip over control point `held` of `points` at time_s.
+void tool_position_at(const std::vector<double>& points, std::size_t held, double reach_m, double time_s,
+                      double position_m[3]) {
+    position_m[0] = points[3 * held] + tool_sweep_m * std::sin(2.0 * kPi * tool_sweep_hz * time_s);
+    position_m[1] = points[3 * held + 1];
+    position_m[2] = points[3 * held + 2] + reach_m;
+}
+
 void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t control_points) {
     std::string error;
     const std::vector<double>& pile = settled_pile(control_points, &error);
@@ -178,6 +203,20 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
     ent_scene* scene = bowel_in_cavity(integrator, control_points, pile, 0, &error);
     if (scene == nullptr) {
         state.SkipWithError(error.c_str());
+        return;
+    }
+    ent_tool_desc tool;
+    ent_tool_desc_default(&tool);
+    const std::size_t held = highest_point(pile);
+    // Tip above the axis point by the two radii less the press depth.
+    const double reach_m = collision_bowel_desc(integrator, control_points).radius_m + tool.radius_m - tool_press_m;
+    tool_position_at(pile, held, reach_m, 0.0, tool.position_m);  // the shaft rises from the tip along +z
+    std::vector<double> points = pile;
+    int32_t tool_id = -1;
+    ent_status added = ent_tool_add(scene, &tool, &tool_id);
+    if (added != ENT_OK) {
+        state.SkipWithError(last_error("ent_tool_add", added).c_str());
+        ent_scene_destroy(scene);
         return;
     }
     ent_stats before;
@@ -193,11 +232,21 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
     bool failed = false;
     double max_penetration_m = 0.0;
     uint64_t contacts = 0;
+    double tool_force_sum_N = 0.0, tool_force_max_N = 0.0;
+    uint64_t tool_touching_steps = 0;
+    double tool_time_s = 0.0;
     for (auto _ : state) {
-        const ent_status status =
-            timed_iteration(state, samples_us, [&] { return ent_scene_step(scene, step_s); });
+        tool_time_s += step_s;
+        uint32_t count = 0;
+        ent_scene_control_points(scene, control_points, points.data(), &count);
+        double position[3];
+        const double upright[4] = {1.0, 0.0, 0.0, 0.0};
+        tool_position_at(points, held, reach_m, tool_time_s, position);
+        ent_status status = ent_tool_set_pose(scene, tool_id, position, upright);
+        if (status == ENT_OK)
+            status = timed_iteration(state, samples_us, [&] { return ent_scene_step(scene, step_s); });
         if (status != ENT_OK) {
-            state.SkipWithError(last_error("ent_scene_step", status).c_str());
+            state.SkipWithError(last_error("ent_tool_set_pose / ent_scene_step", status).c_str());
             failed = true;
             break;
         }
@@ -205,6 +254,13 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
         if (read_stats(scene, &now)) {
             max_penetration_m = std::max(max_penetration_m, now.max_penetration_m);
             contacts += now.contacts;
+        }
+        double force[3], torque[3];
+        if (ent_tool_wrench(scene, tool_id, force, torque) == ENT_OK) {
+            const double magnitude = std::sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);
+            tool_force_sum_N += magnitude;
+            tool_force_max_N = std::max(tool_force_max_N, magnitude);
+            tool_touching_steps += magnitude > 0.0 ? 1 : 0;
         }
     }
 
@@ -225,6 +281,10 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
         state.counters["control_points"] = control_points;
         state.counters["finite"] = axis_finite(scene, control_points) ? 1.0 : 0.0;
         state.counters["simulated_s"] = steps * step_s;
+        state.counters["tool_force_mean_N"] = tool_force_sum_N / steps;
+        state.counters["tool_force_max_N"] = tool_force_max_N;
+        state.counters["tool_max_force_N"] = tool.max_force_N;
+        state.counters["tool_touching"] = static_cast<double>(tool_touching_steps) / steps;  // fraction of steps
         // Where the step's time goes: mean us per step in each effect (the rest is the
         // integrator's own work: assembly, factorisation, solve, guard, publication).
         const std::vector<uint64_t> effects_after = effect_times_ns(scene);
