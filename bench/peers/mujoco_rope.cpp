@@ -85,15 +85,22 @@ MujocoRopeDesc mujoco_rope_desc_from(const ent_scene_desc& scene) {
     desc.self_collision = (scene.effects & ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION)) != 0;
     desc.pin_first = (scene.effects & ENT_EFFECT_BIT(ENT_EFFECT_PINNED)) != 0 &&
                      (scene.pinned_ends == ENT_PIN_FIRST || scene.pinned_ends == ENT_PIN_BOTH);
+    if (scene.shape == ENT_SHAPE_LINE)
+        desc.initial_points_xyz_m =
+            line_points(scene.control_points, scene.length_m, scene.shape_center_m, scene.shape_direction);
+    else if (scene.shape == ENT_SHAPE_POINTS && scene.shape_points_xyz_m != nullptr)
+        desc.initial_points_xyz_m.assign(scene.shape_points_xyz_m,
+                                         scene.shape_points_xyz_m + 3 * static_cast<std::size_t>(scene.control_points));
     return desc;
 }
 
-std::vector<double> horizontal_line(uint32_t points, double length_m, const double start_m[3]) {
+std::vector<double> line_points(uint32_t points, double length_m, const double start_m[3],
+                                const double direction[3]) {
+    const double n = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
     std::vector<double> xyz(3 * static_cast<std::size_t>(points));
     for (uint32_t i = 0; i < points; ++i) {
-        xyz[3 * i + 0] = start_m[0] + length_m * i / (points - 1);
-        xyz[3 * i + 1] = start_m[1];
-        xyz[3 * i + 2] = start_m[2];
+        const double s = points > 1 ? length_m * i / (points - 1) : 0.0;
+        for (int c = 0; c < 3; ++c) xyz[3 * i + c] = start_m[c] + (n > 0.0 ? s * direction[c] / n : 0.0);
     }
     return xyz;
 }

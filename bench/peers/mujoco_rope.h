@@ -53,8 +53,9 @@ struct MujocoRopeDesc {
     // Sizes of MuJoCo's preallocated contact and constraint buffers (MJCF size nconmax,
     // njmax); a pyramidal friction cone of condim 3 takes 4 constraint rows per contact.
     // A full buffer drops contacts and is counted (buffer_overflows).
-    int max_contacts = 1000;
-    int max_constraint_rows = 4000;
+    // Their memory grows with rows^2, and so does creation time (not step time).
+    int max_contacts = 200;
+    int max_constraint_rows = 800;
     // Initial axis: `points` x 3 coordinates, m. The segment directions are taken from
     // consecutive points; every segment has length l, so the chain follows the polyline
     // from the first point. Starts at rest.
@@ -62,14 +63,17 @@ struct MujocoRopeDesc {
 };
 
 // The rope matching an Enteron scene description: length, radius, control points, linear
-// density, bend stiffness, time step, gravity (zero when the effect is off), friction and
-// self-collision (on when the scene's effect is on). The initial axis is left empty: give
-// it the scene's control points (ent_scene_control_points) so both start alike.
+// density, bend stiffness, time step, gravity (zero when the effect is off), friction,
+// self-collision (on when the scene's effect is on) and a pinned first end (when the
+// scene pins it). The initial axis is the scene's for the shapes "line" (the swinging
+// scene: pinned at one end, released from horizontal) and "points"; for the others it is
+// left empty: give it the scene's control points (ent_scene_control_points).
 MujocoRopeDesc mujoco_rope_desc_from(const ent_scene_desc& scene);
 
-// Straight horizontal line of `points` from `start` along +x: the start of the swinging
-// scene (pin_first = true, released from horizontal).
-std::vector<double> horizontal_line(uint32_t points, double length_m, const double start_m[3]);
+// `points` points evenly spaced on a straight line of length_m from start_m along
+// direction (normalised here), x y z each.
+std::vector<double> line_points(uint32_t points, double length_m, const double start_m[3],
+                                const double direction[3]);
 
 class MujocoRope {
 public:
