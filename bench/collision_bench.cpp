@@ -51,14 +51,6 @@ constexpr double box_half_extent_m = 0.15;
 // integrators, whose steps cost hundreds of substeps with self-contact.
 int timed_steps(int32_t integrator) { return integrator == ENT_INTEGRATOR_IMPLICIT_EULER ? 1000 : 100; }
 
-// Steps timed for MuJoCo's rope; its step costs far more than ours, so fewer by default.
-// ENTERON_BENCH_MUJOCO_STEPS overrides (e.g. 1000 for a whole simulated second).
-int mujoco_timed_steps() {
-    const char* text = std::getenv("ENTERON_BENCH_MUJOCO_STEPS");
-    const int steps = text ? std::atoi(text) : 200;
-    return steps > 0 ? steps : 200;
-}
-
 // N = 240 is the target; the smaller ones show how the gap to MuJoCo grows with N.
 constexpr uint32_t control_point_counts[] = {60, 120, 240};
 
@@ -299,6 +291,14 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
 }
 
 #ifdef ENTERON_HAVE_MUJOCO
+// Steps timed for MuJoCo's rope; its step costs far more than ours, so fewer by default.
+// ENTERON_BENCH_MUJOCO_STEPS overrides (e.g. 1000 for a whole simulated second).
+int mujoco_timed_steps() {
+    const char* text = std::getenv("ENTERON_BENCH_MUJOCO_STEPS");
+    const int steps = text ? std::atoi(text) : 200;
+    return steps > 0 ? steps : 200;
+}
+
 void mujoco_benchmark(benchmark::State& state, uint32_t control_points) {
     // The starting pile: our bowel settled with implicit Euler.
     std::string error;
