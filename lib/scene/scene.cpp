@@ -154,7 +154,7 @@ std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
         dynamics_.add_effect(std::move(effect));
     }
     collision::ToolConfig normalized = tool;
-    normalized.pose = collision::normalized_pose(tool.pose, "tool", ErrorCode::internal);
+    normalized.pose = collision::normalized_pose(tool.pose, "tool.", collision::kJsonToolFields, ErrorCode::internal);
     return tools_->add_tool(normalized);
 }
 
