@@ -17,15 +17,14 @@ constexpr double kMaxContactsPerSphere = 6.0;
 constexpr double kNearMargin = 1.0;
 }  // namespace
 
-SelfContactForce::SelfContactForce(const mechanics::AxisModel& model, double rest_length, double radius,
-                                   double sphere_spacing, const ContactParameters& contact,
+SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact,
                                    const mechanics::State& initial, std::pmr::memory_resource* memory)
-    : spheres_(model.control_points, rest_length, sphere_spacing, radius, memory),
+    : spheres_(spheres),
       centers_(3 * spheres_.size(), 0.0, memory),
-      grid_(spheres_.size(), (2.0 + kNearMargin) * radius, memory),
+      grid_(spheres_.size(), (2.0 + kNearMargin) * spheres_.radius(), memory),
       near_pairs_(memory),
       contact_(contact),
-      window_(kPi * radius) {
+      window_(kPi * spheres_.radius()) {
     // Room for the densest pile: spheres of radius R whose centres lie within 3R of one
     // sphere number at most about 40 (volume ratio), each pair listed once.
     near_pairs_.reserve(40 * spheres_.size());

@@ -24,8 +24,8 @@ namespace enteron::collision {
 
 class SelfContactForce final : public mechanics::Effect {
 public:
-    SelfContactForce(const mechanics::AxisModel& model, double rest_length, double radius, double sphere_spacing,
-                     const ContactParameters& contact, const mechanics::State& initial,
+    // `spheres` are shared with the other contact effects and must outlive this one.
+    SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
                      std::pmr::memory_resource* memory);
 
     EffectId id() const override { return EffectId::self_collision; }
@@ -49,7 +49,7 @@ private:
     template <class Visit>
     void for_each_contact(Visit&& visit) const;
 
-    mutable CollisionSpheres spheres_;
+    CollisionSpheres& spheres_;  // shared with the other contact effects
     mutable std::pmr::vector<double> centers_;  // the spheres' centres at the last search, x y z each
     mutable uint64_t searches_ = 0;
     mutable SpatialHash grid_;

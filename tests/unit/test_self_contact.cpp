@@ -17,6 +17,7 @@
 
 namespace {
 
+using enteron::collision::CollisionSpheres;
 using enteron::collision::ContactParameters;
 using enteron::collision::SelfContactForce;
 using enteron::collision::SpatialHash;
@@ -73,10 +74,14 @@ struct Axis {
         model.rest_segment_length = length / double(n - 1);
         model.linear_density = 0.3;
     }
+    // Collision spheres at R / 2 along this axis.
+    CollisionSpheres make_spheres() const {
+        return CollisionSpheres(model.control_points, length, 0.5 * kRadius, kRadius, std::pmr::new_delete_resource());
+    }
     // Contacts and generalised force of the self-contact effect on this axis.
     ContactSummary contacts(std::vector<double>* force = nullptr) const {
-        SelfContactForce effect(model, length, kRadius, 0.5 * kRadius, ContactParameters{}, state,
-                                std::pmr::new_delete_resource());
+        CollisionSpheres spheres = make_spheres();
+        SelfContactForce effect(spheres, ContactParameters{}, state, std::pmr::new_delete_resource());
         std::vector<double> f(state.q.size(), 0.0);
         effect.evaluate(state, f.data(), nullptr);
         if (force != nullptr) *force = f;
@@ -188,8 +193,8 @@ TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
         }
     }
     Axis axis(points);
-    SelfContactForce kept(axis.model, axis.length, kRadius, 0.5 * kRadius, ContactParameters{}, axis.state,
-                          std::pmr::new_delete_resource());
+    CollisionSpheres spheres = axis.make_spheres();
+    SelfContactForce kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource());
     const int moves = 60;
     for (int move = 0; move < moves; ++move) {
         for (double& q : axis.state.q) q += 0.0005 * unit(random);  // up to 0.5 mm a move
