@@ -61,8 +61,9 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
         tool.settings.grasp_damping = desc->grasp_damping_N_s_per_m;
         for (int c = 0; c < 3; ++c) tool.pose.position[c] = desc->position_m[c];
         for (int c = 0; c < 4; ++c) tool.pose.orientation[c] = desc->orientation_wxyz[c];
-        enteron::collision::validate_tool_settings(tool.settings, "desc", ErrorCode::invalid_argument);
-        tool.pose = enteron::collision::normalized_pose(tool.pose, "desc", ErrorCode::invalid_argument);
+        using enteron::collision::kCToolFields;
+        enteron::collision::validate_tool_settings(tool.settings, "", kCToolFields, ErrorCode::invalid_argument);
+        tool.pose = enteron::collision::normalized_pose(tool.pose, "", kCToolFields, ErrorCode::invalid_argument);
         const std::size_t index = scene_of(scene).add_tool(tool);
         if (out_tool != nullptr) *out_tool = static_cast<int32_t>(index);
     });
@@ -79,7 +80,8 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
         enteron::collision::ToolPose pose;
         for (int c = 0; c < 3; ++c) pose.position[c] = position_m[c];
         for (int c = 0; c < 4; ++c) pose.orientation[c] = orientation_wxyz[c];
-        s.set_tool_pose(index, enteron::collision::normalized_pose(pose, "pose", ErrorCode::invalid_argument));
+        s.set_tool_pose(index, enteron::collision::normalized_pose(pose, "", enteron::collision::kCToolFields,
+                                                                   ErrorCode::invalid_argument));
     });
 }
 

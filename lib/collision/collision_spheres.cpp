@@ -13,7 +13,8 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
       sample_weights_(memory),
       sample_points_(memory),
       sample_arc_(memory),
-      spheres_(memory) {
+      spheres_(memory),
+      placed_for_(3 * control_points, 0.0, memory) {
     const std::size_t segments = control_points - 1;
     const std::size_t per_segment = kSamplesPerSegment + 1;  // both ends of every segment
     sample_weights_.reserve(segments * per_segment);
@@ -29,6 +30,9 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
 }
 
 void CollisionSpheres::update(const double* control_points) {
+    if (placed_ && std::equal(placed_for_.begin(), placed_for_.end(), control_points)) return;
+    std::copy(control_points, control_points + placed_for_.size(), placed_for_.begin());
+    placed_ = true;
     const std::size_t samples = sample_weights_.size();
     double arc = 0.0;
     for (std::size_t i = 0; i < samples; ++i) {

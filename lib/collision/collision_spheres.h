@@ -29,7 +29,9 @@ public:
     CollisionSpheres(std::size_t control_points, double rest_length, double spacing, double radius,
                      std::pmr::memory_resource* memory);
 
-    // Places the spheres on the axis given by the control points (x y z each).
+    // Places the spheres on the axis given by the control points (x y z each). The effects
+    // that make contacts share one set of spheres and each calls this for the state it
+    // evaluates: only the first call for given control points does the work.
     void update(const double* control_points);
 
     std::size_t size() const { return spheres_.size(); }
@@ -51,6 +53,8 @@ private:
     std::pmr::vector<double> sample_points_;                   // x y z per sample
     std::pmr::vector<double> sample_arc_;                      // arc length at each sample
     std::pmr::vector<Sphere> spheres_;
+    std::pmr::vector<double> placed_for_;  // the control points of the last update
+    bool placed_ = false;
 };
 
 }  // namespace enteron::collision

@@ -9,11 +9,10 @@ namespace enteron::collision {
 using mechanics::add_axial_block;
 using mechanics::add_point_force;
 
-EnvironmentForce::EnvironmentForce(const mechanics::AxisModel& model, double rest_length, double radius,
-                                   double sphere_spacing, const ContactParameters& contact,
+EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParameters& contact,
                                    const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
                                    std::pmr::memory_resource* memory)
-    : spheres_(model.control_points, rest_length, sphere_spacing, radius, memory),
+    : spheres_(spheres),
       contact_(contact),
       obstacles_(memory) {
     obstacles_.reserve(obstacles.size());

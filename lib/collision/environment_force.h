@@ -17,9 +17,10 @@ namespace enteron::collision {
 
 class EnvironmentForce final : public mechanics::Effect {
 public:
-    EnvironmentForce(const mechanics::AxisModel& model, double rest_length, double radius, double sphere_spacing,
-                     const ContactParameters& contact, const std::vector<Obstacle>& obstacles,
-                     const mechanics::State& initial, std::pmr::memory_resource* memory);
+    // `spheres` are shared with the other contact effects and must outlive this one.
+    EnvironmentForce(CollisionSpheres& spheres, const ContactParameters& contact,
+                     const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
+                     std::pmr::memory_resource* memory);
 
     EffectId id() const override { return EffectId::environment; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
@@ -37,7 +38,7 @@ private:
     // Contact planes one sphere may touch at once, summed over the obstacles.
     double max_contacts_per_sphere() const;
 
-    mutable CollisionSpheres spheres_;  // placed anew for each state evaluated
+    CollisionSpheres& spheres_;  // shared with the other contact effects
     ContactParameters contact_;
     std::pmr::vector<Obstacle> obstacles_;
     mechanics::ContactSummary last_;

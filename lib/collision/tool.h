@@ -38,11 +38,33 @@ inline std::array<double, 3> quaternion_z_axis(const std::array<double, 4>& q) {
     return {2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y)};
 }
 
-// Checks a pose and returns it with a unit quaternion. Throws Error(code) naming `name`
-// for a non-finite position or a zero or non-finite quaternion.
-ToolPose normalized_pose(const ToolPose& pose, const std::string& name, ErrorCode code);
+// The names errors give a tool's fields: JSON keys or C fields.
+struct ToolFieldNames {
+    const char* radius;
+    const char* length;
+    const char* max_force;
+    const char* grasp_margin;
+    const char* grasp_stiffness;
+    const char* grasp_damping;
+    const char* position;
+    const char* orientation;
+};
+inline constexpr ToolFieldNames kJsonToolFields{"radius",       "length",          "max_force",
+                                               "grasp_margin", "grasp_stiffness", "grasp_damping",
+                                               "position",     "orientation"};
+inline constexpr ToolFieldNames kCToolFields{"radius_m",       "length_m",
+                                            "max_force_N",    "grasp_margin_m",
+                                            "grasp_stiffness_N_per_m", "grasp_damping_N_s_per_m",
+                                            "position_m",     "orientation_wxyz"};
+
+// Checks a pose and returns it with a unit quaternion. Throws Error(code) naming the field
+// after `prefix` ("tools[0].orientation", "position_m") for a non-finite position or a zero
+// or non-finite quaternion.
+ToolPose normalized_pose(const ToolPose& pose, const std::string& prefix, const ToolFieldNames& names,
+                         ErrorCode code);
 
 // Checks the settings; throws Error(code) naming the field ("tools[1].radius must be > 0").
-void validate_tool_settings(const ToolSettings& settings, const std::string& name, ErrorCode code);
+void validate_tool_settings(const ToolSettings& settings, const std::string& prefix, const ToolFieldNames& names,
+                            ErrorCode code);
 
 }  // namespace enteron::collision

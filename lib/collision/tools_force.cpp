@@ -78,10 +78,9 @@ GraspSpring grasp_spring(const ToolSettings& settings, double rest, const double
 
 }  // namespace
 
-ToolsForce::ToolsForce(const mechanics::AxisModel& model, double rest_length, double radius, double sphere_spacing,
-                       const ContactParameters& contact, const mechanics::State& initial,
+ToolsForce::ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
                        std::pmr::memory_resource* memory)
-    : spheres_(model.control_points, rest_length, sphere_spacing, radius, memory),
+    : spheres_(spheres),
       contact_(contact),
       tools_(memory),
       hits_(memory) {

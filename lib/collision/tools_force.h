@@ -30,8 +30,9 @@ struct ToolWrench {
 
 class ToolsForce final : public mechanics::Effect {
 public:
-    ToolsForce(const mechanics::AxisModel& model, double rest_length, double radius, double sphere_spacing,
-               const ContactParameters& contact, const mechanics::State& initial, std::pmr::memory_resource* memory);
+    // `spheres` are shared with the other contact effects and must outlive this one.
+    ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
+               std::pmr::memory_resource* memory);
 
     EffectId id() const override { return EffectId::tools; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
@@ -84,7 +85,7 @@ private:
                     double tail_v[3]) const;
     double fraction_of_step(double t) const;
 
-    mutable CollisionSpheres spheres_;
+    CollisionSpheres& spheres_;  // shared with the other contact effects
     ContactParameters contact_;
     std::pmr::vector<Tool> tools_;
     std::pmr::vector<Hit> hits_;

@@ -114,9 +114,8 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     if (!config.environment.empty()) add_environment(config.environment);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision)
-        dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, model_, rest_length_, radius_,
-                                                                     sphere_spacing(), collision_.contact, state_,
-                                                                     memory));
+        dynamics_.add_effect(
+            make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state_, memory));
 
     const auto kind = static_cast<mechanics::IntegratorKind>(static_cast<int32_t>(solver_.integrator));
     integrator_ = make_integrator(kind, 3 * n, memory);
@@ -148,13 +147,13 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle) {
 
 std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
     if (tools_ == nullptr) {
-        auto effect = make_owned<collision::ToolsForce>(memory_, model_, rest_length_, radius_, sphere_spacing(),
-                                                        collision_.contact, state_, memory_);
+        auto effect =
+            make_owned<collision::ToolsForce>(memory_, collision_spheres(), collision_.contact, state_, memory_);
         tools_ = effect.get();
         dynamics_.add_effect(std::move(effect));
     }
     collision::ToolConfig normalized = tool;
-    normalized.pose = collision::normalized_pose(tool.pose, "tool", ErrorCode::internal);
+    normalized.pose = collision::normalized_pose(tool.pose, "tool.", collision::kJsonToolFields, ErrorCode::internal);
     return tools_->add_tool(normalized);
 }
 
@@ -189,13 +188,20 @@ void Scene::tool_wrench(std::size_t tool, double force[3], double torque[3]) con
     for (int c = 0; c < 3; ++c) force[c] = wrench.force[c], torque[c] = wrench.torque[c];
 }
 
+collision::CollisionSpheres& Scene::collision_spheres() {
+    if (!spheres_)
+        spheres_ = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,
+                                                           sphere_spacing(), radius_, memory_);
+    return *spheres_;
+}
+
 double Scene::sphere_spacing() const {
     return collision_.sphere_spacing > 0.0 ? collision_.sphere_spacing : 0.5 * radius_;
 }
 
 void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
-    dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, model_, rest_length_, radius_, sphere_spacing(),
-                                                                 collision_.contact, obstacles, state_, memory_));
+    dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact,
+                                                                 obstacles, state_, memory_));
     obstacles_ += obstacles.size();
 }
 

@@ -10,6 +10,7 @@
 
 #include "base/logger.h"
 #include "base/memory.h"
+#include "collision/collision_spheres.h"
 #include "collision/tool.h"
 #include "mechanics/dynamics.h"
 #include "mechanics/integrator.h"
@@ -67,6 +68,8 @@ private:
     bool try_step(double dt, std::size_t substeps);
     // Collision sphere spacing at rest, m.
     double sphere_spacing() const;
+    // The shared collision spheres, made on first use (a scene without contacts has none).
+    collision::CollisionSpheres& collision_spheres();
     // Starts the environment effect with these obstacles.
     void add_environment(const std::vector<collision::Obstacle>& obstacles);
     // Adds a tool, creating the tools effect with the first; no refinalize.
@@ -80,6 +83,9 @@ private:
     Logger logger_;
     SolverConfig solver_;
     mechanics::AxisModel model_;
+    // The collision spheres the contact effects share; made with the first of them (before
+    // dynamics_, which holds those effects, so that it outlives them).
+    Owned<collision::CollisionSpheres> spheres_;
     mechanics::Dynamics dynamics_;
     Owned<mechanics::Integrator> integrator_;
     mechanics::State state_;

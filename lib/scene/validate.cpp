@@ -381,9 +381,9 @@ void validate(const SceneConfig& config, const FieldNames& names) {
     validator.collision(config.collision, config.intestine.radius);
     for (std::size_t i = 0; i < config.environment.size(); ++i) validator.obstacle(config.environment[i], i);
     for (std::size_t i = 0; i < config.tools.size(); ++i) {
-        const std::string name = "tools[" + std::to_string(i) + "]";
-        collision::validate_tool_settings(config.tools[i].settings, name, names.code);
-        (void)collision::normalized_pose(config.tools[i].pose, name, names.code);
+        const std::string prefix = "tools[" + std::to_string(i) + "].";
+        collision::validate_tool_settings(config.tools[i].settings, prefix, collision::kJsonToolFields, names.code);
+        (void)collision::normalized_pose(config.tools[i].pose, prefix, collision::kJsonToolFields, names.code);
     }
 }
 

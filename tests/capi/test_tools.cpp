@@ -470,10 +470,10 @@ TEST(Tools, BadInputReturnsAStatusAndChangesNothing) {
     }
     const double moved[3] = {0.0, 0.05, 0.05};
     EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, nan_p, kIdentity), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_NE(std::string(ent_last_error()).find("position"), std::string::npos) << ent_last_error();
+    EXPECT_NE(std::string(ent_last_error()).find("position_m must be finite"), std::string::npos) << ent_last_error();
     for (const double* q : {zero_q, nan_q, inf_q}) {
         EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, moved, q), ENT_ERROR_INVALID_ARGUMENT);
-        EXPECT_NE(std::string(ent_last_error()).find("orientation"), std::string::npos) << ent_last_error();
+        EXPECT_NE(std::string(ent_last_error()).find("orientation_wxyz must be"), std::string::npos) << ent_last_error();
     }
     EXPECT_EQ(ent_tool_set_pose(nullptr, 0, p, kIdentity), ENT_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, nullptr, kIdentity), ENT_ERROR_INVALID_ARGUMENT);
@@ -491,16 +491,16 @@ TEST(Tools, BadInputReturnsAStatusAndChangesNothing) {
     };
     ent_tool_desc bad = desc;
     bad.radius_m = -0.001;
-    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "radius");
+    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "radius_m must be");
     bad = desc;
     bad.max_force_N = 0.0;
-    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "max_force");
+    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "max_force_N must be");
     bad = desc;
     bad.position_m[2] = kNaN;
-    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "position");
+    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "position_m must be");
     bad = desc;
     std::memcpy(bad.orientation_wxyz, zero_q, sizeof zero_q);
-    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "orientation");
+    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "orientation_wxyz must be a non-zero quaternion");
     bad = desc;
     bad.struct_size = 0;
     refused(bad, ENT_ERROR_VERSION, "ent_tool_desc");

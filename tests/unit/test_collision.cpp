@@ -443,8 +443,8 @@ TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForce
     plane.kind = ObstacleKind::plane;
     plane.extent = {0.0, 0.0, 3.0};  // not unit: the effect normalises it
     const ContactParameters contact;
-    EnvironmentForce effect(model, length, kRadius, 0.5 * kRadius, contact, {plane}, state,
-                            std::pmr::new_delete_resource());
+    CollisionSpheres axis_spheres(model.control_points, length, 0.5 * kRadius, kRadius, std::pmr::new_delete_resource());
+    EnvironmentForce effect(axis_spheres, contact, {plane}, state, std::pmr::new_delete_resource());
     std::vector<double> force(3 * n, 0.0);
     effect.evaluate(state, force.data(), nullptr);
     ContactSummary summary;
