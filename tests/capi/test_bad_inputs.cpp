@@ -3,8 +3,9 @@
 // or absurd, wrong struct_size, unknown JSON keys and wrong types, huge inputs). Every row
 // must return its status (or, for the calls that return no status, its documented value),
 // leave a message naming the input in ent_last_error(), leave out-parameters untouched, and
-// leave a live scene and skin bit-identical: control points, stats, effect stats, the mesh,
-// and (checked by stepping a twin scene that never saw a bad call) the velocities.
+// leave a live scene, its skin and its tool bit-identical: control points, stats, effect
+// stats, the mesh, the tool's wrench and grasp, and (checked by stepping a twin scene that
+// never saw a bad call) the velocities and the tool's target pose.
 //
 // BadInputs.EveryExportedFunctionHasRows reads the library's exported symbols (nm at build
 // time, ENTERON_EXPORTS_FILE) and fails when a function has no row: a new entry point must
@@ -62,6 +63,7 @@ ent_scene_desc moving_desc(int32_t integrator) {
 struct Live {
     ent_scene* scene;
     ent_skin* skin;
+    int32_t tool;  // a tool of the scene, touching the bowel
 };
 
 // Everything a caller can observe of a scene and its skin.
@@ -70,6 +72,8 @@ struct Observed {
     ent_stats stats;
     std::vector<ent_effect_stats> effects;
     ent_mesh_view mesh;
+    double wrench[6];
+    int32_t grasping;
 };
 
 Observed observe(const Live& live) {
@@ -80,6 +84,8 @@ Observed observe(const Live& live) {
     std::memset(&o.mesh, 0, sizeof o.mesh);
     o.mesh.struct_size = sizeof o.mesh;
     EXPECT_EQ(ent_skin_mesh(live.skin, &o.mesh), ENT_OK) << ent_last_error();
+    EXPECT_EQ(ent_tool_wrench(live.scene, live.tool, o.wrench, o.wrench + 3), ENT_OK) << ent_last_error();
+    EXPECT_EQ(ent_tool_state(live.scene, live.tool, &o.grasping), ENT_OK) << ent_last_error();
     return o;
 }
 
@@ -97,6 +103,8 @@ bool same_bits(const void* a, const void* b, std::size_t size) { return std::mem
             return ::testing::AssertionFailure() << "ent_effect_stats of effect " << e << " changed";
     if (!same_bits(&before.mesh, &after.mesh, sizeof before.mesh))
         return ::testing::AssertionFailure() << "the skin's mesh view changed";
+    if (!same_bits(before.wrench, after.wrench, sizeof before.wrench) || before.grasping != after.grasping)
+        return ::testing::AssertionFailure() << "the tool's wrench or grasp changed";
     return ::testing::AssertionSuccess();
 }
 
@@ -158,6 +166,29 @@ std::function<ent_status(const Live&)> skin_with(Change change) {
         const ent_status status = ent_skin_create(live.scene, &desc, &out);
         EXPECT_EQ(out, sentinel<ent_skin>()) << "out_skin written on failure";
         return status;
+    };
+}
+
+template <class Change>
+std::function<ent_status(const Live&)> tool_with(Change change) {
+    return [change](const Live& live) {
+        ent_tool_desc desc;
+        ent_tool_desc_default(&desc);
+        change(desc);
+        int32_t id = -7;
+        const ent_status status = ent_tool_add(live.scene, &desc, &id);
+        EXPECT_EQ(id, -7) << "out_tool written on failure";
+        return status;
+    };
+}
+
+// A pose with one change, for the live tool.
+template <class Change>
+std::function<ent_status(const Live&)> pose_with(Change change) {
+    return [change](const Live& live) {
+        double position[3] = {0.0, 0.0, 0.0}, orientation[4] = {1.0, 0.0, 0.0, 0.0};
+        change(position, orientation);
+        return ent_tool_set_pose(live.scene, live.tool, position, orientation);
     };
 }
 
@@ -661,6 +692,121 @@ std::vector<BadInput> table() {
              return ENT_OK;
          },
          ENT_OK, nullptr},
+
+        // ---- tools
+        {"ent_tool_desc_init", "desc NULL", [](L) { return ent_tool_desc_init(nullptr, sizeof(ent_tool_desc)); }, kArg,
+         "desc"},
+        {"ent_tool_add", "scene NULL",
+         [](L) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             return ent_tool_add(nullptr, &d, nullptr);
+         },
+         kArg, "scene"},
+        {"ent_tool_add", "desc NULL", [](L l) { return ent_tool_add(l.scene, nullptr, nullptr); }, kArg, "desc"},
+        {"ent_tool_add", "radius_m NaN", tool_with([](ent_tool_desc& d) { d.radius_m = kNaN; }), kArg, "radius_m"},
+        {"ent_tool_add", "radius_m 0", tool_with([](ent_tool_desc& d) { d.radius_m = 0.0; }), kArg, "radius_m"},
+        {"ent_tool_add", "length_m -1", tool_with([](ent_tool_desc& d) { d.length_m = -1.0; }), kArg, "length_m"},
+        {"ent_tool_add", "max_force_N 0", tool_with([](ent_tool_desc& d) { d.max_force_N = 0.0; }), kArg,
+         "max_force_N"},
+        {"ent_tool_add", "max_force_N Inf", tool_with([](ent_tool_desc& d) { d.max_force_N = kInf; }), kArg,
+         "max_force_N"},
+        {"ent_tool_add", "grasp_margin_m -1", tool_with([](ent_tool_desc& d) { d.grasp_margin_m = -1.0; }), kArg,
+         "grasp_margin_m"},
+        {"ent_tool_add", "grasp_stiffness_N_per_m 0",
+         tool_with([](ent_tool_desc& d) { d.grasp_stiffness_N_per_m = 0.0; }), kArg, "grasp_stiffness_N_per_m"},
+        {"ent_tool_add", "grasp_damping_N_s_per_m NaN",
+         tool_with([](ent_tool_desc& d) { d.grasp_damping_N_s_per_m = kNaN; }), kArg, "grasp_damping_N_s_per_m"},
+        {"ent_tool_add", "position_m -Inf", tool_with([](ent_tool_desc& d) { d.position_m[1] = -kInf; }), kArg,
+         "position_m"},
+        {"ent_tool_add", "orientation_wxyz zero",
+         tool_with([](ent_tool_desc& d) { d.orientation_wxyz[0] = 0.0; }), kArg, "orientation_wxyz"},
+        {"ent_tool_add", "orientation_wxyz NaN", tool_with([](ent_tool_desc& d) { d.orientation_wxyz[2] = kNaN; }),
+         kArg, "orientation_wxyz"},
+        {"ent_tool_set_pose", "scene NULL",
+         [](L) {
+             const double p[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+             return ent_tool_set_pose(nullptr, 0, p, q);
+         },
+         kArg, "scene"},
+        {"ent_tool_set_pose", "position_m NULL",
+         [](L l) {
+             const double q[4] = {1, 0, 0, 0};
+             return ent_tool_set_pose(l.scene, l.tool, nullptr, q);
+         },
+         kArg, "position_m"},
+        {"ent_tool_set_pose", "orientation_wxyz NULL",
+         [](L l) {
+             const double p[3] = {0, 0, 0};
+             return ent_tool_set_pose(l.scene, l.tool, p, nullptr);
+         },
+         kArg, "orientation_wxyz"},
+        {"ent_tool_set_pose", "unknown tool 99",
+         [](L l) {
+             const double p[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+             return ent_tool_set_pose(l.scene, 99, p, q);
+         },
+         ENT_ERROR_NOT_FOUND, "tool 99"},
+        {"ent_tool_set_pose", "position_m NaN", pose_with([](double* p, double*) { p[0] = kNaN; }), kArg,
+         "position_m"},
+        {"ent_tool_set_pose", "position_m Inf", pose_with([](double* p, double*) { p[2] = kInf; }), kArg,
+         "position_m"},
+        {"ent_tool_set_pose", "orientation_wxyz zero", pose_with([](double*, double* q) { q[0] = 0.0; }), kArg,
+         "orientation_wxyz"},
+        {"ent_tool_set_pose", "orientation_wxyz Inf", pose_with([](double*, double* q) { q[3] = kInf; }), kArg,
+         "orientation_wxyz"},
+        {"ent_tool_set_pose", "orientation_wxyz 1e-300 (norm underflows)",
+         pose_with([](double*, double* q) { q[0] = 1e-300; }), kArg, "orientation_wxyz"},
+        {"ent_tool_wrench", "scene NULL",
+         [](L) {
+             double f[3], t[3];
+             return ent_tool_wrench(nullptr, 0, f, t);
+         },
+         kArg, "scene"},
+        {"ent_tool_wrench", "force_N NULL",
+         [](L l) {
+             double t[3];
+             return ent_tool_wrench(l.scene, l.tool, nullptr, t);
+         },
+         kArg, "force_N"},
+        {"ent_tool_wrench", "torque_Nm NULL",
+         [](L l) {
+             double f[3];
+             return ent_tool_wrench(l.scene, l.tool, f, nullptr);
+         },
+         kArg, "torque_Nm"},
+        {"ent_tool_wrench", "unknown tool -1",
+         [](L l) {
+             double f[3] = {7, 7, 7}, t[3] = {7, 7, 7};
+             const ent_status status = ent_tool_wrench(l.scene, -1, f, t);
+             EXPECT_EQ(f[0], 7.0) << "force_N written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool -1"},
+        {"ent_tool_grasp", "scene NULL", [](L) { return ent_tool_grasp(nullptr, 0); }, kArg, "scene"},
+        {"ent_tool_grasp", "unknown tool INT32_MAX", [](L l) { return ent_tool_grasp(l.scene, INT32_MAX); },
+         ENT_ERROR_NOT_FOUND, "tool"},
+        {"ent_tool_release", "scene NULL", [](L) { return ent_tool_release(nullptr, 0); }, kArg, "scene"},
+        {"ent_tool_release", "unknown tool INT32_MIN", [](L l) { return ent_tool_release(l.scene, INT32_MIN); },
+         ENT_ERROR_NOT_FOUND, "tool"},
+        {"ent_tool_state", "scene NULL",
+         [](L) {
+             int32_t g = 7;
+             const ent_status status = ent_tool_state(nullptr, 0, &g);
+             EXPECT_EQ(g, 7);
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_tool_state", "out_grasping NULL", [](L l) { return ent_tool_state(l.scene, l.tool, nullptr); }, kArg,
+         "out_grasping"},
+        {"ent_tool_state", "unknown tool 1",
+         [](L l) {
+             int32_t g = 7;
+             const ent_status status = ent_tool_state(l.scene, l.tool + 1, &g);
+             EXPECT_EQ(g, 7);
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
     };
 
     // Every struct that carries a struct_size, with each size no release has.
@@ -684,6 +830,8 @@ std::vector<BadInput> table() {
                                     size, [](L l, struct ent_skin_metrics* m) { return ent_skin_metrics(l.skin, m); }));
         add("ent_scene_add_obstacle", obstacle_with([size](ent_obstacle_desc& d) { d.struct_size = size; }));
         add("ent_skin_create", skin_with([size](ent_skin_desc& d) { d.struct_size = size; }));
+        add("ent_tool_desc_init", init_with_size(&ent_tool_desc_init, size));
+        add("ent_tool_add", tool_with([size](ent_tool_desc& d) { d.struct_size = size; }));
     }
     for (int32_t effect : {-1, ENT_EFFECT_COUNT, INT32_MAX}) {
         rows.push_back({"ent_scene_effect_stats", "an effect this library does not know",
@@ -702,6 +850,17 @@ void run_table(int32_t integrator) {
     ScenePtr tried = create(moving_desc(integrator));
     ScenePtr twin = create(moving_desc(integrator));
     ASSERT_TRUE(tried && twin);
+    // A tool resting on the bowel's first control point, grasping it.
+    const std::vector<double> q = control_points(tried.get());
+    ent_tool_desc tool_desc;
+    ent_tool_desc_default(&tool_desc);
+    for (int c = 0; c < 3; ++c) tool_desc.position_m[c] = q[c];
+    tool_desc.position_m[2] += 0.015;
+    int32_t tool = -1;
+    for (ent_scene* scene : {tried.get(), twin.get()}) {
+        ASSERT_EQ(ent_tool_add(scene, &tool_desc, &tool), ENT_OK) << ent_last_error();
+        ASSERT_EQ(ent_tool_grasp(scene, tool), ENT_OK) << ent_last_error();
+    }
     ASSERT_TRUE(step_n(tried.get(), 1e-3, 20));
     ASSERT_TRUE(step_n(twin.get(), 1e-3, 20));
     ASSERT_GT(stats(tried.get()).kinetic_energy_J, 0.0) << "the scene must be moving";
@@ -711,7 +870,10 @@ void run_table(int32_t integrator) {
     ASSERT_EQ(ent_skin_create(tried.get(), &skin_desc, &skin_raw), ENT_OK) << ent_last_error();
     SkinPtr skin(skin_raw);
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
-    const Live live{tried.get(), skin.get()};
+    const Live live{tried.get(), skin.get(), tool};
+    int32_t grasping = 0;
+    ASSERT_EQ(ent_tool_state(tried.get(), tool, &grasping), ENT_OK);
+    EXPECT_EQ(grasping, 1) << "the tool should hold the bowel";
 
     for (const BadInput& row : table()) {
         SCOPED_TRACE(std::string(row.function) + ": " + row.input);

@@ -1,7 +1,8 @@
 // libFuzzer target: arbitrary bytes decoded into a sequence of C API calls on one scene:
 // create (from a few base scenes, or from an ent_scene_desc with arbitrary numbers), then
 // up to 64 of: step with an arbitrary dt, add an obstacle, create / update / measure /
-// destroy a skin with arbitrary settings, and the queries. Every call must return ENT_OK or
+// destroy a skin with arbitrary settings, add a tool, set its pose, grasp, release, read
+// its wrench and state, and the queries. Every call must return ENT_OK or
 // a status with a message; a failing step must leave the control points exactly as they
 // were; a scene that returned ENT_OK must be finite everywhere (control points, axis, stats,
 // skin vertices); a mesh's indices must stay within its vertices. Any violation aborts.
@@ -70,12 +71,14 @@ void check_status(ent_status status) {
 const char* const kBaseScenes[] = {
     // a line, rk4, gravity only
     R"({"intestine": {"length": 0.5, "control_points": 8, "shape": {"kind": "line"}},
-        "solver": {"integrator": "rk4", "max_substeps": 100}, "gravity": [0, 0, -9.81]})",
+        "solver": {"integrator": "rk4", "max_substeps": 100}, "gravity": [0, 0, -9.81],
+        "tools": [{"position": [0.1, 0, 0.02]}]})",
     // a serpentine in a box, self-colliding, implicit Euler
     R"({"intestine": {"length": 1.0, "control_points": 24, "stretch_stiffness": 100, "bend_stiffness": 2.5e-3,
                       "shape": {"kind": "serpentine", "leg_length": 0.12, "center": [0, 0, -0.05]}},
         "solver": {"max_substeps": 100}, "gravity": [0, 0, -9.81], "damping": {},
-        "environment": [{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1]}], "self_collision": {}})",
+        "environment": [{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1]}], "self_collision": {},
+        "tools": [{"position": [0, 0, -0.03]}, {"position": [0.05, 0, 0.05], "max_force": 1}]})",
     // a helix on its mesentery, both ends held, symplectic Euler
     R"({"intestine": {"length": 1.0, "control_points": 16, "stretch_stiffness": 100, "bend_stiffness": 2.5e-3,
                       "shape": {"kind": "helix", "helix_radius": 0.05, "helix_pitch": 0.03}},
@@ -207,6 +210,60 @@ void update_skin(ent_skin* skin) {
         if (v.indices[i] >= v.vertex_count) fail("a mesh index is past the vertices");
 }
 
+void tool_call(Bytes& in, ent_scene* scene) {
+    const uint8_t what = in.u8();
+    // Bits 0-2: the call; bits 3-4: tool 0, 1 or 2; bit 7: an arbitrary id instead.
+    const int32_t tool = what & 0x80 ? static_cast<int32_t>(in.u32()) : (what >> 3) % 3;
+    const std::vector<double> before = control_points(scene);
+    ent_status status = ENT_OK;
+    switch (what % 8) {
+        case 0: {
+            double position[3], orientation[4] = {1.0, 0.0, 0.0, 0.0};
+            for (double& p : position) p = in.number(0.05) - 0.05;
+            if (in.u8() >= 200)
+                for (double& q : orientation) q = in.number(0.5);
+            status = ent_tool_set_pose(scene, tool, position, orientation);
+            break;
+        }
+        case 1: status = ent_tool_grasp(scene, tool); break;
+        case 2: status = ent_tool_release(scene, tool); break;
+        case 3: {
+            double force[3], torque[3];
+            status = ent_tool_wrench(scene, tool, force, torque);
+            if (status == ENT_OK)
+                for (int c = 0; c < 3; ++c)
+                    if (!std::isfinite(force[c]) || !std::isfinite(torque[c])) fail("a tool wrench is not finite");
+            break;
+        }
+        case 4: {
+            int32_t grasping = -1;
+            status = ent_tool_state(scene, tool, &grasping);
+            if (status == ENT_OK && grasping != 0 && grasping != 1) fail("ent_tool_state gave neither 0 nor 1");
+            break;
+        }
+        default: {
+            ent_tool_desc d;
+            ent_tool_desc_default(&d);
+            d.radius_m = in.number(0.005);
+            d.length_m = in.number(0.3);
+            d.max_force_N = in.number(5.0);
+            d.grasp_margin_m = in.number(0.005);
+            d.grasp_stiffness_N_per_m = in.number(200.0);
+            d.grasp_damping_N_s_per_m = in.number(2.0);
+            for (double& p : d.position_m) p = in.number(0.05) - 0.05;
+            if (in.u8() >= 200)
+                for (double& q : d.orientation_wxyz) q = in.number(0.5);
+            if (in.u8() == 255) d.struct_size = in.u32();
+            status = ent_tool_add(scene, &d, nullptr);
+            break;
+        }
+    }
+    check_status(status);
+    // No tool call moves the bowel by itself (a pose, a grasp take effect in the next step).
+    if (std::memcmp(before.data(), control_points(scene).data(), before.size() * sizeof(double)) != 0)
+        fail("a tool call changed the control points");
+}
+
 void query(Bytes& in, const ent_scene* scene, const ent_skin* skin) {
     switch (in.u8() % 5) {
         case 0: {
@@ -276,7 +333,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (int op = 0; op < 64 && !in.empty(); ++op) {
         const uint8_t code = in.u8();
         ent_skin*& skin = skins[code & 1];
-        switch ((code >> 1) % 8) {
+        switch ((code >> 1) % 10) {
             case 0:
             case 1:
             case 2: step(in, scene); break;
@@ -292,7 +349,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 ent_skin_destroy(skin);
                 skin = nullptr;
                 break;
-            default: query(in, scene, skin); break;
+            case 7: query(in, scene, skin); break;
+            default: tool_call(in, scene); break;
         }
     }
     for (ent_skin* skin : skins) ent_skin_destroy(skin);

@@ -9,7 +9,8 @@ arguments. A number is one byte: below 128 it scales the typical value by 0.25 +
 import os
 
 ONE = 48  # a number byte meaning "exactly the typical value"
-STEP, OBSTACLE, SKIN, UPDATE, DESTROY, QUERY = (0 << 1), (3 << 1), (4 << 1), (5 << 1), (6 << 1), (7 << 1)
+STEP, OBSTACLE, SKIN, UPDATE, DESTROY, QUERY, TOOL = (0 << 1), (3 << 1), (4 << 1), (5 << 1), (6 << 1), (7 << 1), (8 << 1)
+POSE, GRASP, RELEASE, WRENCH, STATE, ADD_TOOL = 0x00, 0x01, 0x02, 0x03, 0x04, 0x05  # tool 0 (| 0x08: tool 1)
 
 
 def steps(n):
@@ -36,6 +37,13 @@ SEEDS = {
                         bytes([UPDATE, DESTROY, QUERY, 2, 0]),
     "bad_dt": bytes([1, STEP, 128 + 11, STEP, 128 + 12, STEP, 128 + 8, STEP, 128 + 0, STEP, ONE]),
     "desc_scene": desc_scene() + steps(10) + skin(0) + bytes([UPDATE]),
+    # the box pile's tool 0 grasps, is pulled up (a pose 2.2 x 5 cm above), stepped, released
+    "tool_grasp_pull": bytes([1]) + steps(20) + bytes([TOOL, GRASP]) + steps(5) +
+                       bytes([TOOL, POSE, ONE, ONE, 127, 0]) + steps(20) + bytes([TOOL, WRENCH, TOOL, STATE]) +
+                       bytes([TOOL, RELEASE]) + steps(5),
+    # a tool added to the line, then put through it within one step
+    "tool_teleport": bytes([0, TOOL, ADD_TOOL] + [ONE] * 9 + [0, 0]) + steps(3) +
+                     bytes([TOOL, POSE | 0x08, 16, ONE, 40, 0]) + steps(5),
 }
 
 if __name__ == "__main__":

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "tool_drivers.h"
+
 namespace stability {
 
 namespace {
@@ -53,7 +55,8 @@ ent_scene* add_or_destroy(ent_scene* scene, const ent_obstacle_desc& obstacle) {
 // integrator (contacts bound their stable substep to a few microseconds through the
 // friction's damping, so a contact scene costs hundreds of substeps per millisecond with
 // rk4 or symplectic Euler).
-std::string demo_bowel(const std::string& integrator, double timestep_s, double stretch_stiffness_N, bool contacts) {
+std::string demo_bowel(const std::string& integrator, double timestep_s, double stretch_stiffness_N, bool contacts,
+                       const std::string& tools = "") {
     return R"({
   "intestine": {"length": 6.0, "radius": 0.0125, "control_points": 240, "linear_density": 0.3,
                 "stretch_stiffness": )" + std::to_string(stretch_stiffness_N) + R"(, "bend_stiffness": 2.5e-3,
@@ -62,7 +65,7 @@ std::string demo_bowel(const std::string& integrator, double timestep_s, double 
   "gravity": [0, 0, -9.81],
   "damping": {},)" + (contacts ? R"(
   "environment": [{"type": "box_inside", "center": [0, 0, 0], "half_extents": [0.15, 0.15, 0.15]}],
-  "self_collision": {},)" : "") + R"(
+  "self_collision": {},)" : "") + tools + R"(
   "mesentery": {"root": [[-0.075, 0, 0], [0.075, 0, 0]], "stiffness": 5, "attachments": 60}
 })";
 }
@@ -70,7 +73,7 @@ std::string demo_bowel(const std::string& integrator, double timestep_s, double 
 // The 6 m bowel, no mesentery, dropped as a tall narrow helix (radius 4 cm, 24 turns, 60 cm
 // high) into an open-top cube of 12 cm: the floor and four walls as planes, so the bowel
 // piles above the rim as it must (its 2.9 L do not fit in the cube's 1.7 L).
-std::string dropped_bowel() {
+std::string dropped_bowel(const std::string& tools = "") {
     return R"({
   "intestine": {"length": 6.0, "radius": 0.0125, "control_points": 240, "linear_density": 0.3,
                 "stretch_stiffness": 100, "bend_stiffness": 2.5e-3,
@@ -83,7 +86,7 @@ std::string dropped_bowel() {
     {"type": "plane", "point": [-0.06, 0, 0], "normal": [1, 0, 0]},
     {"type": "plane", "point": [0.06, 0, 0], "normal": [-1, 0, 0]},
     {"type": "plane", "point": [0, -0.06, 0], "normal": [0, 1, 0]},
-    {"type": "plane", "point": [0, 0.06, 0], "normal": [0, -1, 0]}],
+    {"type": "plane", "point": [0, 0.06, 0], "normal": [0, -1, 0]}],)" + tools + R"(
   "self_collision": {}
 })";
 }
@@ -215,8 +218,17 @@ ent_scene* collapsed(int32_t integrator) {
 // each other) where the geometry forbids better: the closed cube cannot hold the bowel's
 // volume, and a fold of zero radius keeps the pair at the edge of the neighbour window
 // (pi R along the axis) almost on top of each other.
+// A vertical tool of the default size (5 mm radius, 30 cm shaft), bounded at 5 N: above the
+// demo's bowel, or at the bottom of dense_pile's cube.
+constexpr double kToolMaxForce = 5.0;  // N
+const char* kTool = R"(
+  "tools": [{"radius": 0.005, "length": 0.3, "max_force": 5, "position": [0, 0, 0.14]}],)";
+const char* kSweepTool = R"(
+  "tools": [{"radius": 0.005, "length": 0.3, "max_force": 5, "position": [-0.045, 0, -0.045]}],)";
+
 std::vector<HardCase> make_cases() {
     constexpr double kEnergy = 1e-3;  // J
+    constexpr double kToolReach = 0.005 + kRadius;  // m
     constexpr double kSettled = 0.5 * kRadius, kLargeStep = kRadius, kCentresApart = 2.0 * kRadius;
     using S = ent_scene*;
     // name, what, dt, penetration bound, settle, energy allowance, make, drive
@@ -252,6 +264,21 @@ std::vector<HardCase> make_cases() {
          []() -> S { return degenerate(ENT_INTEGRATOR_RK4, false); }, nullptr},
         {"collapsed_implicit_euler", "every control point at one place (zero-length axis), first end held", 1e-3,
          0.0, 0.0, kEnergy, []() -> S { return collapsed(ENT_INTEGRATOR_IMPLICIT_EULER); }, nullptr},
+        // The tools' forces on the bowel are bounded (5 N in all), so a fast tool passes
+        // through the bowel: a sphere may get as deep as the tool's radius + R (17.5 mm),
+        // never onto the tool's axis. Energy: the tools' work is in the budget.
+        {"fast_tool_sweep", "a tool sweeping at 10 m/s through the pile of dense_pile, back and forth", 1e-3,
+         kToolReach, 0.0, kEnergy, [] { return from_json(dropped_bowel(kSweepTool)); },
+         [] {
+             const double tip[3] = {-0.045, 0.0, -0.045};
+             return make_sweep(10.0, -0.045, 0.045, tip);
+         }},
+        {"yank", "demo bowel grasped every 2 s and pulled up at 1 m/s for 0.5 s, far past max_force", 1e-3,
+         kToolReach, 0.0, kEnergy, [] { return from_json(demo_bowel("implicit_euler", 1e-3, 100, true, kTool)); },
+         [] { return make_yank(2.0, 1.0, 0.5, kToolMaxForce); }},
+        {"teleport", "demo bowel, a tool put on a control point within one step every 0.5 s", 1e-3, kToolReach, 0.0,
+         kEnergy, [] { return from_json(demo_bowel("implicit_euler", 1e-3, 100, true, kTool)); },
+         [] { return make_teleport(0.5, kToolMaxForce); }},
     };
 }
 

@@ -86,14 +86,26 @@ RunResult run(const HardCase& hard_case, double seconds) {
     if (!checker.read(result.failure)) return result;
     result.initial_energy_J = checker.energy();
 
+    const std::unique_ptr<ToolDriver> tools = hard_case.driver ? hard_case.driver() : nullptr;
     const uint64_t steps = static_cast<uint64_t>(std::llround(seconds / hard_case.step_s));
     double time = 0.0;
     for (uint64_t i = 0; i < steps; ++i) {
-        if (hard_case.drive) result.external_work_J += hard_case.drive(scene.get(), time);
+        if (tools && !tools->before_step(scene.get(), time)) {
+            result.failure = format("at t = %.3f s: a tool call failed: ", time) + ent_last_error();
+            break;
+        }
         const ent_status status = ent_scene_step(scene.get(), hard_case.step_s);
         if (status != ENT_OK) {
             result.failure = format("at t = %.3f s: ", time) + call_failure("ent_scene_step", status);
             break;
+        }
+        if (tools) {
+            const double work = tools->work_of_step(scene.get());
+            if (!std::isfinite(work)) {
+                result.failure = format("at t = %.3f s: reading a tool failed: ", time) + ent_last_error();
+                break;
+            }
+            result.external_work_J += work;
         }
         time = static_cast<double>(i + 1) * hard_case.step_s;
         if (!checker.read(result.failure)) {

@@ -13,14 +13,26 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace stability {
 
-// One hard case. make() creates its scene (nullptr on failure, with ent_last_error set).
-// drive(), if given, is called before every step with the scene and the simulated time; it
-// moves tools and returns an upper bound of the work, in J, that the outside does on the
-// bowel during the coming step (0 without tools).
+// Moves the tools of one run (a fresh one per run: it keeps the run's state).
+class ToolDriver {
+public:
+    virtual ~ToolDriver() = default;
+    // Before each step: sets the tools' poses, grasps, releases. False if a call failed
+    // (ent_last_error() says why).
+    virtual bool before_step(ent_scene* scene, double time_s) = 0;
+    // After the step: the work, in J, the tools did on the bowel during it (an estimate or
+    // a bound, as the case explains); NaN if a call failed.
+    virtual double work_of_step(const ent_scene* scene) = 0;
+};
+
+// One hard case. make() creates its scene (nullptr on failure, with ent_last_error set);
+// driver(), if given, makes a fresh ToolDriver for each run (cases without tools have none,
+// and nothing outside the bowel does work on them).
 struct HardCase {
     const char* name;
     const char* what;                   // one line for the output
@@ -29,7 +41,7 @@ struct HardCase {
     double settle_s;                    // the start-up transient of a scene made overlapping
     double energy_allowance_J;          // tolerated energy from nothing over the whole run
     std::function<ent_scene*()> make;
-    std::function<double(ent_scene*, double time_s)> drive;
+    std::function<std::unique_ptr<ToolDriver>()> driver;
 };
 
 struct RunResult {
@@ -41,7 +53,7 @@ struct RunResult {
     uint64_t rollbacks = 0;
     double max_penetration_m = 0.0;      // after the case's settle_s
     double initial_energy_J = 0.0;
-    double external_work_J = 0.0;        // bound on the work done from outside, summed
+    double external_work_J = 0.0;        // work done by the tools on the bowel, summed (the driver's)
     double max_energy_excess_J = 0.0;    // max over steps of E - E0 - W (> 0: energy from nothing)
     double final_energy_J = 0.0;
     uint32_t max_contacts = 0;
