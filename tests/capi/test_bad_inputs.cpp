@@ -143,43 +143,45 @@ std::function<ent_status(const Live&)> json(std::string text) {
     };
 }
 
-template <class Change>
-std::function<ent_status(const Live&)> obstacle_with(Change change) {
-    return [change](const Live& live) {
-        ent_obstacle_desc desc;
-        ent_obstacle_desc_default(&desc);
+// A description filled by its _init function, changed, then passed to `call` with an
+// out-parameter holding `untouched`, which a failing call must leave as it was.
+template <class Desc, class Out, class Call, class Change>
+std::function<ent_status(const Live&)> desc_with(ent_status (*init)(Desc*, uint32_t), Out untouched, Call call,
+                                                 Change change) {
+    return [=](const Live& live) {
+        Desc desc;
+        init(&desc, static_cast<uint32_t>(sizeof desc));
         change(desc);
-        int32_t index = -7;
-        const ent_status status = ent_scene_add_obstacle(live.scene, &desc, &index);
-        EXPECT_EQ(index, -7) << "out_obstacle written on failure";
+        Out out = untouched;
+        const ent_status status = call(live, &desc, &out);
+        EXPECT_EQ(out, untouched) << "out-parameter written on failure";
         return status;
     };
+}
+
+template <class Change>
+std::function<ent_status(const Live&)> obstacle_with(Change change) {
+    return desc_with(&ent_obstacle_desc_init, int32_t{-7},
+                     [](const Live& l, const ent_obstacle_desc* d, int32_t* out) {
+                         return ent_scene_add_obstacle(l.scene, d, out);
+                     },
+                     change);
 }
 
 template <class Change>
 std::function<ent_status(const Live&)> skin_with(Change change) {
-    return [change](const Live& live) {
-        ent_skin_desc desc;
-        ent_skin_desc_default(&desc);
-        change(desc);
-        ent_skin* out = sentinel<ent_skin>();
-        const ent_status status = ent_skin_create(live.scene, &desc, &out);
-        EXPECT_EQ(out, sentinel<ent_skin>()) << "out_skin written on failure";
-        return status;
-    };
+    return desc_with(&ent_skin_desc_init, sentinel<ent_skin>(),
+                     [](const Live& l, const ent_skin_desc* d, ent_skin** out) {
+                         return ent_skin_create(l.scene, d, out);
+                     },
+                     change);
 }
 
 template <class Change>
 std::function<ent_status(const Live&)> tool_with(Change change) {
-    return [change](const Live& live) {
-        ent_tool_desc desc;
-        ent_tool_desc_default(&desc);
-        change(desc);
-        int32_t id = -7;
-        const ent_status status = ent_tool_add(live.scene, &desc, &id);
-        EXPECT_EQ(id, -7) << "out_tool written on failure";
-        return status;
-    };
+    return desc_with(&ent_tool_desc_init, int32_t{-7},
+                     [](const Live& l, const ent_tool_desc* d, int32_t* out) { return ent_tool_add(l.scene, d, out); },
+                     change);
 }
 
 // A pose with one change, for the live tool.
