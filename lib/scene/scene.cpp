@@ -262,6 +262,8 @@ bool Scene::try_step(double dt, std::size_t substeps) {
     const double floor = 0.5 * total_mass_ * kEnergyFloorSpeed * kEnergyFloorSpeed;
     const double allowance = std::max(floor, kEnergyGrowthFactor * (energies_.kinetic + energies_.deformation)) +
                              dynamics_.external_work_bound();
+    // A state whose energy is not finite is an explosion, whatever the allowance.
+    if (!std::isfinite(after.kinetic + after.potential)) return false;
     if (!(after.kinetic + after.potential <= energies_.kinetic + energies_.potential + allowance)) return false;
     energies_ = after;
     return true;
