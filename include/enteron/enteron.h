@@ -464,10 +464,10 @@ ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_d
  */
 typedef struct ent_tool_desc {
     uint32_t struct_size;            /**< sizeof(ent_tool_desc); set by ent_tool_desc_default. */
-    double radius_m;                 /**< shaft radius, m, > 0 (default 0.005). */
-    double length_m;                 /**< shaft length from the tip along local +z, m, >= 0 (default 0.3). */
+    double radius_m;                 /**< shaft radius, m, > 0 and <= 1 (default 0.005). */
+    double length_m;                 /**< shaft length from the tip along local +z, m, >= 0 and <= 10 (default 0.3). */
     double max_force_N;              /**< bound of the force the tool exerts and reports, N, > 0 (default 5). */
-    double grasp_margin_m;           /**< grasp reach beyond touching: reach = radius_m + R + this, m, >= 0 (default 0.005). */
+    double grasp_margin_m;           /**< grasp reach beyond touching: reach = radius_m + R + this, m, >= 0 and <= 1 (default 0.005). */
     double grasp_stiffness_N_per_m;  /**< stiffness of the grasp spring from the held axis point to the tip (rest length radius_m + R), > 0 (default 200). */
     double grasp_damping_N_s_per_m;  /**< damping of the grasp spring, >= 0 (default 2). */
     double position_m[3];            /**< initial tip position, m (default 0, 0, 0). */

@@ -6,6 +6,9 @@ namespace enteron::collision {
 
 namespace {
 
+constexpr double kMaxToolRadius = 1.0;   // m, also the largest grasp margin
+constexpr double kMaxToolLength = 10.0;  // m
+
 // "tools[1].radius must be finite and > 0, got -1"; `what` names what is shown of the value.
 [[noreturn]] void refuse(ErrorCode code, const std::string& prefix, const char* field, const char* rule,
                          double value, const char* what = "") {
@@ -35,12 +38,16 @@ ToolPose normalized_pose(const ToolPose& pose, const std::string& prefix, const 
 
 void validate_tool_settings(const ToolSettings& s, const std::string& prefix, const ToolFieldNames& names,
                             ErrorCode code) {
-    if (!std::isfinite(s.radius) || !(s.radius > 0.0)) refuse(code, prefix, names.radius, "finite and > 0", s.radius);
-    if (!std::isfinite(s.length) || !(s.length >= 0.0)) refuse(code, prefix, names.length, "finite and >= 0", s.length);
+    // Upper bounds on the sizes keep every contact's depth, and so its energy, finite: a
+    // tool 1e200 m wide is finite but gave the bowel an infinite potential energy.
+    if (!(s.radius > 0.0 && s.radius <= kMaxToolRadius))
+        refuse(code, prefix, names.radius, "> 0 and <= 1 (m)", s.radius);
+    if (!(s.length >= 0.0 && s.length <= kMaxToolLength))
+        refuse(code, prefix, names.length, ">= 0 and <= 10 (m)", s.length);
     if (!std::isfinite(s.max_force) || !(s.max_force > 0.0))
         refuse(code, prefix, names.max_force, "finite and > 0", s.max_force);
-    if (!std::isfinite(s.grasp_margin) || !(s.grasp_margin >= 0.0))
-        refuse(code, prefix, names.grasp_margin, "finite and >= 0", s.grasp_margin);
+    if (!(s.grasp_margin >= 0.0 && s.grasp_margin <= kMaxToolRadius))
+        refuse(code, prefix, names.grasp_margin, ">= 0 and <= 1 (m)", s.grasp_margin);
     if (!std::isfinite(s.grasp_stiffness) || !(s.grasp_stiffness > 0.0))
         refuse(code, prefix, names.grasp_stiffness, "finite and > 0", s.grasp_stiffness);
     if (!std::isfinite(s.grasp_damping) || !(s.grasp_damping >= 0.0))

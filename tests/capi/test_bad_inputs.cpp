@@ -1,9 +1,23 @@
-// Bad input never crashes, gives the documented status and a message naming the input, leaves
-// out_scene untouched, and leaves an existing scene exactly as it was.
+// Bad input through every entry point of the C API, as one table: each row is a function
+// and one bad input (NULL handles and pointers, NaN and Inf, negative or zero sizes, dt <= 0
+// or absurd, wrong struct_size, unknown JSON keys and wrong types, huge inputs). Every row
+// must return its status (or, for the calls that return no status, its documented value),
+// leave a message naming the input in ent_last_error(), leave out-parameters untouched, and
+// leave a live scene, its skin and its tool bit-identical: control points, stats, effect
+// stats, the mesh, the tool's wrench and grasp, and (checked by stepping a twin scene that
+// never saw a bad call) the velocities and the tool's target pose.
+//
+// BadInputs.EveryExportedFunctionHasRows reads the library's exported symbols (nm at build
+// time, ENTERON_EXPORTS_FILE) and fails when a function has no row: a new entry point must
+// come with its bad inputs.
 #include "capi_test_support.h"
 
+#include <cfloat>
+#include <climits>
+#include <fstream>
 #include <functional>
 #include <limits>
+#include <set>
 
 using namespace capi_test;
 
@@ -12,13 +26,21 @@ namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
 // A recognisable value that no successful create would write.
-ent_scene* sentinel() {
+template <class T>
+T* sentinel() {
     static char storage;
-    return reinterpret_cast<ent_scene*>(&storage);
+    return reinterpret_cast<T*>(&storage);
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+struct SkinDeleter {
+    void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
+};
+using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
+
+// ---- the live objects every row is tried against ---------------------------------------------
 
 ent_scene_desc small_desc() {
     ent_scene_desc desc = default_desc();
@@ -27,208 +49,909 @@ ent_scene_desc small_desc() {
     return desc;
 }
 
-// ---- ent_scene_create ----------------------------------------------------------------------
+// A small moving bowel: serpentine, hung from a mesentery, self-colliding.
+ent_scene_desc moving_desc(int32_t integrator) {
+    ent_scene_desc desc = small_desc();
+    desc.shape = ENT_SHAPE_SERPENTINE;
+    desc.shape_leg_length_m = 0.2;
+    desc.integrator = integrator;
+    desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY) | ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
+    desc.mesentery_attachments = 5;
+    return desc;
+}
 
-struct DescCase {
-    const char* name;
-    std::function<void(ent_scene_desc&)> change;
-    ent_status status;
-    const char* message_part;  // must appear in ent_last_error()
+struct Live {
+    ent_scene* scene;
+    ent_skin* skin;
+    int32_t tool;  // a tool of the scene, touching the bowel
 };
+
+// Everything a caller can observe of a scene and its skin.
+struct Observed {
+    std::vector<double> points;
+    ent_stats stats;
+    std::vector<ent_effect_stats> effects;
+    ent_mesh_view mesh;
+    double wrench[6];
+    int32_t grasping;
+};
+
+Observed observe(const Live& live) {
+    Observed o;
+    o.points = control_points(live.scene);
+    o.stats = stats(live.scene);
+    for (int32_t e = 0; e < ENT_EFFECT_COUNT; ++e) o.effects.push_back(effect_stats(live.scene, e));
+    std::memset(&o.mesh, 0, sizeof o.mesh);
+    o.mesh.struct_size = sizeof o.mesh;
+    EXPECT_EQ(ent_skin_mesh(live.skin, &o.mesh), ENT_OK) << ent_last_error();
+    EXPECT_EQ(ent_tool_wrench(live.scene, live.tool, o.wrench, o.wrench + 3), ENT_OK) << ent_last_error();
+    EXPECT_EQ(ent_tool_state(live.scene, live.tool, &o.grasping), ENT_OK) << ent_last_error();
+    return o;
+}
+
+bool same_bits(const void* a, const void* b, std::size_t size) { return std::memcmp(a, b, size) == 0; }
+
+::testing::AssertionResult unchanged(const Observed& before, const Observed& after) {
+    if (before.points.size() != after.points.size() ||
+        !same_bits(before.points.data(), after.points.data(), before.points.size() * sizeof(double)))
+        return ::testing::AssertionFailure() << "control points changed";
+    ent_stats a = before.stats, b = after.stats;
+    a.last_step_ns = b.last_step_ns = 0;  // wall time, not state
+    if (!same_bits(&a, &b, sizeof a)) return ::testing::AssertionFailure() << "ent_stats changed";
+    for (std::size_t e = 0; e < before.effects.size(); ++e)
+        if (before.effects[e].calls != after.effects[e].calls || before.effects[e].enabled != after.effects[e].enabled)
+            return ::testing::AssertionFailure() << "ent_effect_stats of effect " << e << " changed";
+    if (!same_bits(&before.mesh, &after.mesh, sizeof before.mesh))
+        return ::testing::AssertionFailure() << "the skin's mesh view changed";
+    if (!same_bits(before.wrench, after.wrench, sizeof before.wrench) || before.grasping != after.grasping)
+        return ::testing::AssertionFailure() << "the tool's wrench or grasp changed";
+    return ::testing::AssertionSuccess();
+}
+
+// ---- the table ---------------------------------------------------------------------------------
+
+// One bad input to one function. call() makes the call (checking its own out-parameters)
+// and returns its status; functions that return no status return ENT_OK when they gave
+// their documented answer to the bad input, and have no message.
+struct BadInput {
+    const char* function;
+    std::string input;
+    std::function<ent_status(const Live&)> call;
+    ent_status status;
+    const char* message_part;  // must appear in ent_last_error(); nullptr: no message
+};
+
+// A description with one change, created into a sentinel that must stay untouched.
+template <class Change>
+std::function<ent_status(const Live&)> create_with(Change change) {
+    return [change](const Live&) {
+        ent_scene_desc desc = small_desc();
+        change(desc);
+        ent_scene* out = sentinel<ent_scene>();
+        const ent_status status = ent_scene_create(&desc, &out);
+        EXPECT_EQ(out, sentinel<ent_scene>()) << "out_scene written on failure";
+        return status;
+    };
+}
+
+std::function<ent_status(const Live&)> json(std::string text) {
+    return [text](const Live&) {
+        ent_scene* out = sentinel<ent_scene>();
+        const ent_status status = ent_scene_create_json(text.data(), text.size(), &out);
+        EXPECT_EQ(out, sentinel<ent_scene>()) << "out_scene written on failure";
+        return status;
+    };
+}
+
+// A description filled by its _init function, changed, then passed to `call` with an
+// out-parameter holding `untouched`, which a failing call must leave as it was.
+template <class Desc, class Out, class Call, class Change>
+std::function<ent_status(const Live&)> desc_with(ent_status (*init)(Desc*, uint32_t), Out untouched, Call call,
+                                                 Change change) {
+    return [=](const Live& live) {
+        Desc desc;
+        init(&desc, static_cast<uint32_t>(sizeof desc));
+        change(desc);
+        Out out = untouched;
+        const ent_status status = call(live, &desc, &out);
+        EXPECT_EQ(out, untouched) << "out-parameter written on failure";
+        return status;
+    };
+}
+
+template <class Change>
+std::function<ent_status(const Live&)> obstacle_with(Change change) {
+    return desc_with(&ent_obstacle_desc_init, int32_t{-7},
+                     [](const Live& l, const ent_obstacle_desc* d, int32_t* out) {
+                         return ent_scene_add_obstacle(l.scene, d, out);
+                     },
+                     change);
+}
+
+template <class Change>
+std::function<ent_status(const Live&)> skin_with(Change change) {
+    return desc_with(&ent_skin_desc_init, sentinel<ent_skin>(),
+                     [](const Live& l, const ent_skin_desc* d, ent_skin** out) {
+                         return ent_skin_create(l.scene, d, out);
+                     },
+                     change);
+}
+
+template <class Change>
+std::function<ent_status(const Live&)> tool_with(Change change) {
+    return desc_with(&ent_tool_desc_init, int32_t{-7},
+                     [](const Live& l, const ent_tool_desc* d, int32_t* out) { return ent_tool_add(l.scene, d, out); },
+                     change);
+}
+
+// A pose with one change, for the live tool.
+template <class Change>
+std::function<ent_status(const Live&)> pose_with(Change change) {
+    return [change](const Live& live) {
+        double position[3] = {0.0, 0.0, 0.0}, orientation[4] = {1.0, 0.0, 0.0, 0.0};
+        change(position, orientation);
+        return ent_tool_set_pose(live.scene, live.tool, position, orientation);
+    };
+}
+
+// An _init function given a bad size writes nothing.
+template <class T>
+std::function<ent_status(const Live&)> init_with_size(ent_status (*init)(T*, uint32_t), uint32_t size) {
+    return [init, size](const Live&) {
+        T value;
+        std::memset(&value, 0x5a, sizeof value);
+        T copy = value;
+        const ent_status status = init(&value, size);
+        EXPECT_TRUE(same_bits(&value, &copy, sizeof value)) << "written although refused";
+        return status;
+    };
+}
+
+// A struct whose caller-set struct_size is wrong is refused and not written.
+template <class T, class Call>
+std::function<ent_status(const Live&)> out_struct_with_size(uint32_t size, Call call) {
+    return [size, call](const Live& live) {
+        T value;
+        std::memset(&value, 0x5a, sizeof value);
+        value.struct_size = size;
+        T copy = value;
+        const ent_status status = call(live, &value);
+        EXPECT_TRUE(same_bits(&value, &copy, sizeof value)) << "written although refused";
+        return status;
+    };
+}
 
 const uint32_t kPinnedTooFar[1] = {12};
-const double kShortPoints[3 * 12] = {};
-ent_callbacks allocate_only() {
+const uint32_t kSizes[] = {0u, 3u, 0xdeadbeefu};
+
+ent_callbacks callbacks_with(bool allocate_only, uint32_t size) {
     ent_callbacks c;
     ent_callbacks_default(&c);
-    c.allocate = [](void*, size_t, size_t) -> void* { return nullptr; };
+    if (allocate_only) c.allocate = [](void*, size_t, size_t) -> void* { return nullptr; };
+    c.struct_size = size;
     return c;
 }
-const ent_callbacks kAllocateOnly = allocate_only();
-ent_callbacks zero_size_callbacks() {
-    ent_callbacks c;
-    ent_callbacks_default(&c);
-    c.struct_size = 0;
-    return c;
+const ent_callbacks kAllocateOnly = callbacks_with(true, sizeof(ent_callbacks));
+const ent_callbacks kZeroSizeCallbacks = callbacks_with(false, 0);
+
+const double* points_with_nan() {
+    static double points[3 * 12];
+    for (int i = 0; i < 12; ++i) points[3 * i] = 0.1 * i;
+    points[3 * 7 + 1] = kNaN;
+    return points;
 }
-const ent_callbacks kZeroSizeCallbacks = zero_size_callbacks();
 
-const DescCase kDescCases[] = {
-    {"struct_size 0", [](ent_scene_desc& d) { d.struct_size = 0; }, ENT_ERROR_VERSION, "struct_size"},
-    {"struct_size too large", [](ent_scene_desc& d) { d.struct_size = sizeof(ent_scene_desc) + 8; },
-     ENT_ERROR_VERSION, "struct_size"},
-    {"struct_size garbage", [](ent_scene_desc& d) { d.struct_size = 0xdeadbeef; }, ENT_ERROR_VERSION,
-     "struct_size"},
-    {"radius -1", [](ent_scene_desc& d) { d.radius_m = -1.0; }, ENT_ERROR_INVALID_ARGUMENT, "radius_m"},
-    {"radius NaN", [](ent_scene_desc& d) { d.radius_m = kNaN; }, ENT_ERROR_INVALID_ARGUMENT, "radius_m"},
-    {"length NaN", [](ent_scene_desc& d) { d.length_m = kNaN; }, ENT_ERROR_INVALID_ARGUMENT, "length_m"},
-    {"length infinite", [](ent_scene_desc& d) { d.length_m = kInf; }, ENT_ERROR_INVALID_ARGUMENT, "length_m"},
-    {"length 0", [](ent_scene_desc& d) { d.length_m = 0.0; }, ENT_ERROR_INVALID_ARGUMENT, "length_m"},
-    {"control_points 2", [](ent_scene_desc& d) { d.control_points = 2; }, ENT_ERROR_INVALID_ARGUMENT,
-     "control_points"},
-    {"control_points 3", [](ent_scene_desc& d) { d.control_points = 3; }, ENT_ERROR_INVALID_ARGUMENT,
-     "control_points"},
-    {"control_points 0", [](ent_scene_desc& d) { d.control_points = 0; }, ENT_ERROR_INVALID_ARGUMENT,
-     "control_points"},
-    {"control_points huge", [](ent_scene_desc& d) { d.control_points = 0xffffffffu; },
-     ENT_ERROR_INVALID_ARGUMENT, "control_points"},
-    {"linear density 0", [](ent_scene_desc& d) { d.linear_density_kg_per_m = 0.0; }, ENT_ERROR_INVALID_ARGUMENT,
-     "linear_density_kg_per_m"},
-    {"stretch stiffness NaN", [](ent_scene_desc& d) { d.stretch_stiffness_N = kNaN; },
-     ENT_ERROR_INVALID_ARGUMENT, "stretch_stiffness_N"},
-    {"bend stiffness -1", [](ent_scene_desc& d) { d.bend_stiffness_N_m2 = -1.0; }, ENT_ERROR_INVALID_ARGUMENT,
-     "bend_stiffness_N_m2"},
-    {"shape 9", [](ent_scene_desc& d) { d.shape = 9; }, ENT_ERROR_INVALID_ARGUMENT, "shape"},
-    {"shape -1", [](ent_scene_desc& d) { d.shape = -1; }, ENT_ERROR_INVALID_ARGUMENT, "shape"},
-    {"line direction zero",
-     [](ent_scene_desc& d) {
-         d.shape = ENT_SHAPE_LINE;
-         d.shape_direction[0] = d.shape_direction[1] = d.shape_direction[2] = 0.0;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "shape_direction"},
-    {"points NULL",
-     [](ent_scene_desc& d) {
-         d.shape = ENT_SHAPE_POINTS;
-         d.shape_points_xyz_m = nullptr;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "shape_points_xyz_m"},
-    {"points with NaN",
-     [](ent_scene_desc& d) {
-         static double points[3 * 12];
-         for (int i = 0; i < 12; ++i) points[3 * i] = 0.1 * i;
-         points[3 * 7 + 1] = kNaN;
-         d.shape = ENT_SHAPE_POINTS;
-         d.shape_points_xyz_m = points;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "shape_points_xyz_m"},
-    {"integrator 3", [](ent_scene_desc& d) { d.integrator = 3; }, ENT_ERROR_INVALID_ARGUMENT, "integrator"},
-    {"integrator -1", [](ent_scene_desc& d) { d.integrator = -1; }, ENT_ERROR_INVALID_ARGUMENT, "integrator"},
-    {"timestep 0", [](ent_scene_desc& d) { d.timestep_s = 0.0; }, ENT_ERROR_INVALID_ARGUMENT, "timestep_s"},
-    {"timestep NaN", [](ent_scene_desc& d) { d.timestep_s = kNaN; }, ENT_ERROR_INVALID_ARGUMENT, "timestep_s"},
-    {"timestep -1", [](ent_scene_desc& d) { d.timestep_s = -1.0; }, ENT_ERROR_INVALID_ARGUMENT, "timestep_s"},
-    {"max_substeps 0", [](ent_scene_desc& d) { d.max_substeps = 0; }, ENT_ERROR_INVALID_ARGUMENT,
-     "max_substeps"},
-    {"max_speed 0", [](ent_scene_desc& d) { d.max_speed_m_per_s = 0.0; }, ENT_ERROR_INVALID_ARGUMENT,
-     "max_speed_m_per_s"},
-    {"gravity NaN", [](ent_scene_desc& d) { d.gravity_m_per_s2[1] = kNaN; }, ENT_ERROR_INVALID_ARGUMENT,
-     "gravity_m_per_s2"},
-    {"drag -1", [](ent_scene_desc& d) { d.drag_N_s_per_m2 = -1.0; }, ENT_ERROR_INVALID_ARGUMENT,
-     "drag_N_s_per_m2"},
-    {"unknown effect bit", [](ent_scene_desc& d) { d.effects |= 1u << 31; }, ENT_ERROR_INVALID_ARGUMENT,
-     "effects"},
-    {"mesentery without attachments",
-     [](ent_scene_desc& d) {
-         d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
-         d.mesentery_attachments = 0;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "mesentery_attachments"},
-    {"pinned point out of range",
-     [](ent_scene_desc& d) {
-         d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
-         d.pinned_points = kPinnedTooFar;
-         d.pinned_point_count = 1;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "pinned_points"},
-    {"pinned points NULL with a count",
-     [](ent_scene_desc& d) {
-         d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
-         d.pinned_points = nullptr;
-         d.pinned_point_count = 2;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "pinned_points"},
-    {"pinned ends 4",
-     [](ent_scene_desc& d) {
-         d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
-         d.pinned_ends = 4;
-     },
-     ENT_ERROR_INVALID_ARGUMENT, "pinned_ends"},
-    {"allocate without release", [](ent_scene_desc& d) { d.callbacks = &kAllocateOnly; },
-     ENT_ERROR_INVALID_ARGUMENT, "release"},
-    {"callbacks struct_size 0", [](ent_scene_desc& d) { d.callbacks = &kZeroSizeCallbacks; }, ENT_ERROR_VERSION,
-     "struct_size"},
-};
+std::string deeply_nested(std::size_t depth, bool closed) {
+    return std::string(depth, '[') + (closed ? std::string(depth, ']') : std::string());
+}
 
-TEST(BadInputs, SceneCreateRejectsEachBadDescription) {
-    (void)kShortPoints;
-    for (const DescCase& c : kDescCases) {
-        SCOPED_TRACE(c.name);
-        ent_scene_desc desc = small_desc();
-        c.change(desc);
-        ent_scene* out = sentinel();
-        EXPECT_EQ(ent_scene_create(&desc, &out), c.status) << ent_last_error();
-        EXPECT_EQ(out, sentinel()) << "out_scene written on failure";
-        EXPECT_TRUE(contains(ent_last_error(), c.message_part))
-            << "message \"" << ent_last_error() << "\" should name " << c.message_part;
+std::vector<BadInput> table() {
+    using L = const Live&;
+    const ent_status kArg = ENT_ERROR_INVALID_ARGUMENT, kVersion = ENT_ERROR_VERSION, kParse = ENT_ERROR_PARSE,
+                     kScene = ENT_ERROR_INVALID_SCENE;
+    std::vector<BadInput> rows = {
+        // ---- calls without a scene
+        {"ent_version", "(takes no input)", [](L) { return ent_version() == ENT_VERSION ? ENT_OK : ENT_ERROR_INTERNAL; },
+         ENT_OK, nullptr},
+        {"ent_last_error", "(takes no input)", [](L) { return ent_last_error() != nullptr ? ENT_OK : ENT_ERROR_INTERNAL; },
+         ENT_OK, nullptr},
+        {"ent_status_string", "unknown codes -1, 10, INT32_MIN, INT32_MAX",
+         [](L) {
+             for (ent_status s : {-1, 10, INT32_MIN, INT32_MAX})
+                 if (std::string(ent_status_string(s)) != "unknown status") return ENT_ERROR_INTERNAL;
+             return ENT_OK;
+         },
+         ENT_OK, nullptr},
+        {"ent_effect_name", "unknown effects -1, ENT_EFFECT_COUNT, INT32_MIN, INT32_MAX",
+         [](L) {
+             for (int32_t e : {-1, ENT_EFFECT_COUNT, INT32_MIN, INT32_MAX})
+                 if (ent_effect_name(e) != nullptr) return ENT_ERROR_INTERNAL;
+             return ENT_OK;
+         },
+         ENT_OK, nullptr},
+        {"ent_callbacks_init", "callbacks NULL", [](L) { return ent_callbacks_init(nullptr, sizeof(ent_callbacks)); },
+         kArg, "callbacks"},
+        {"ent_scene_desc_init", "desc NULL", [](L) { return ent_scene_desc_init(nullptr, sizeof(ent_scene_desc)); },
+         kArg, "desc"},
+        {"ent_obstacle_desc_init", "desc NULL",
+         [](L) { return ent_obstacle_desc_init(nullptr, sizeof(ent_obstacle_desc)); }, kArg, "desc"},
+        {"ent_skin_desc_init", "desc NULL", [](L) { return ent_skin_desc_init(nullptr, sizeof(ent_skin_desc)); }, kArg,
+         "desc"},
+
+        // ---- ent_scene_create
+        {"ent_scene_create", "desc NULL",
+         [](L) {
+             ent_scene* out = sentinel<ent_scene>();
+             const ent_status status = ent_scene_create(nullptr, &out);
+             EXPECT_EQ(out, sentinel<ent_scene>());
+             return status;
+         },
+         kArg, "desc"},
+        {"ent_scene_create", "out_scene NULL",
+         [](L) {
+             const ent_scene_desc desc = small_desc();
+             return ent_scene_create(&desc, nullptr);
+         },
+         kArg, "out_scene"},
+        {"ent_scene_create", "struct_size 0", create_with([](ent_scene_desc& d) { d.struct_size = 0; }), kVersion,
+         "struct_size"},
+        {"ent_scene_create", "struct_size of a newer header",
+         create_with([](ent_scene_desc& d) { d.struct_size = sizeof(ent_scene_desc) + 8; }), kVersion, "struct_size"},
+        {"ent_scene_create", "struct_size garbage", create_with([](ent_scene_desc& d) { d.struct_size = 0xdeadbeef; }),
+         kVersion, "struct_size"},
+        {"ent_scene_create", "radius_m -1", create_with([](ent_scene_desc& d) { d.radius_m = -1.0; }), kArg, "radius_m"},
+        {"ent_scene_create", "radius_m NaN", create_with([](ent_scene_desc& d) { d.radius_m = kNaN; }), kArg,
+         "radius_m"},
+        {"ent_scene_create", "length_m NaN", create_with([](ent_scene_desc& d) { d.length_m = kNaN; }), kArg,
+         "length_m"},
+        {"ent_scene_create", "length_m Inf", create_with([](ent_scene_desc& d) { d.length_m = kInf; }), kArg,
+         "length_m"},
+        {"ent_scene_create", "length_m 0", create_with([](ent_scene_desc& d) { d.length_m = 0.0; }), kArg, "length_m"},
+        {"ent_scene_create", "length_m DBL_MAX", create_with([](ent_scene_desc& d) { d.length_m = DBL_MAX; }), kArg,
+         "length_m"},
+        {"ent_scene_create", "control_points 0", create_with([](ent_scene_desc& d) { d.control_points = 0; }), kArg,
+         "control_points"},
+        {"ent_scene_create", "control_points 3", create_with([](ent_scene_desc& d) { d.control_points = 3; }), kArg,
+         "control_points"},
+        {"ent_scene_create", "control_points UINT32_MAX (huge)",
+         create_with([](ent_scene_desc& d) { d.control_points = 0xffffffffu; }), kArg, "control_points"},
+        {"ent_scene_create", "linear_density_kg_per_m 0",
+         create_with([](ent_scene_desc& d) { d.linear_density_kg_per_m = 0.0; }), kArg, "linear_density_kg_per_m"},
+        {"ent_scene_create", "stretch_stiffness_N NaN",
+         create_with([](ent_scene_desc& d) { d.stretch_stiffness_N = kNaN; }), kArg, "stretch_stiffness_N"},
+        {"ent_scene_create", "bend_stiffness_N_m2 -1",
+         create_with([](ent_scene_desc& d) { d.bend_stiffness_N_m2 = -1.0; }), kArg, "bend_stiffness_N_m2"},
+        {"ent_scene_create", "shape 9", create_with([](ent_scene_desc& d) { d.shape = 9; }), kArg, "shape"},
+        {"ent_scene_create", "shape -1", create_with([](ent_scene_desc& d) { d.shape = -1; }), kArg, "shape"},
+        {"ent_scene_create", "shape_direction zero",
+         create_with([](ent_scene_desc& d) {
+             d.shape = ENT_SHAPE_LINE;
+             d.shape_direction[0] = d.shape_direction[1] = d.shape_direction[2] = 0.0;
+         }),
+         kArg, "shape_direction"},
+        {"ent_scene_create", "shape_direction Inf",
+         create_with([](ent_scene_desc& d) {
+             d.shape = ENT_SHAPE_LINE;
+             d.shape_direction[1] = kInf;
+         }),
+         kArg, "shape_direction"},
+        {"ent_scene_create", "shape_center_m NaN", create_with([](ent_scene_desc& d) { d.shape_center_m[2] = kNaN; }),
+         kArg, "shape_center_m"},
+        {"ent_scene_create", "shape_helix_pitch_m below 2 R",
+         create_with([](ent_scene_desc& d) { d.shape_helix_pitch_m = 0.001; }), kArg, "shape_helix_pitch_m"},
+        {"ent_scene_create", "shape_points_xyz_m NULL",
+         create_with([](ent_scene_desc& d) {
+             d.shape = ENT_SHAPE_POINTS;
+             d.shape_points_xyz_m = nullptr;
+         }),
+         kArg, "shape_points_xyz_m"},
+        {"ent_scene_create", "shape_points_xyz_m with a NaN",
+         create_with([](ent_scene_desc& d) {
+             d.shape = ENT_SHAPE_POINTS;
+             d.shape_points_xyz_m = points_with_nan();
+         }),
+         kArg, "shape_points_xyz_m"},
+        {"ent_scene_create", "integrator 3", create_with([](ent_scene_desc& d) { d.integrator = 3; }), kArg,
+         "integrator"},
+        {"ent_scene_create", "integrator -1", create_with([](ent_scene_desc& d) { d.integrator = -1; }), kArg,
+         "integrator"},
+        {"ent_scene_create", "timestep_s 0", create_with([](ent_scene_desc& d) { d.timestep_s = 0.0; }), kArg,
+         "timestep_s"},
+        {"ent_scene_create", "timestep_s NaN", create_with([](ent_scene_desc& d) { d.timestep_s = kNaN; }), kArg,
+         "timestep_s"},
+        {"ent_scene_create", "timestep_s -1", create_with([](ent_scene_desc& d) { d.timestep_s = -1.0; }), kArg,
+         "timestep_s"},
+        {"ent_scene_create", "timestep_s 1e300 (absurd)", create_with([](ent_scene_desc& d) { d.timestep_s = 1e300; }),
+         kArg, "timestep_s"},
+        {"ent_scene_create", "max_substeps 0", create_with([](ent_scene_desc& d) { d.max_substeps = 0; }), kArg,
+         "max_substeps"},
+        {"ent_scene_create", "max_subdivisions UINT32_MAX",
+         create_with([](ent_scene_desc& d) { d.max_subdivisions = 0xffffffffu; }), kArg, "max_subdivisions"},
+        {"ent_scene_create", "max_speed_m_per_s 0", create_with([](ent_scene_desc& d) { d.max_speed_m_per_s = 0.0; }),
+         kArg, "max_speed_m_per_s"},
+        {"ent_scene_create", "gravity_m_per_s2 NaN",
+         create_with([](ent_scene_desc& d) { d.gravity_m_per_s2[1] = kNaN; }), kArg, "gravity_m_per_s2"},
+        {"ent_scene_create", "drag_N_s_per_m2 -1", create_with([](ent_scene_desc& d) { d.drag_N_s_per_m2 = -1.0; }),
+         kArg, "drag_N_s_per_m2"},
+        {"ent_scene_create", "effects with an unknown bit", create_with([](ent_scene_desc& d) { d.effects |= 1u << 31; }),
+         kArg, "effects"},
+        {"ent_scene_create", "mesentery_attachments 0",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_attachments = 0;
+         }),
+         kArg, "mesentery_attachments"},
+        {"ent_scene_create", "mesentery_stiffness_N_per_m Inf",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_stiffness_N_per_m = kInf;
+         }),
+         kArg, "mesentery_stiffness_N_per_m"},
+        {"ent_scene_create", "pinned_points index out of range",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_points = kPinnedTooFar;
+             d.pinned_point_count = 1;
+         }),
+         kArg, "pinned_points"},
+        {"ent_scene_create", "pinned_points NULL with a count",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_points = nullptr;
+             d.pinned_point_count = 2;
+         }),
+         kArg, "pinned_points"},
+        {"ent_scene_create", "pinned_point_count UINT32_MAX (huge)",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_points = kPinnedTooFar;
+             d.pinned_point_count = 0xffffffffu;
+         }),
+         kArg, "pinned_point_count"},
+        {"ent_scene_create", "pinned_ends 4",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_ends = 4;
+         }),
+         kArg, "pinned_ends"},
+        {"ent_scene_create", "collision_sphere_spacing_m above R",
+         create_with([](ent_scene_desc& d) { d.collision_sphere_spacing_m = 1.0; }), kArg,
+         "collision_sphere_spacing_m"},
+        {"ent_scene_create", "contact_stiffness_N_per_m NaN",
+         create_with([](ent_scene_desc& d) { d.contact_stiffness_N_per_m = kNaN; }), kArg,
+         "contact_stiffness_N_per_m"},
+        {"ent_scene_create", "contact_slip_speed_m_per_s 0",
+         create_with([](ent_scene_desc& d) { d.contact_slip_speed_m_per_s = 0.0; }), kArg,
+         "contact_slip_speed_m_per_s"},
+        {"ent_scene_create", "callbacks allocate without release",
+         create_with([](ent_scene_desc& d) { d.callbacks = &kAllocateOnly; }), kArg, "release"},
+        {"ent_scene_create", "callbacks struct_size 0",
+         create_with([](ent_scene_desc& d) { d.callbacks = &kZeroSizeCallbacks; }), kVersion, "struct_size"},
+
+        // ---- ent_scene_create_json / _with
+        {"ent_scene_create_json", "json NULL",
+         [](L) {
+             ent_scene* out = sentinel<ent_scene>();
+             const ent_status status = ent_scene_create_json(nullptr, 5, &out);
+             EXPECT_EQ(out, sentinel<ent_scene>());
+             return status;
+         },
+         kArg, "json"},
+        {"ent_scene_create_json", "out_scene NULL", [](L) { return ent_scene_create_json("{}", 2, nullptr); }, kArg,
+         "out_scene"},
+        {"ent_scene_create_json", "empty text", json(""), kParse, "byte"},
+        {"ent_scene_create_json", "unterminated object", json("{"), kParse, "byte"},
+        {"ent_scene_create_json", "trailing garbage", json("{} x"), kParse, "byte"},
+        {"ent_scene_create_json", "a number too large for a double", json(R"({"gravity": [0, 0, 1e400]})"), kParse,
+         "1e400"},
+        {"ent_scene_create_json", "NaN literal", json(R"({"gravity": [0, 0, NaN]})"), kParse, "byte"},
+        {"ent_scene_create_json", "not an object", json("[1, 2]"), kScene, "object"},
+        {"ent_scene_create_json", "unknown top-level key", json(R"({"intestnie": {}})"), kScene, "intestnie"},
+        {"ent_scene_create_json", "unknown nested key", json(R"({"intestine": {"lenght": 1.0}})"), kScene, "lenght"},
+        {"ent_scene_create_json", "wrong type (string for a number)", json(R"({"intestine": {"radius": "big"}})"),
+         kScene, "intestine.radius"},
+        {"ent_scene_create_json", "wrong type (number for an object)", json(R"({"solver": 3})"), kScene, "solver"},
+        {"ent_scene_create_json", "wrong type (float for an integer)",
+         json(R"({"intestine": {"control_points": 10.5}})"), kScene, "intestine.control_points"},
+        {"ent_scene_create_json", "negative length", json(R"({"intestine": {"length": -1}})"), kScene,
+         "intestine.length"},
+        {"ent_scene_create_json", "control_points 2", json(R"({"intestine": {"control_points": 2}})"), kScene,
+         "intestine.control_points"},
+        {"ent_scene_create_json", "control_points 1e12 (huge)", json(R"({"intestine": {"control_points": 1000000000000}})"),
+         kScene, "intestine.control_points"},
+        {"ent_scene_create_json", "unknown integrator", json(R"({"solver": {"integrator": "rk5"}})"), kScene,
+         "solver.integrator"},
+        {"ent_scene_create_json", "timestep 0", json(R"({"solver": {"timestep": 0}})"), kScene, "solver.timestep"},
+        {"ent_scene_create_json", "timestep 1e300 (absurd)", json(R"({"solver": {"timestep": 1e300}})"), kScene,
+         "solver.timestep"},
+        {"ent_scene_create_json", "gravity of two numbers", json(R"({"gravity": [0, -9.81]})"), kScene, "gravity"},
+        {"ent_scene_create_json", "duplicate key", json(R"({"intestine": {"radius": 0.01, "radius": 0.02}})"), kScene,
+         "radius"},
+        {"ent_scene_create_json", "obstacle of an unknown type", json(R"({"environment": [{"type": "cube"}]})"), kScene,
+         "environment[0].type"},
+        {"ent_scene_create_json", "obstacle key of another type",
+         json(R"({"environment": [{"type": "box_inside", "half_extents": [1, 1, 1], "radius": 1}]})"), kScene,
+         "radius"},
+        // Nested deeper than any recursive parser's stack would hold.
+        {"ent_scene_create_json", "arrays nested 131072 deep", json(deeply_nested(1 << 17, true)), kScene, "object"},
+        {"ent_scene_create_json", "arrays nested 131072 deep, unclosed", json(deeply_nested(1 << 17, false)), kParse,
+         "byte"},
+        {"ent_scene_create_json", "a 1 MB key", json("{\"" + std::string(1 << 20, 'k') + "\": 1}"), kScene,
+         "unknown key"},
+        {"ent_scene_create_json_with", "callbacks struct_size 0",
+         [](L) {
+             ent_scene* out = sentinel<ent_scene>();
+             const ent_status status = ent_scene_create_json_with("{}", 2, &kZeroSizeCallbacks, &out);
+             EXPECT_EQ(out, sentinel<ent_scene>());
+             return status;
+         },
+         kVersion, "struct_size"},
+        {"ent_scene_create_json_with", "callbacks allocate without release",
+         [](L) {
+             ent_scene* out = sentinel<ent_scene>();
+             const ent_status status = ent_scene_create_json_with("{}", 2, &kAllocateOnly, &out);
+             EXPECT_EQ(out, sentinel<ent_scene>());
+             return status;
+         },
+         kArg, "release"},
+        {"ent_scene_create_json_with", "json NULL and out_scene NULL",
+         [](L) { return ent_scene_create_json_with(nullptr, 2, nullptr, nullptr); }, kArg, "json"},
+        {"ent_scene_destroy", "scene NULL (ignored)",
+         [](L) {
+             ent_scene_destroy(nullptr);
+             return ENT_OK;
+         },
+         ENT_OK, nullptr},
+
+        // ---- ent_scene_step
+        {"ent_scene_step", "scene NULL", [](L) { return ent_scene_step(nullptr, 1e-3); }, kArg, "scene"},
+        {"ent_scene_step", "dt_s 0", [](L l) { return ent_scene_step(l.scene, 0.0); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s -1", [](L l) { return ent_scene_step(l.scene, -1.0); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s -0", [](L l) { return ent_scene_step(l.scene, -0.0); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s -DBL_MIN", [](L l) { return ent_scene_step(l.scene, -DBL_MIN); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s NaN", [](L l) { return ent_scene_step(l.scene, kNaN); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s Inf", [](L l) { return ent_scene_step(l.scene, kInf); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s -Inf", [](L l) { return ent_scene_step(l.scene, -kInf); }, kArg, "dt_s"},
+        {"ent_scene_step", "dt_s 1e9 (absurd: more than max_substeps)", [](L l) { return ent_scene_step(l.scene, 1e9); },
+         kArg, "max_substeps"},
+        {"ent_scene_step", "dt_s DBL_MAX", [](L l) { return ent_scene_step(l.scene, DBL_MAX); }, kArg, "max_substeps"},
+        {"ent_scene_step", "dt_s just over max_substeps x timestep",
+         [](L l) { return ent_scene_step(l.scene, 1000 * 1e-3 * 1.01); }, kArg, "max_substeps"},
+
+        // ---- queries
+        {"ent_scene_axis", "scene NULL",
+         [](L) {
+             double b[6];
+             return ent_scene_axis(nullptr, 2, b);
+         },
+         kArg, "scene"},
+        {"ent_scene_axis", "count 0",
+         [](L l) {
+             double b[6];
+             return ent_scene_axis(l.scene, 0, b);
+         },
+         kArg, "count"},
+        {"ent_scene_axis", "count 1",
+         [](L l) {
+             double b[6];
+             return ent_scene_axis(l.scene, 1, b);
+         },
+         kArg, "count"},
+        {"ent_scene_axis", "points_xyz_m NULL", [](L l) { return ent_scene_axis(l.scene, 10, nullptr); }, kArg,
+         "points_xyz_m"},
+        {"ent_scene_control_points", "scene NULL",
+         [](L) {
+             double b[3];
+             uint32_t count = 77;
+             const ent_status status = ent_scene_control_points(nullptr, 1, b, &count);
+             EXPECT_EQ(count, 77u);
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_scene_control_points", "out_count NULL",
+         [](L l) {
+             double b[3 * 12];
+             return ent_scene_control_points(l.scene, 12, b, nullptr);
+         },
+         kArg, "out_count"},
+        {"ent_scene_control_points", "capacity too small",
+         [](L l) {
+             std::vector<double> b(3 * 12, -7.0);
+             uint32_t count = 0;
+             const ent_status status = ent_scene_control_points(l.scene, 11, b.data(), &count);
+             EXPECT_EQ(count, 12u) << "the needed count is reported";
+             for (double v : b) EXPECT_EQ(v, -7.0) << "nothing copied";
+             return status;
+         },
+         ENT_ERROR_BUFFER_TOO_SMALL, "capacity"},
+        {"ent_scene_stats", "scene NULL",
+         [](L) {
+             ent_stats s;
+             s.struct_size = sizeof s;
+             return ent_scene_stats(nullptr, &s);
+         },
+         kArg, "scene"},
+        {"ent_scene_stats", "out NULL", [](L l) { return ent_scene_stats(l.scene, nullptr); }, kArg, "out"},
+        {"ent_scene_effect_stats", "scene NULL",
+         [](L) {
+             ent_effect_stats s;
+             s.struct_size = sizeof s;
+             return ent_scene_effect_stats(nullptr, 0, &s);
+         },
+         kArg, "scene"},
+        {"ent_scene_effect_stats", "out NULL", [](L l) { return ent_scene_effect_stats(l.scene, 0, nullptr); }, kArg,
+         "out"},
+
+        // ---- ent_scene_add_obstacle
+        {"ent_scene_add_obstacle", "scene NULL",
+         [](L) {
+             ent_obstacle_desc d;
+             ent_obstacle_desc_default(&d);
+             return ent_scene_add_obstacle(nullptr, &d, nullptr);
+         },
+         kArg, "scene"},
+        {"ent_scene_add_obstacle", "desc NULL", [](L l) { return ent_scene_add_obstacle(l.scene, nullptr, nullptr); },
+         kArg, "desc"},
+        {"ent_scene_add_obstacle", "kind 9", obstacle_with([](ent_obstacle_desc& d) { d.kind = 9; }), kArg, "kind"},
+        {"ent_scene_add_obstacle", "kind -1", obstacle_with([](ent_obstacle_desc& d) { d.kind = -1; }), kArg, "kind"},
+        {"ent_scene_add_obstacle", "box half_extents_m 0",
+         obstacle_with([](ent_obstacle_desc& d) { d.half_extents_m[1] = 0.0; }), kArg, "half_extents"},
+        {"ent_scene_add_obstacle", "box half_extents_m Inf",
+         obstacle_with([](ent_obstacle_desc& d) { d.half_extents_m[0] = kInf; }), kArg, "half_extents"},
+        {"ent_scene_add_obstacle", "box center_m NaN", obstacle_with([](ent_obstacle_desc& d) { d.center_m[2] = kNaN; }),
+         kArg, "center"},
+        {"ent_scene_add_obstacle", "plane normal zero",
+         obstacle_with([](ent_obstacle_desc& d) {
+             d.kind = ENT_OBSTACLE_PLANE;
+             d.normal[2] = 0.0;
+         }),
+         kArg, "normal"},
+        {"ent_scene_add_obstacle", "plane normal 1e300 (length overflows)",
+         obstacle_with([](ent_obstacle_desc& d) {
+             d.kind = ENT_OBSTACLE_PLANE;
+             d.normal[2] = 1e300;
+         }),
+         kArg, "normal"},
+        {"ent_scene_add_obstacle", "sphere radius_m -1",
+         obstacle_with([](ent_obstacle_desc& d) {
+             d.kind = ENT_OBSTACLE_SPHERE;
+             d.radius_m = -1.0;
+         }),
+         kArg, "radius"},
+        {"ent_scene_add_obstacle", "sphere radius_m NaN",
+         obstacle_with([](ent_obstacle_desc& d) {
+             d.kind = ENT_OBSTACLE_SPHERE;
+             d.radius_m = kNaN;
+         }),
+         kArg, "radius"},
+        {"ent_scene_add_obstacle", "capsule end_m -Inf",
+         obstacle_with([](ent_obstacle_desc& d) {
+             d.kind = ENT_OBSTACLE_CAPSULE;
+             d.end_m[0] = -kInf;
+         }),
+         kArg, "end"},
+
+        // ---- skins
+        {"ent_skin_create", "scene NULL",
+         [](L) {
+             ent_skin_desc d;
+             ent_skin_desc_default(&d);
+             ent_skin* out = sentinel<ent_skin>();
+             const ent_status status = ent_skin_create(nullptr, &d, &out);
+             EXPECT_EQ(out, sentinel<ent_skin>());
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_skin_create", "desc NULL",
+         [](L l) {
+             ent_skin* out = sentinel<ent_skin>();
+             return ent_skin_create(l.scene, nullptr, &out);
+         },
+         kArg, "desc"},
+        {"ent_skin_create", "out_skin NULL",
+         [](L l) {
+             ent_skin_desc d;
+             ent_skin_desc_default(&d);
+             return ent_skin_create(l.scene, &d, nullptr);
+         },
+         kArg, "out_skin"},
+        {"ent_skin_create", "method 3", skin_with([](ent_skin_desc& d) { d.method = 3; }), kArg, "method"},
+        {"ent_skin_create", "method -1", skin_with([](ent_skin_desc& d) { d.method = -1; }), kArg, "method"},
+        {"ent_skin_create", "segments 2", skin_with([](ent_skin_desc& d) { d.segments = 2; }), kArg, "segments"},
+        {"ent_skin_create", "segments UINT32_MAX (huge)", skin_with([](ent_skin_desc& d) { d.segments = 0xffffffffu; }),
+         kArg, "segments"},
+        {"ent_skin_create", "ring_spacing_radii NaN", skin_with([](ent_skin_desc& d) { d.ring_spacing_radii = kNaN; }),
+         kArg, "ring_spacing_radii"},
+        {"ent_skin_create", "ring_spacing_radii 0", skin_with([](ent_skin_desc& d) { d.ring_spacing_radii = 0.0; }),
+         kArg, "ring_spacing_radii"},
+        {"ent_skin_create", "cap_rings 65", skin_with([](ent_skin_desc& d) { d.cap_rings = 65; }), kArg, "cap_rings"},
+        {"ent_skin_create", "skeleton_spacing_radii -Inf",
+         skin_with([](ent_skin_desc& d) { d.skeleton_spacing_radii = -kInf; }), kArg, "skeleton_spacing_radii"},
+        {"ent_skin_create", "voxel_size_radii NaN", skin_with([](ent_skin_desc& d) { d.voxel_size_radii = kNaN; }),
+         kArg, "voxel_size_radii"},
+        {"ent_skin_create", "window_radii 2 (must stay below 2 R)",
+         skin_with([](ent_skin_desc& d) { d.window_radii = 2.0; }), kArg, "window_radii"},
+        {"ent_skin_update", "skin NULL", [](L) { return ent_skin_update(nullptr); }, kArg, "skin"},
+        {"ent_skin_mesh", "skin NULL",
+         [](L) {
+             ent_mesh_view v;
+             v.struct_size = sizeof v;
+             return ent_skin_mesh(nullptr, &v);
+         },
+         kArg, "skin"},
+        {"ent_skin_mesh", "out NULL", [](L l) { return ent_skin_mesh(l.skin, nullptr); }, kArg, "out"},
+        {"ent_skin_metrics", "skin NULL",
+         [](L) {
+             struct ent_skin_metrics m;
+             m.struct_size = sizeof m;
+             return ent_skin_metrics(nullptr, &m);
+         },
+         kArg, "skin"},
+        {"ent_skin_metrics", "out NULL", [](L l) { return ent_skin_metrics(l.skin, nullptr); }, kArg, "out"},
+        {"ent_skin_destroy", "skin NULL (ignored)",
+         [](L) {
+             ent_skin_destroy(nullptr);
+             return ENT_OK;
+         },
+         ENT_OK, nullptr},
+
+        // ---- tools
+        {"ent_tool_desc_init", "desc NULL", [](L) { return ent_tool_desc_init(nullptr, sizeof(ent_tool_desc)); }, kArg,
+         "desc"},
+        {"ent_tool_add", "scene NULL",
+         [](L) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             return ent_tool_add(nullptr, &d, nullptr);
+         },
+         kArg, "scene"},
+        {"ent_tool_add", "desc NULL", [](L l) { return ent_tool_add(l.scene, nullptr, nullptr); }, kArg, "desc"},
+        {"ent_tool_add", "radius_m NaN", tool_with([](ent_tool_desc& d) { d.radius_m = kNaN; }), kArg, "radius_m"},
+        {"ent_tool_add", "radius_m 0", tool_with([](ent_tool_desc& d) { d.radius_m = 0.0; }), kArg, "radius_m"},
+        {"ent_tool_add", "radius_m 1e200 (huge; its contacts' energy overflowed)",
+         tool_with([](ent_tool_desc& d) { d.radius_m = 1e200; }), kArg, "radius_m"},
+        {"ent_tool_add", "length_m -1", tool_with([](ent_tool_desc& d) { d.length_m = -1.0; }), kArg, "length_m"},
+        {"ent_tool_add", "length_m 1e300 (huge)", tool_with([](ent_tool_desc& d) { d.length_m = 1e300; }), kArg,
+         "length_m"},
+        {"ent_tool_add", "grasp_margin_m DBL_MAX (huge)", tool_with([](ent_tool_desc& d) { d.grasp_margin_m = DBL_MAX; }),
+         kArg, "grasp_margin_m"},
+        {"ent_tool_add", "max_force_N 0", tool_with([](ent_tool_desc& d) { d.max_force_N = 0.0; }), kArg,
+         "max_force_N"},
+        {"ent_tool_add", "max_force_N Inf", tool_with([](ent_tool_desc& d) { d.max_force_N = kInf; }), kArg,
+         "max_force_N"},
+        {"ent_tool_add", "grasp_margin_m -1", tool_with([](ent_tool_desc& d) { d.grasp_margin_m = -1.0; }), kArg,
+         "grasp_margin_m"},
+        {"ent_tool_add", "grasp_stiffness_N_per_m 0",
+         tool_with([](ent_tool_desc& d) { d.grasp_stiffness_N_per_m = 0.0; }), kArg, "grasp_stiffness_N_per_m"},
+        {"ent_tool_add", "grasp_damping_N_s_per_m NaN",
+         tool_with([](ent_tool_desc& d) { d.grasp_damping_N_s_per_m = kNaN; }), kArg, "grasp_damping_N_s_per_m"},
+        {"ent_tool_add", "position_m -Inf", tool_with([](ent_tool_desc& d) { d.position_m[1] = -kInf; }), kArg,
+         "position_m"},
+        {"ent_tool_add", "orientation_wxyz zero",
+         tool_with([](ent_tool_desc& d) { d.orientation_wxyz[0] = 0.0; }), kArg, "orientation_wxyz"},
+        {"ent_tool_add", "orientation_wxyz NaN", tool_with([](ent_tool_desc& d) { d.orientation_wxyz[2] = kNaN; }),
+         kArg, "orientation_wxyz"},
+        {"ent_tool_set_pose", "scene NULL",
+         [](L) {
+             const double p[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+             return ent_tool_set_pose(nullptr, 0, p, q);
+         },
+         kArg, "scene"},
+        {"ent_tool_set_pose", "position_m NULL",
+         [](L l) {
+             const double q[4] = {1, 0, 0, 0};
+             return ent_tool_set_pose(l.scene, l.tool, nullptr, q);
+         },
+         kArg, "position_m"},
+        {"ent_tool_set_pose", "orientation_wxyz NULL",
+         [](L l) {
+             const double p[3] = {0, 0, 0};
+             return ent_tool_set_pose(l.scene, l.tool, p, nullptr);
+         },
+         kArg, "orientation_wxyz"},
+        {"ent_tool_set_pose", "unknown tool 99",
+         [](L l) {
+             const double p[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+             return ent_tool_set_pose(l.scene, 99, p, q);
+         },
+         ENT_ERROR_NOT_FOUND, "tool 99"},
+        {"ent_tool_set_pose", "position_m NaN", pose_with([](double* p, double*) { p[0] = kNaN; }), kArg,
+         "position_m"},
+        {"ent_tool_set_pose", "position_m Inf", pose_with([](double* p, double*) { p[2] = kInf; }), kArg,
+         "position_m"},
+        {"ent_tool_set_pose", "orientation_wxyz zero", pose_with([](double*, double* q) { q[0] = 0.0; }), kArg,
+         "orientation_wxyz"},
+        {"ent_tool_set_pose", "orientation_wxyz Inf", pose_with([](double*, double* q) { q[3] = kInf; }), kArg,
+         "orientation_wxyz"},
+        {"ent_tool_set_pose", "orientation_wxyz 1e-300 (norm underflows)",
+         pose_with([](double*, double* q) { q[0] = 1e-300; }), kArg, "orientation_wxyz"},
+        {"ent_tool_wrench", "scene NULL",
+         [](L) {
+             double f[3], t[3];
+             return ent_tool_wrench(nullptr, 0, f, t);
+         },
+         kArg, "scene"},
+        {"ent_tool_wrench", "force_N NULL",
+         [](L l) {
+             double t[3];
+             return ent_tool_wrench(l.scene, l.tool, nullptr, t);
+         },
+         kArg, "force_N"},
+        {"ent_tool_wrench", "torque_Nm NULL",
+         [](L l) {
+             double f[3];
+             return ent_tool_wrench(l.scene, l.tool, f, nullptr);
+         },
+         kArg, "torque_Nm"},
+        {"ent_tool_wrench", "unknown tool -1",
+         [](L l) {
+             double f[3] = {7, 7, 7}, t[3] = {7, 7, 7};
+             const ent_status status = ent_tool_wrench(l.scene, -1, f, t);
+             EXPECT_EQ(f[0], 7.0) << "force_N written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool -1"},
+        {"ent_tool_grasp", "scene NULL", [](L) { return ent_tool_grasp(nullptr, 0); }, kArg, "scene"},
+        {"ent_tool_grasp", "unknown tool INT32_MAX", [](L l) { return ent_tool_grasp(l.scene, INT32_MAX); },
+         ENT_ERROR_NOT_FOUND, "tool"},
+        {"ent_tool_release", "scene NULL", [](L) { return ent_tool_release(nullptr, 0); }, kArg, "scene"},
+        {"ent_tool_release", "unknown tool INT32_MIN", [](L l) { return ent_tool_release(l.scene, INT32_MIN); },
+         ENT_ERROR_NOT_FOUND, "tool"},
+        {"ent_tool_state", "scene NULL",
+         [](L) {
+             int32_t g = 7;
+             const ent_status status = ent_tool_state(nullptr, 0, &g);
+             EXPECT_EQ(g, 7);
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_tool_state", "out_grasping NULL", [](L l) { return ent_tool_state(l.scene, l.tool, nullptr); }, kArg,
+         "out_grasping"},
+        {"ent_tool_state", "unknown tool 1",
+         [](L l) {
+             int32_t g = 7;
+             const ent_status status = ent_tool_state(l.scene, l.tool + 1, &g);
+             EXPECT_EQ(g, 7);
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+    };
+
+    // Every struct that carries a struct_size, with each size no release has.
+    for (uint32_t size : kSizes) {
+        const std::string s = std::to_string(size);
+        auto add = [&](const char* function, std::function<ent_status(const Live&)> call) {
+            rows.push_back({function, "struct_size " + s, std::move(call), kVersion, "struct_size"});
+        };
+        add("ent_callbacks_init", init_with_size(&ent_callbacks_init, size));
+        add("ent_scene_desc_init", init_with_size(&ent_scene_desc_init, size));
+        add("ent_obstacle_desc_init", init_with_size(&ent_obstacle_desc_init, size));
+        add("ent_skin_desc_init", init_with_size(&ent_skin_desc_init, size));
+        add("ent_scene_stats",
+            out_struct_with_size<ent_stats>(size, [](L l, ent_stats* s) { return ent_scene_stats(l.scene, s); }));
+        add("ent_scene_effect_stats", out_struct_with_size<ent_effect_stats>(size, [](L l, ent_effect_stats* s) {
+                return ent_scene_effect_stats(l.scene, ENT_EFFECT_GRAVITY, s);
+            }));
+        add("ent_skin_mesh",
+            out_struct_with_size<ent_mesh_view>(size, [](L l, ent_mesh_view* v) { return ent_skin_mesh(l.skin, v); }));
+        add("ent_skin_metrics", out_struct_with_size<struct ent_skin_metrics>(
+                                    size, [](L l, struct ent_skin_metrics* m) { return ent_skin_metrics(l.skin, m); }));
+        add("ent_scene_add_obstacle", obstacle_with([size](ent_obstacle_desc& d) { d.struct_size = size; }));
+        add("ent_skin_create", skin_with([size](ent_skin_desc& d) { d.struct_size = size; }));
+        add("ent_tool_desc_init", init_with_size(&ent_tool_desc_init, size));
+        add("ent_tool_add", tool_with([size](ent_tool_desc& d) { d.struct_size = size; }));
+    }
+    for (int32_t effect : {-1, ENT_EFFECT_COUNT, INT32_MAX}) {
+        rows.push_back({"ent_scene_effect_stats", "an effect this library does not know",
+                        [effect](L l) {
+                            ent_effect_stats s;
+                            s.struct_size = sizeof s;
+                            return ent_scene_effect_stats(l.scene, effect, &s);
+                        },
+                        ENT_ERROR_NOT_FOUND, "effect"});
+    }
+    return rows;
+}
+
+void run_table(int32_t integrator) {
+    // Twin scenes driven identically, except that `tried` also receives every bad call.
+    ScenePtr tried = create(moving_desc(integrator));
+    ScenePtr twin = create(moving_desc(integrator));
+    ASSERT_TRUE(tried && twin);
+    // A tool resting on the bowel's first control point, grasping it.
+    const std::vector<double> q = control_points(tried.get());
+    ent_tool_desc tool_desc;
+    ent_tool_desc_default(&tool_desc);
+    for (int c = 0; c < 3; ++c) tool_desc.position_m[c] = q[c];
+    tool_desc.position_m[2] += 0.015;
+    int32_t tool = -1;
+    for (ent_scene* scene : {tried.get(), twin.get()}) {
+        ASSERT_EQ(ent_tool_add(scene, &tool_desc, &tool), ENT_OK) << ent_last_error();
+        ASSERT_EQ(ent_tool_grasp(scene, tool), ENT_OK) << ent_last_error();
+    }
+    ASSERT_TRUE(step_n(tried.get(), 1e-3, 20));
+    ASSERT_TRUE(step_n(twin.get(), 1e-3, 20));
+    ASSERT_GT(stats(tried.get()).kinetic_energy_J, 0.0) << "the scene must be moving";
+    ent_skin_desc skin_desc;
+    ent_skin_desc_default(&skin_desc);
+    ent_skin* skin_raw = nullptr;
+    ASSERT_EQ(ent_skin_create(tried.get(), &skin_desc, &skin_raw), ENT_OK) << ent_last_error();
+    SkinPtr skin(skin_raw);
+    ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
+    const Live live{tried.get(), skin.get(), tool};
+    int32_t grasping = 0;
+    ASSERT_EQ(ent_tool_state(tried.get(), tool, &grasping), ENT_OK);
+    EXPECT_EQ(grasping, 1) << "the tool should hold the bowel";
+
+    for (const BadInput& row : table()) {
+        SCOPED_TRACE(std::string(row.function) + ": " + row.input);
+        const Observed before = observe(live);
+        const ent_status status = row.call(live);
+        EXPECT_EQ(status, row.status) << ent_last_error();
+        if (row.message_part != nullptr) {
+            EXPECT_TRUE(contains(ent_last_error(), row.message_part))
+                << "message \"" << ent_last_error() << "\" should name " << row.message_part;
+        }
+        EXPECT_TRUE(unchanged(before, observe(live)));
+    }
+    // The hidden state (velocities) is untouched too: the next steps agree bit for bit.
+    ASSERT_TRUE(step_n(tried.get(), 1e-3, 5));
+    ASSERT_TRUE(step_n(twin.get(), 1e-3, 5));
+    const auto a = control_points(tried.get());
+    const auto b = control_points(twin.get());
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_TRUE(same_bits(a.data(), b.data(), a.size() * sizeof(double)));
+    const ent_stats sa = stats(tried.get()), sb = stats(twin.get());
+    EXPECT_TRUE(same_bits(&sa.kinetic_energy_J, &sb.kinetic_energy_J, sizeof(double)));
+    EXPECT_EQ(sa.steps, sb.steps);
+}
+
+TEST(BadInputs, EveryRowFailsCleanlyAndChangesNothing) {
+    for (int32_t integrator : kIntegrators) {
+        SCOPED_TRACE(integrator_name(integrator));
+        run_table(integrator);
     }
 }
 
-TEST(BadInputs, TheSmallDescriptionItselfIsFine) {
-    // Guards the table above: each case fails because of its one change.
-    ent_scene_desc desc = small_desc();
-    ScenePtr scene = create(desc);
-    EXPECT_TRUE(scene);
+TEST(BadInputs, EveryExportedFunctionHasRows) {
+    std::ifstream exports(ENTERON_EXPORTS_FILE);
+    ASSERT_TRUE(exports) << "no export list at " << ENTERON_EXPORTS_FILE;
+    std::set<std::string> exported;
+    for (std::string name; std::getline(exports, name);)
+        if (!name.empty()) exported.insert(name);
+    ASSERT_GT(exported.size(), 10u) << "the export list looks wrong";
+    std::set<std::string> covered;
+    for (const BadInput& row : table()) covered.insert(row.function);
+    for (const std::string& name : exported)
+        EXPECT_TRUE(covered.count(name)) << name << " is exported but has no row in the bad-input table";
+    for (const std::string& name : covered)
+        EXPECT_TRUE(exported.count(name)) << name << " has rows but is not exported";
 }
+
+TEST(BadInputs, TheBaseDescriptionsAreFine) {
+    // Guards the table: each ent_scene_create row fails because of its one change.
+    EXPECT_TRUE(create(small_desc()));
+    ent_scene* scene = nullptr;
+    ASSERT_EQ(ent_scene_create_json("{}", 2, &scene), ENT_OK) << ent_last_error();
+    ent_scene_destroy(scene);
+}
+
+// ---- exact messages and behaviours the table cannot express ------------------------------------
 
 TEST(BadInputs, RadiusMessageNamesTheFieldAndTheValue) {
     ent_scene_desc desc = small_desc();
     desc.radius_m = -1.0;
-    ent_scene* out = sentinel();
+    ent_scene* out = sentinel<ent_scene>();
     ASSERT_EQ(ent_scene_create(&desc, &out), ENT_ERROR_INVALID_ARGUMENT);
     EXPECT_STREQ(ent_last_error(), "radius_m must be > 0, got -1");
 }
 
-TEST(BadInputs, NullDescOrOutPointer) {
-    ent_scene* out = sentinel();
-    EXPECT_EQ(ent_scene_create(nullptr, &out), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_EQ(out, sentinel());
-    EXPECT_TRUE(contains(ent_last_error(), "desc")) << ent_last_error();
-    ent_scene_desc desc = small_desc();
-    EXPECT_EQ(ent_scene_create(&desc, nullptr), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_TRUE(contains(ent_last_error(), "out_scene")) << ent_last_error();
-}
-
-// ---- ent_scene_create_json -----------------------------------------------------------------
-
-struct JsonCase {
-    const char* name;
-    std::string json;
-    ent_status status;
-    const char* message_part;
-};
-
-const JsonCase kJsonCases[] = {
-    {"unterminated object", "{", ENT_ERROR_PARSE, "byte"},
-    {"empty text", "", ENT_ERROR_PARSE, "byte"},
-    {"trailing garbage", "{} x", ENT_ERROR_PARSE, "byte"},
-    {"not an object", "[1, 2]", ENT_ERROR_INVALID_SCENE, "object"},
-    {"unknown top-level key", R"({"intestnie": {}})", ENT_ERROR_INVALID_SCENE, "intestnie"},
-    {"unknown nested key", R"({"intestine": {"lenght": 1.0}})", ENT_ERROR_INVALID_SCENE, "lenght"},
-    {"wrong type", R"({"intestine": {"radius": "big"}})", ENT_ERROR_INVALID_SCENE, "intestine.radius"},
-    {"control points 2", R"({"intestine": {"control_points": 2}})", ENT_ERROR_INVALID_SCENE,
-     "intestine.control_points"},
-    {"unknown integrator", R"({"solver": {"integrator": "rk5"}})", ENT_ERROR_INVALID_SCENE, "solver.integrator"},
-    {"timestep 0", R"({"solver": {"timestep": 0}})", ENT_ERROR_INVALID_SCENE, "solver.timestep"},
-    {"gravity of two numbers", R"({"gravity": [0, -9.81]})", ENT_ERROR_INVALID_SCENE, "gravity"},
-    {"duplicate key", R"({"intestine": {"radius": 0.01, "radius": 0.02}})", ENT_ERROR_INVALID_SCENE, "radius"},
-};
-
-TEST(BadInputs, SceneCreateJsonRejectsEachBadDocument) {
-    for (const JsonCase& c : kJsonCases) {
-        SCOPED_TRACE(c.name);
-        ent_scene* out = sentinel();
-        EXPECT_EQ(ent_scene_create_json(c.json.data(), c.json.size(), &out), c.status) << ent_last_error();
-        EXPECT_EQ(out, sentinel());
-        EXPECT_TRUE(contains(ent_last_error(), c.message_part))
-            << "message \"" << ent_last_error() << "\" should contain " << c.message_part;
-    }
-}
-
 TEST(BadInputs, JsonRadiusMessageIsExact) {
-    const std::string json = R"({"intestine": {"radius": -1}})";
-    ent_scene* out = sentinel();
-    ASSERT_EQ(ent_scene_create_json(json.data(), json.size(), &out), ENT_ERROR_INVALID_SCENE);
+    const std::string text = R"({"intestine": {"radius": -1}})";
+    ent_scene* out = sentinel<ent_scene>();
+    ASSERT_EQ(ent_scene_create_json(text.data(), text.size(), &out), ENT_ERROR_INVALID_SCENE);
     EXPECT_STREQ(ent_last_error(), "intestine.radius must be > 0, got -1");
-    EXPECT_EQ(out, sentinel());
+    EXPECT_EQ(out, sentinel<ent_scene>());
 }
 
 TEST(BadInputs, JsonNeedNotBeNulTerminated) {
@@ -238,200 +961,15 @@ TEST(BadInputs, JsonNeedNotBeNulTerminated) {
     ASSERT_EQ(ent_scene_create_json(buffer.data(), buffer.size() - 1, &scene), ENT_OK) << ent_last_error();
     ent_scene_destroy(scene);
     // ...and a length that cuts the document short is a parse error.
-    ent_scene* out = sentinel();
+    ent_scene* out = sentinel<ent_scene>();
     EXPECT_EQ(ent_scene_create_json(buffer.data(), buffer.size() - 3, &out), ENT_ERROR_PARSE);
-    EXPECT_EQ(out, sentinel());
+    EXPECT_EQ(out, sentinel<ent_scene>());
 }
 
-TEST(BadInputs, JsonNullTextOrOutPointer) {
-    ent_scene* out = sentinel();
-    EXPECT_EQ(ent_scene_create_json(nullptr, 5, &out), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_EQ(out, sentinel());
-    const std::string json = "{}";
-    EXPECT_EQ(ent_scene_create_json(json.data(), json.size(), nullptr), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_EQ(ent_scene_create_json_with(json.data(), json.size(), nullptr, nullptr), ENT_ERROR_INVALID_ARGUMENT);
-}
-
-// ---- calls on NULL scenes ------------------------------------------------------------------
-
-TEST(BadInputs, NullSceneToEveryFunction) {
-    double buffer[30];
-    uint32_t count = 77;
-    ent_stats s;
-    s.struct_size = sizeof s;
-    ent_effect_stats e;
-    e.struct_size = sizeof e;
-    EXPECT_EQ(ent_scene_step(nullptr, 1e-3), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_TRUE(contains(ent_last_error(), "scene")) << ent_last_error();
-    EXPECT_EQ(ent_scene_axis(nullptr, 10, buffer), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_EQ(ent_scene_control_points(nullptr, 10, buffer, &count), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_EQ(count, 77u);
-    EXPECT_EQ(ent_scene_stats(nullptr, &s), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_EQ(ent_scene_effect_stats(nullptr, ENT_EFFECT_GRAVITY, &e), ENT_ERROR_INVALID_ARGUMENT);
-    ent_scene_destroy(nullptr);  // ignored
-}
-
-// ---- failing calls on an existing scene change nothing --------------------------------------
-
-// Everything a caller can observe of a scene.
-struct Observed {
-    std::vector<double> points;
-    ent_stats stats;
-};
-
-Observed observe(const ent_scene* scene) {
-    Observed o;
-    o.points = control_points(scene);
-    o.stats = capi_test::stats(scene);
-    return o;
-}
-
-::testing::AssertionResult unchanged(const Observed& before, const Observed& after) {
-    if (before.points.size() != after.points.size() ||
-        std::memcmp(before.points.data(), after.points.data(), before.points.size() * sizeof(double)) != 0)
-        return ::testing::AssertionFailure() << "control points changed";
-    const ent_stats& a = before.stats;
-    const ent_stats& b = after.stats;
-    if (std::memcmp(&a.time_s, &b.time_s, sizeof a.time_s) != 0) return ::testing::AssertionFailure() << "time_s changed";
-    if (a.steps != b.steps) return ::testing::AssertionFailure() << "steps changed";
-    if (a.substeps != b.substeps) return ::testing::AssertionFailure() << "substeps changed";
-    if (a.rollbacks != b.rollbacks) return ::testing::AssertionFailure() << "rollbacks changed";
-    if (std::memcmp(&a.kinetic_energy_J, &b.kinetic_energy_J, sizeof(double)) != 0)
-        return ::testing::AssertionFailure() << "kinetic energy changed";
-    if (std::memcmp(&a.potential_energy_J, &b.potential_energy_J, sizeof(double)) != 0)
-        return ::testing::AssertionFailure() << "potential energy changed";
-    return ::testing::AssertionSuccess();
-}
-
-struct SceneCallCase {
-    const char* name;
-    std::function<ent_status(ent_scene*)> call;
-    ent_status status;
-    const char* message_part;
-};
-
-std::vector<SceneCallCase> scene_call_cases() {
-    return {
-        {"step dt 0", [](ent_scene* s) { return ent_scene_step(s, 0.0); }, ENT_ERROR_INVALID_ARGUMENT, "dt"},
-        {"step dt -1", [](ent_scene* s) { return ent_scene_step(s, -1.0); }, ENT_ERROR_INVALID_ARGUMENT, "dt"},
-        {"step dt -0", [](ent_scene* s) { return ent_scene_step(s, -0.0); }, ENT_ERROR_INVALID_ARGUMENT, "dt"},
-        {"step dt NaN", [](ent_scene* s) { return ent_scene_step(s, kNaN); }, ENT_ERROR_INVALID_ARGUMENT, "dt"},
-        {"step dt inf", [](ent_scene* s) { return ent_scene_step(s, kInf); }, ENT_ERROR_INVALID_ARGUMENT, "dt"},
-        {"step dt -inf", [](ent_scene* s) { return ent_scene_step(s, -kInf); }, ENT_ERROR_INVALID_ARGUMENT, "dt"},
-        {"step dt 1e9 (more than max_substeps)", [](ent_scene* s) { return ent_scene_step(s, 1e9); },
-         ENT_ERROR_INVALID_ARGUMENT, "max_substeps"},
-        {"step dt just over max_substeps", [](ent_scene* s) { return ent_scene_step(s, 1000 * 1e-3 * 1.01); },
-         ENT_ERROR_INVALID_ARGUMENT, "max_substeps"},
-        {"axis count 0",
-         [](ent_scene* s) {
-             double b[6];
-             return ent_scene_axis(s, 0, b);
-         },
-         ENT_ERROR_INVALID_ARGUMENT, "count"},
-        {"axis count 1",
-         [](ent_scene* s) {
-             double b[6];
-             return ent_scene_axis(s, 1, b);
-         },
-         ENT_ERROR_INVALID_ARGUMENT, "count"},
-        {"axis NULL buffer", [](ent_scene* s) { return ent_scene_axis(s, 10, nullptr); }, ENT_ERROR_INVALID_ARGUMENT,
-         "points_xyz_m"},
-        {"control points NULL out_count",
-         [](ent_scene* s) {
-             double b[3 * 12];
-             return ent_scene_control_points(s, 12, b, nullptr);
-         },
-         ENT_ERROR_INVALID_ARGUMENT, "out_count"},
-        {"stats NULL", [](ent_scene* s) { return ent_scene_stats(s, nullptr); }, ENT_ERROR_INVALID_ARGUMENT, "out"},
-        {"stats struct_size 0",
-         [](ent_scene* s) {
-             ent_stats st;
-             std::memset(&st, 0, sizeof st);
-             return ent_scene_stats(s, &st);
-         },
-         ENT_ERROR_VERSION, "struct_size"},
-        {"stats struct_size too large",
-         [](ent_scene* s) {
-             ent_stats st;
-             std::memset(&st, 0, sizeof st);
-             st.struct_size = sizeof st + 8;
-             return ent_scene_stats(s, &st);
-         },
-         ENT_ERROR_VERSION, "struct_size"},
-        {"effect stats NULL", [](ent_scene* s) { return ent_scene_effect_stats(s, 0, nullptr); },
-         ENT_ERROR_INVALID_ARGUMENT, "out"},
-        {"effect stats struct_size 0",
-         [](ent_scene* s) {
-             ent_effect_stats st;
-             std::memset(&st, 0, sizeof st);
-             return ent_scene_effect_stats(s, 0, &st);
-         },
-         ENT_ERROR_VERSION, "struct_size"},
-        {"effect stats unknown effect",
-         [](ent_scene* s) {
-             ent_effect_stats st;
-             st.struct_size = sizeof st;
-             return ent_scene_effect_stats(s, 99, &st);
-         },
-         ENT_ERROR_NOT_FOUND, "99"},
-    };
-}
-
-ent_scene_desc moving_desc(int32_t integrator) {
-    ent_scene_desc desc = small_desc();
-    desc.shape = ENT_SHAPE_SERPENTINE;
-    desc.shape_leg_length_m = 0.2;
-    desc.integrator = integrator;
-    desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
-    desc.mesentery_attachments = 5;
-    return desc;
-}
-
-TEST(BadInputs, FailingCallsLeaveTheSceneExactlyAsItWas) {
-    for (int32_t integrator : kIntegrators) {
-        SCOPED_TRACE(integrator_name(integrator));
-        // Twin scenes driven identically, except that `tried` also receives every bad call.
-        ScenePtr tried = create(moving_desc(integrator));
-        ScenePtr twin = create(moving_desc(integrator));
-        ASSERT_TRUE(tried && twin);
-        ASSERT_TRUE(step_n(tried.get(), 1e-3, 20));
-        ASSERT_TRUE(step_n(twin.get(), 1e-3, 20));
-        ASSERT_GT(stats(tried.get()).kinetic_energy_J, 0.0) << "the scene must be moving";
-
-        for (const SceneCallCase& c : scene_call_cases()) {
-            SCOPED_TRACE(c.name);
-            const Observed before = observe(tried.get());
-            EXPECT_EQ(c.call(tried.get()), c.status) << ent_last_error();
-            EXPECT_TRUE(contains(ent_last_error(), c.message_part))
-                << "message \"" << ent_last_error() << "\" should contain " << c.message_part;
-            EXPECT_TRUE(unchanged(before, observe(tried.get())));
-        }
-        // The hidden state (velocities) is untouched too: the next steps agree bit for bit.
-        ASSERT_TRUE(step_n(tried.get(), 1e-3, 5));
-        ASSERT_TRUE(step_n(twin.get(), 1e-3, 5));
-        const auto a = control_points(tried.get());
-        const auto b = control_points(twin.get());
-        ASSERT_EQ(a.size(), b.size());
-        EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(double)), 0);
-        const ent_stats sa = stats(tried.get()), sb = stats(twin.get());
-        EXPECT_EQ(std::memcmp(&sa.kinetic_energy_J, &sb.kinetic_energy_J, sizeof(double)), 0);
-        EXPECT_EQ(sa.steps, sb.steps);
-    }
-}
-
-TEST(BadInputs, ControlPointsBufferTooSmallReportsTheCountAndCopiesNothing) {
+TEST(BadInputs, ControlPointsWithANullBufferReportTheCountOnly) {
     ScenePtr scene = create(small_desc());
     ASSERT_TRUE(scene);
-    std::vector<double> buffer(3 * 12, -7.0);
     uint32_t count = 0;
-    EXPECT_EQ(ent_scene_control_points(scene.get(), 11, buffer.data(), &count), ENT_ERROR_BUFFER_TOO_SMALL);
-    EXPECT_EQ(count, 12u);
-    for (double v : buffer) EXPECT_EQ(v, -7.0);
-    EXPECT_TRUE(contains(ent_last_error(), "12")) << ent_last_error();
-    EXPECT_EQ(ent_scene_control_points(scene.get(), 0, buffer.data(), &count), ENT_ERROR_BUFFER_TOO_SMALL);
-    EXPECT_EQ(count, 12u);
-    // NULL buffer: the count only, whatever the capacity.
-    count = 0;
     EXPECT_EQ(ent_scene_control_points(scene.get(), 0, nullptr, &count), ENT_OK);
     EXPECT_EQ(count, 12u);
     // Exactly enough is enough; more is fine and the rest is left alone.
@@ -439,21 +977,6 @@ TEST(BadInputs, ControlPointsBufferTooSmallReportsTheCountAndCopiesNothing) {
     EXPECT_EQ(ent_scene_control_points(scene.get(), 13, bigger.data(), &count), ENT_OK);
     EXPECT_EQ(count, 12u);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(bigger[3 * 12 + c], -7.0);
-}
-
-TEST(BadInputs, RejectedStatsStructsAreNotWritten) {
-    ScenePtr scene = create(small_desc());
-    ASSERT_TRUE(scene);
-    ASSERT_TRUE(step_n(scene.get(), 1e-3, 3));
-    for (uint32_t size : {0u, uint32_t(sizeof(ent_stats) + 8), 3u}) {
-        ent_stats s;
-        std::memset(&s, 0x5a, sizeof s);
-        s.struct_size = size;
-        ent_stats copy;
-        std::memcpy(&copy, &s, sizeof s);
-        EXPECT_EQ(ent_scene_stats(scene.get(), &s), ENT_ERROR_VERSION) << size;
-        EXPECT_EQ(std::memcmp(&s, &copy, sizeof s), 0) << size;
-    }
 }
 
 }  // namespace
