@@ -1,10 +1,13 @@
 /*
- * enteron_demo: a 6 m small bowel dropped into the abdominal cavity, held by its mesentery.
+ * enteron_demo: a 6 m small bowel dropped into the abdominal cavity, held by its mesentery,
+ * then swept aside by a surgical tool.
  *
  * Creates the scene from a JSON v1 description, steps it 1 ms at a time for a few
  * simulated seconds, prints one line per simulated second (energies, where the bowel is,
- * how long it is, its contacts with the cavity and their deepest penetration, how many
- * rollbacks the stability guard made, and the wall time per step), then writes the final
+ * how long it is, its contacts and their deepest penetration, how many rollbacks the
+ * stability guard made, the largest force on the tool, and the wall time per step). The
+ * tool waits above the pile while it settles, then goes down into it, sweeps across the
+ * cavity and rises again (tool_path below), as a haptic device would drive it. Then writes the final
  * axis as axis.obj (an OBJ polyline) and axis.csv, and the bowel's surface (convolution
  * skin of the last frame) as bowel.obj.
  *
@@ -52,8 +55,33 @@ static const char scene_json[] =
     "                \"stiffness\": 5, \"attachments\": 60, \"rest_length\": 0},\n"
     "  \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0],\n"
     "                    \"half_extents\": [0.15, 0.15, 0.15]}],\n"
-    "  \"self_collision\": {}\n"
+    "  \"self_collision\": {},\n"
+    "  \"tools\": [{\"radius\": 0.005, \"length\": 0.3, \"max_force\": 5,\n"
+    "              \"position\": [-0.1, 0, 0.3], \"orientation\": [1, 0, 0, 0]}]\n"
     "}\n";
+
+/* The tool's tip at simulated time t (s): a vertical grasper waiting above the cavity
+ * while the bowel settles, down into the pile (2 to 2.6 s), across the cavity along +x
+ * (2.6 to 4 s), and up again (4 to 4.6 s). */
+static void tool_path(double t, double tip[3]) {
+    static const double keys[][4] = {/* t_s, x, y, z */
+                                     {0.0, -0.1, 0.0, 0.3},
+                                     {2.0, -0.1, 0.0, 0.3},
+                                     {2.6, -0.1, 0.0, -0.08},
+                                     {4.0, 0.1, 0.0, -0.08},
+                                     {4.6, 0.1, 0.0, 0.3}};
+    const size_t count = sizeof keys / sizeof keys[0];
+    size_t k;
+    for (k = 1; k < count && t > keys[k][0]; ++k) {
+    }
+    if (k == count) {
+        tip[0] = keys[count - 1][1], tip[1] = keys[count - 1][2], tip[2] = keys[count - 1][3];
+    } else {
+        const double a = (t - keys[k - 1][0]) / (keys[k][0] - keys[k - 1][0]);
+        int c;
+        for (c = 0; c < 3; ++c) tip[c] = (1.0 - a) * keys[k - 1][c + 1] + a * keys[k][c + 1];
+    }
+}
 
 #define STEP_S 0.001           /* one ent_scene_step, s */
 #define STEPS_PER_REPORT 1000  /* one report line per simulated second */
@@ -106,9 +134,10 @@ static int make_directories(const char* dir) {
     return 0;
 }
 
-/* One report line: the published state, and the median and largest wall time of the
- * `timed` steps since the last line (step_us, sorted in place). */
-static int report(const ent_scene* scene, size_t timed) {
+/* One report line: the published state, the largest force on the tool since the last line,
+ * and the median and largest wall time of the `timed` steps since then (step_us, sorted
+ * in place). */
+static int report(const ent_scene* scene, double tool_force_N, size_t timed) {
     ent_stats stats;
     ent_status status;
     double center[3] = {0.0, 0.0, 0.0};
@@ -141,10 +170,10 @@ static int report(const ent_scene* scene, size_t timed) {
         return 1;
     }
 
-    printf("%7.3f %12.6f %12.6f  %+8.4f %+8.4f %+8.4f  %+8.4f  %8.4f %8u %9.5f %9llu", stats.time_s,
-           stats.kinetic_energy_J, stats.potential_energy_J, center[0], center[1], center[2],
-           lowest_z, length_m, (unsigned)stats.contacts, stats.max_penetration_m,
-           (unsigned long long)stats.rollbacks);
+    printf("%7.3f %12.6f %12.6f  %+8.4f %+8.4f %+8.4f  %+8.4f  %8.4f %8u %9.5f %9llu %8.3f",
+           stats.time_s, stats.kinetic_energy_J, stats.potential_energy_J, center[0], center[1],
+           center[2], lowest_z, length_m, (unsigned)stats.contacts, stats.max_penetration_m,
+           (unsigned long long)stats.rollbacks, tool_force_N);
     if (timed > 0) {
         qsort(step_us, timed, sizeof step_us[0], compare_doubles);
         printf("  %10.1f %10.1f\n",
@@ -288,6 +317,8 @@ int main(int argc, char** argv) {
     ent_status status;
     long total_steps, step;
     size_t timed = 0;
+    double tool_force_N = 0.0;     /* largest |F| on the tool since the last report line */
+    double tool_force_max_N = 0.0; /* over the whole run */
     const uint32_t version = ent_version();
     int i;
 
@@ -326,19 +357,30 @@ int main(int argc, char** argv) {
     total_steps = lround(seconds / STEP_S);
     if (total_steps < 1) total_steps = 1;
     printf("enteron_demo: libenteron %u.%u.%u, 6 m bowel, 240 control points, implicit Euler,"
-           " %ld steps of %g ms\n",
+           " a tool, %ld steps of %g ms\n",
            (unsigned)(version >> 16), (unsigned)((version >> 8) & 0xffu),
            (unsigned)(version & 0xffu), total_steps, STEP_S * 1e3);
-    printf("%7s %12s %12s  %26s  %8s  %8s %8s %9s %9s  %10s %10s\n", "t_s", "kinetic_J", "potential_J",
-           "axis_centre_xyz_m", "lowest_z", "length_m", "contacts", "max_pen_m", "rollbacks", "median_us",
-           "max_us");
-    if (report(scene, 0) != 0) {
+    printf("%7s %12s %12s  %26s  %8s  %8s %8s %9s %9s %8s  %10s %10s\n", "t_s", "kinetic_J",
+           "potential_J", "axis_centre_xyz_m", "lowest_z", "length_m", "contacts", "max_pen_m",
+           "rollbacks", "tool_F_N", "median_us", "max_us");
+    if (report(scene, 0.0, 0) != 0) {
         ent_scene_destroy(scene);
         return 1;
     }
 
     for (step = 1; step <= total_steps; ++step) {
-        const double start = now_us();
+        static const double upright[4] = {1.0, 0.0, 0.0, 0.0};
+        double tip[3], force[3], torque[3], magnitude;
+        double start;
+        /* Where the device puts the tool at the end of this step; it moves there
+         * continuously during the step. */
+        tool_path((double)step * STEP_S, tip);
+        status = ent_tool_set_pose(scene, 0, tip, upright);
+        if (status != ENT_OK) {
+            ent_scene_destroy(scene);
+            return report_failure("ent_tool_set_pose", status);
+        }
+        start = now_us();
         status = ent_scene_step(scene, STEP_S);
         step_us[timed++] = now_us() - start;
         if (status != ENT_OK) {
@@ -347,14 +389,25 @@ int main(int argc, char** argv) {
             ent_scene_destroy(scene);
             return 1;
         }
+        /* The force the haptic device would render. */
+        status = ent_tool_wrench(scene, 0, force, torque);
+        if (status != ENT_OK) {
+            ent_scene_destroy(scene);
+            return report_failure("ent_tool_wrench", status);
+        }
+        magnitude = sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);
+        if (magnitude > tool_force_N) tool_force_N = magnitude;
+        if (magnitude > tool_force_max_N) tool_force_max_N = magnitude;
         if (timed == STEPS_PER_REPORT || step == total_steps) {
-            if (report(scene, timed) != 0) {
+            if (report(scene, tool_force_N, timed) != 0) {
                 ent_scene_destroy(scene);
                 return 1;
             }
             timed = 0;
+            tool_force_N = 0.0;
         }
     }
+    printf("tool: largest force %.3f N (bound 5 N)\n", tool_force_max_N);
 
     if (write_outputs(scene, out_dir) != 0 || write_skin(scene, out_dir) != 0) {
         ent_scene_destroy(scene);

@@ -23,6 +23,8 @@
 #include <string.h>
 #include <time.h>
 
+#include "monotonic_clock.h"
+
 #define AXIS_POINTS 200
 
 typedef struct {
@@ -39,24 +41,6 @@ typedef struct {
     uint32_t min_triangles, max_triangles, last_triangles;
     double skin_update_us_sum, skin_update_us_max;
 } shared_state;
-
-static double seconds_since(const struct timespec* start) {
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - start->tv_sec) + 1e-9 * (double)(now.tv_nsec - start->tv_nsec);
-}
-
-static struct timespec after(const struct timespec* start, double seconds) {
-    struct timespec t = *start;
-    const double whole = floor(seconds);
-    t.tv_sec += (time_t)whole;
-    t.tv_nsec += (long)((seconds - whole) * 1e9);
-    if (t.tv_nsec >= 1000000000L) {
-        t.tv_sec += 1;
-        t.tv_nsec -= 1000000000L;
-    }
-    return t;
-}
 
 static void* physics_thread(void* argument) {
     shared_state* s = argument;

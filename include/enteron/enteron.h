@@ -16,9 +16,9 @@
  * work counters of ent_stats and ent_effect_stats record a step the guard gave up on).
  *
  * Threads:
- * - One thread at a time drives a scene: ent_scene_step (and, as they come, the tool
- *   calls). Driving calls on one scene must not overlap; the driving thread may change
- *   if the caller hands the scene over (e.g. under its own mutex).
+ * - One thread at a time drives a scene: ent_scene_step, ent_scene_add_obstacle and the
+ *   ent_tool_* calls that take a scene. Driving calls on one scene must not overlap; the
+ *   driving thread may change if the caller hands the scene over (e.g. under its own mutex).
  * - The queries (ent_scene_axis, ent_scene_control_points, ent_scene_stats,
  *   ent_scene_effect_stats) read the last published snapshot: an immutable copy of the
  *   state made at creation and at the end of every step (a step that fails publishes the
@@ -187,7 +187,8 @@ ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_
 #define ENT_EFFECT_PINNED 5         /**< control points held fixed in space */
 #define ENT_EFFECT_ENVIRONMENT 6    /**< contact with the cavity and organs (on with the first obstacle) */
 #define ENT_EFFECT_SELF_COLLISION 7 /**< folds of the bowel that touch push apart */
-#define ENT_EFFECT_COUNT 8          /**< number of effects this header knows */
+#define ENT_EFFECT_TOOLS 8          /**< contact and grasp of surgical tools (on with the first tool) */
+#define ENT_EFFECT_COUNT 9          /**< number of effects this header knows */
 /** The bit of an effect in ent_scene_desc.effects. */
 #define ENT_EFFECT_BIT(effect) (1u << (effect))
 
@@ -271,7 +272,7 @@ typedef struct ent_scene_desc {
        contact of the bowel uses (the environment; later self-contact and tools). */
     double collision_sphere_spacing_m;  /**< sphere spacing along the axis at rest, m, <= R; 0: R / 2 (default 0). */
     double contact_stiffness_N_per_m;   /**< normal stiffness of one sphere's contact (default 500). */
-    double contact_damping_N_s_per_m;   /**< normal damping, only while approaching (default 0.5). */
+    double contact_damping_N_s_per_m;   /**< normal damping, only while approaching, fading in over the first R/10 of penetration (default 0.5). */
     double contact_friction;            /**< Coulomb friction coefficient (default 0.3). */
     double contact_slip_speed_m_per_s;  /**< friction is viscous below about this sliding speed (default 0.01). */
 } ent_scene_desc;
@@ -449,6 +450,117 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
  * @warning Call from the thread that drives the scene.
  */
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle);
+
+/* ------------------------------------------------------------------------------------ */
+/* Tools: surgical instruments that push and grasp the bowel                            */
+/* ------------------------------------------------------------------------------------ */
+
+/**
+ * A surgical tool: a rigid capsule driven by the caller (a haptic device, a script). Its tip
+ * is at the pose's position; its shaft runs from the tip back along the orientation's
+ * local +z axis for length_m, with radius radius_m. With the identity orientation
+ * (1, 0, 0, 0) the shaft rises straight up from the tip: a vertical tool pointing down.
+ * Fill with ent_tool_desc_default first; it is not retained.
+ */
+typedef struct ent_tool_desc {
+    uint32_t struct_size;            /**< sizeof(ent_tool_desc); set by ent_tool_desc_default. */
+    double radius_m;                 /**< shaft radius, m, > 0 (default 0.005). */
+    double length_m;                 /**< shaft length from the tip along local +z, m, >= 0 (default 0.3). */
+    double max_force_N;              /**< bound of the force the tool exerts and reports, N, > 0 (default 5). */
+    double grasp_margin_m;           /**< grasp reach beyond touching: reach = radius_m + R + this, m, >= 0 (default 0.005). */
+    double grasp_stiffness_N_per_m;  /**< stiffness of the grasp spring from the held axis point to the tip (rest length radius_m + R), > 0 (default 200). */
+    double grasp_damping_N_s_per_m;  /**< damping of the grasp spring, >= 0 (default 2). */
+    double position_m[3];            /**< initial tip position, m (default 0, 0, 0). */
+    double orientation_wxyz[4];      /**< initial orientation, a quaternion normalised by the library (default 1, 0, 0, 0). */
+} ent_tool_desc;
+
+/**
+ * Fills the first struct_size bytes of *desc with the defaults listed above and sets
+ * desc->struct_size; nothing past struct_size is written. Call it through
+ * ent_tool_desc_default, which passes the size of the header the program was built with.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (desc NULL); ENT_ERROR_VERSION (unknown size).
+ */
+ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size);
+
+/** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
+#define ent_tool_desc_default(desc) \
+    ((void)ent_tool_desc_init((desc), (uint32_t)sizeof(ent_tool_desc)))
+
+/**
+ * Adds a tool at the desc's pose. The first tool turns ENT_EFFECT_TOOLS on. Every collision
+ * sphere of the bowel touching the capsule gets the scene's penalty contact (ent_scene_desc
+ * contact_* fields, JSON "collision"). The JSON description lists tools under "tools"
+ * instead (they come first). Allocates; call it between steps.
+ * @code
+ *   ent_tool_desc tool;
+ *   ent_tool_desc_default(&tool);
+ *   tool.position_m[2] = 0.2;
+ *   int32_t id;
+ *   if (ent_tool_add(scene, &tool, &id) != ENT_OK) fprintf(stderr, "%s\n", ent_last_error());
+ * @endcode
+ * @param out_tool receives the tool's id (0, 1, ... in order of addition); may be NULL.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, a value out of range or non-finite, a
+ *         zero quaternion: the message names the field); ENT_ERROR_VERSION; nothing
+ *         changes on failure.
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int32_t* out_tool);
+
+/**
+ * Sets where the tool is at the end of the next ent_scene_step: tip position (m) and
+ * orientation (w x y z; a non-unit quaternion is normalised). During that step the tool
+ * moves continuously from its current pose (the tip linearly, the orientation by
+ * normalised linear interpolation) across the substeps, so a fast tool pushes the bowel
+ * instead of jumping through it; its velocity, for contact damping, is the pose change
+ * over the step. Setting the pose again before the step replaces the target.
+ * Allocates nothing: safe at 1 kHz.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite position, zero or
+ *         non-finite quaternion); ENT_ERROR_NOT_FOUND (unknown tool); nothing changes on failure.
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const double position_m[3],
+                                     const double orientation_wxyz[4]);
+
+/**
+ * The force (N) and the torque about the tip (N m) the bowel exerted on the tool in the
+ * last step (its last evaluation): equal and opposite to what the bowel received, the
+ * sum of the tool's contacts and grasp, bounded by max_force_N: when the magnitudes of
+ * those forces add up to more, they are all scaled down by one factor, on the bowel as on
+ * the tool, so action equals reaction. Zero before the first step.
+ * Allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double force_N[3], double torque_Nm[3]);
+
+/**
+ * Grasps the bowel: the collision sphere centre nearest the tip, within radius_m + R +
+ * grasp_margin_m of it, is held to the tip by a tension-only spring-damper of rest length
+ * radius_m + R (the held point stays on the tool's surface, where the contact does not
+ * push, and the grasp starts without a jolt); the material point of the axis held stays
+ * the same as the bowel moves. With nothing within reach nothing is held
+ * (still ENT_OK; ent_tool_state reports it). Grasping again picks the nearest point anew.
+ * When holding would need more than max_force_N the grasp slips: it is released at the
+ * end of that step, with no force jump beyond the bound.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_tool_grasp(ent_scene* scene, int32_t tool);
+
+/**
+ * Releases what the tool holds (nothing held: no effect).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_tool_release(ent_scene* scene, int32_t tool);
+
+/**
+ * Whether the tool holds the bowel: *out_grasping is 1 while a grasp holds, 0 after a
+ * release, a grasp with nothing in reach, or a slip.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
+ * @warning Call from the thread that drives the scene.
+ */
+ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t* out_grasping);
 
 /* ------------------------------------------------------------------------------------ */
 /* Skins: a closed triangle mesh of the bowel surface, for rendering                    */

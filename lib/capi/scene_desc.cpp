@@ -101,13 +101,14 @@ void check_callbacks(const ent_callbacks& callbacks) {
 scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     scene::SceneConfig config;
     const auto has = [&](int effect) { return (desc.effects & ENT_EFFECT_BIT(effect)) != 0; };
-    // The effects a description turns on by bit; the environment starts with an obstacle.
+    // The effects a description turns on by bit; the environment starts with an obstacle,
+    // the tools with a tool.
     constexpr uint32_t kDescEffects =
         ((1u << (ENT_EFFECT_PINNED + 1)) - 1u) | ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
     if ((desc.effects & ~kDescEffects) != 0)
         throw Error(ErrorCode::invalid_argument,
                     "effects has bits of effects a description cannot turn on (environment starts with "
-                    "ent_scene_add_obstacle), got " + std::to_string(desc.effects));
+                    "ent_scene_add_obstacle, tools with ent_tool_add), got " + std::to_string(desc.effects));
 
     scene::IntestineConfig& intestine = config.intestine;
     intestine.length = desc.length_m;

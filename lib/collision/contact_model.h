@@ -1,6 +1,8 @@
 // The penalty contact law shared by every contact of the bowel (environment, self-contact,
 // tools): a normal spring on the penetration depth, a damper that acts only while the
-// surfaces approach (so contacts never pull), and Coulomb friction regularised below a
+// surfaces approach (so contacts never pull) and fades in over the first `damping_depth` of
+// penetration (so a contact starts at zero force: a haptic device feels no step when the
+// tool touches), and Coulomb friction regularised below a
 // slip speed so it stays smooth. Units: N/m, N s/m, and the friction coefficient.
 #pragma once
 
@@ -14,6 +16,8 @@ struct ContactParameters {
     double damping = 0.5;          // N s/m, on approach only
     double friction = 0.3;         // Coulomb coefficient
     double slip_speed = 0.01;      // m/s: friction is viscous below about this speed
+    double damping_depth = 0.0;    // m: the damper reaches full strength at this depth (0: at once);
+                                   // the scene sets it from the radius
 };
 
 // A bound on the friction's damping mu f_n / slip speed, for contacts up to R / 4 deep
@@ -38,9 +42,10 @@ inline ContactForce contact_force(const ContactParameters& p, double depth, cons
     ContactForce out{};
     const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
     const double approach = std::max(0.0, -vn);
-    out.normal_force = std::max(0.0, p.stiffness * depth + p.damping * approach);
+    const double fade = depth < p.damping_depth ? depth / p.damping_depth : 1.0;
+    out.normal_force = std::max(0.0, p.stiffness * depth + fade * p.damping * approach);
     out.stiffness = p.stiffness;
-    out.damping = approach > 0.0 ? p.damping : 0.0;
+    out.damping = approach > 0.0 ? fade * p.damping : 0.0;
     const double vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
     const double slip = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2] + p.slip_speed * p.slip_speed);
     out.friction_damping = p.friction * out.normal_force / slip;

@@ -1,5 +1,6 @@
 #include "collision/self_contact_force.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -12,6 +13,8 @@ constexpr double kPi = 3.14159265358979323846;
 // A sphere touches at most this many others at once in a dense pile (a bound for the
 // explicit integrators' stable substep).
 constexpr double kMaxContactsPerSphere = 6.0;
+// Pairs are listed up to (2 + this) R apart, the grid's cell size.
+constexpr double kNearMargin = 1.0;
 }  // namespace
 
 SelfContactForce::SelfContactForce(const mechanics::AxisModel& model, double rest_length, double radius,
@@ -19,7 +22,7 @@ SelfContactForce::SelfContactForce(const mechanics::AxisModel& model, double res
                                    const mechanics::State& initial, std::pmr::memory_resource* memory)
     : spheres_(model.control_points, rest_length, sphere_spacing, radius, memory),
       centers_(3 * spheres_.size(), 0.0, memory),
-      grid_(spheres_.size(), 3.0 * radius, memory),
+      grid_(spheres_.size(), (2.0 + kNearMargin) * radius, memory),
       near_pairs_(memory),
       contact_(contact),
       window_(kPi * radius) {
@@ -31,12 +34,26 @@ SelfContactForce::SelfContactForce(const mechanics::AxisModel& model, double res
 
 void SelfContactForce::find_near_pairs(const mechanics::State& state) const {
     spheres_.update(state.q.data());
+    // The list stays exact while no sphere has moved more than half its margin (R / 2)
+    // since it was made: two spheres then closed in by at most R, so every pair now closer
+    // than 2R was closer than 3R then and is listed. Only then is the grid searched again.
+    if (near_pairs_complete_) {
+        const double limit = 0.5 * kNearMargin * spheres_.radius();
+        double moved = 0.0;
+        for (std::size_t i = 0; i < spheres_.size() && moved <= limit * limit; ++i) {
+            const double d[3] = {spheres_[i].center[0] - centers_[3 * i], spheres_[i].center[1] - centers_[3 * i + 1],
+                                 spheres_[i].center[2] - centers_[3 * i + 2]};
+            moved = std::max(moved, d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        }
+        if (moved <= limit * limit) return;
+    }
     for (std::size_t i = 0; i < spheres_.size(); ++i)
         for (int c = 0; c < 3; ++c) centers_[3 * i + c] = spheres_[i].center[c];
     grid_.build(centers_.data(), spheres_.size(), 3);
+    searches_ += 1;
     near_pairs_.clear();
     near_pairs_complete_ = true;
-    const double near = 3.0 * spheres_.radius();
+    const double near = (2.0 + kNearMargin) * spheres_.radius();
     grid_.for_each_candidate_pair([&](std::size_t i, std::size_t j) {
         if (i > j) std::swap(i, j);  // the same orientation of every pair, run to run
         const Sphere& a = spheres_[i];
@@ -110,8 +127,7 @@ void SelfContactForce::evaluate(const mechanics::State& state, double* force, co
 }
 
 double SelfContactForce::potential_energy(const mechanics::State& state) const {
-    if (near_pairs_complete_) spheres_.update(state.q.data());
-    else find_near_pairs(state);
+    find_near_pairs(state);
     double energy = 0.0;
     for_each_contact([&](const Sphere&, const Sphere&, double depth, const double*) {
         energy += 0.5 * contact_.stiffness * depth * depth;

@@ -9,6 +9,7 @@
 // implicit step stays stable against the contact), the cross terms stay explicit.
 #pragma once
 
+#include <cstdint>
 #include <memory_resource>
 #include <utility>
 #include <vector>
@@ -36,20 +37,23 @@ public:
 
     // The arc-length window within which spheres never collide, m.
     double neighbour_window() const { return window_; }
+    // How many times the grid was searched (the list of near pairs remade).
+    uint64_t grid_searches() const { return searches_; }
 
 private:
-    // Places the spheres for `state` and lists the pairs (outside the neighbour window)
-    // closer than 3R: the contacts of this state and of any state a step away.
+    // Places the spheres for `state` and makes sure the list holds every pair (outside the
+    // neighbour window) closer than 2R: it searches the grid for the pairs closer than 3R
+    // again only when a sphere has moved more than R / 2 since the last search.
     void find_near_pairs(const mechanics::State& state) const;
     // Calls visit(a, b, depth, normal) for every listed pair in contact (normal b to a).
     template <class Visit>
     void for_each_contact(Visit&& visit) const;
 
     mutable CollisionSpheres spheres_;
-    mutable std::pmr::vector<double> centers_;  // the spheres' centres, x y z each, for the grid
+    mutable std::pmr::vector<double> centers_;  // the spheres' centres at the last search, x y z each
+    mutable uint64_t searches_ = 0;
     mutable SpatialHash grid_;
-    // Pairs closer than 3R at the last search. The guard's energy after a step reuses them:
-    // a pair that comes into contact within one step was within R of contact before it.
+    // Pairs closer than 3R at the last search (centers_).
     mutable std::pmr::vector<std::pair<uint32_t, uint32_t>> near_pairs_;
     mutable bool near_pairs_complete_ = false;
     ContactParameters contact_;

@@ -156,6 +156,12 @@ ContactSummary Dynamics::contacts() const {
     return summary;
 }
 
+double Dynamics::external_work_bound() const {
+    double work = 0.0;
+    for (const Owned<Effect>& effect : effects_) work += effect->external_work_bound();
+    return work;
+}
+
 Effect* Dynamics::find_effect(EffectId id) {
     for (Owned<Effect>& effect : effects_)
         if (effect->id() == id) return effect.get();

@@ -52,6 +52,8 @@ public:
 
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;
+    // Work the effects driven from outside may do in the current step (effect.h), J.
+    double external_work_bound() const;
 
     struct Energies {
         double kinetic = 0.0;      // J

@@ -54,6 +54,11 @@ public:
 
     // Adds the contacts of the last evaluation (effects that make contacts only).
     virtual void add_contacts(ContactSummary& /*summary*/) const {}
+
+    // An upper bound of the work (J) this effect may do on the bowel during the current
+    // step from outside the system (a tool driven by the caller); the guard allows that
+    // much energy to appear. 0 for effects that only store or dissipate energy.
+    virtual double external_work_bound() const { return 0.0; }
 };
 
 }  // namespace enteron::mechanics

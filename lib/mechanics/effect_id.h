@@ -14,14 +14,16 @@ enum class EffectId : int {
     pinned = 5,
     environment = 6,
     self_collision = 7,
+    tools = 8,
 };
 
-constexpr std::size_t kEffectCount = 8;
+constexpr std::size_t kEffectCount = 9;
 
 // The JSON-style name of an effect ("stretch", ...).
 inline const char* effect_name(EffectId id) {
     static const char* const names[kEffectCount] = {"stretch",   "bend",   "damping",    "gravity",
-                                                   "mesentery", "pinned", "environment", "self_collision"};
+                                                   "mesentery", "pinned", "environment", "self_collision",
+                                                   "tools"};
     return names[static_cast<std::size_t>(id)];
 }
 

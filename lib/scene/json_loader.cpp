@@ -317,6 +317,35 @@ void read_environment(const json& value, const std::string& path, std::vector<Ob
     for (std::size_t i = 0; i < value.size(); ++i) read_obstacle(value[i], element(path, i), environment[i]);
 }
 
+using collision::ToolConfig;
+
+std::array<double, 4> read_quaternion(const json& value, const std::string& path) {
+    if (!value.is_array() || value.size() != 4)
+        fail(path + " must be an array of 4 numbers [w, x, y, z], got " + describe(value));
+    return {read_number(value[0], element(path, 0)), read_number(value[1], element(path, 1)),
+            read_number(value[2], element(path, 2)), read_number(value[3], element(path, 3))};
+}
+
+const Key<ToolConfig> kToolKeys[] = {
+    {"radius", [](auto& v, auto& p, auto& t) { t.settings.radius = read_number(v, p); }},
+    {"length", [](auto& v, auto& p, auto& t) { t.settings.length = read_number(v, p); }},
+    {"max_force", [](auto& v, auto& p, auto& t) { t.settings.max_force = read_number(v, p); }},
+    {"grasp_margin", [](auto& v, auto& p, auto& t) { t.settings.grasp_margin = read_number(v, p); }},
+    {"grasp_stiffness", [](auto& v, auto& p, auto& t) { t.settings.grasp_stiffness = read_number(v, p); }},
+    {"grasp_damping", [](auto& v, auto& p, auto& t) { t.settings.grasp_damping = read_number(v, p); }},
+    {"position", [](auto& v, auto& p, auto& t) {
+         const Vec3 position = read_vec3(v, p);
+         for (int c = 0; c < 3; ++c) t.pose.position[c] = position[c];
+     }},
+    {"orientation", [](auto& v, auto& p, auto& t) { t.pose.orientation = read_quaternion(v, p); }},
+};
+
+void read_tools(const json& value, const std::string& path, std::vector<ToolConfig>& tools) {
+    if (!value.is_array()) fail(path + " must be an array of tools, got " + describe(value));
+    tools.assign(value.size(), ToolConfig{});
+    for (std::size_t i = 0; i < value.size(); ++i) read_object(value[i], element(path, i), kToolKeys, tools[i]);
+}
+
 const Key<SceneConfig> kNoKeys[] = {{"", nullptr}};
 
 void read_version(const json& value, const std::string& path, SceneConfig&) {
@@ -341,7 +370,7 @@ const Key<SceneConfig> kSceneKeys[] = {
          read_object(v, p, kNoKeys, c);
          c.self_collision = true;
      }},
-    {"tools", nullptr},
+    {"tools", [](auto& v, auto& p, auto& c) { read_tools(v, p, c.tools); }},
 };
 
 // ---- parsing -----------------------------------------------------------------------

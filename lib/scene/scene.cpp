@@ -8,6 +8,7 @@
 #include "base/error.h"
 #include "collision/environment_force.h"
 #include "collision/self_contact_force.h"
+#include "collision/tools_force.h"
 #include "mechanics/bend_force.h"
 #include "mechanics/damping_force.h"
 #include "mechanics/gravity_force.h"
@@ -60,6 +61,10 @@ double max_speed(const State& state) {
     return std::sqrt(fastest);
 }
 
+// The contact damper fades in over this fraction of the radius of penetration, so that
+// every contact force starts from zero (contact_model.h).
+constexpr double kContactDampingDepth = 0.1;
+
 uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
     return static_cast<uint64_t>(
         std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
@@ -86,6 +91,7 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     state_.resize(n);
     backup_.resize(n);
     build_shape(intestine.shape, intestine.length, n, state_.q.data());
+    collision_.contact.damping_depth = kContactDampingDepth * radius_;
 
     if (intestine.stretch_stiffness)
         dynamics_.add_effect(make_owned<StretchForce>(memory, model_, *intestine.stretch_stiffness, memory));
@@ -106,6 +112,7 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), memory));
     if (!config.environment.empty()) add_environment(config.environment);
+    for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision)
         dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, model_, rest_length_, radius_,
                                                                      sphere_spacing(), collision_.contact, state_,
@@ -139,6 +146,49 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle) {
     return index;
 }
 
+std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
+    if (tools_ == nullptr) {
+        auto effect = make_owned<collision::ToolsForce>(memory_, model_, rest_length_, radius_, sphere_spacing(),
+                                                        collision_.contact, state_, memory_);
+        tools_ = effect.get();
+        dynamics_.add_effect(std::move(effect));
+    }
+    collision::ToolConfig normalized = tool;
+    normalized.pose = collision::normalized_pose(tool.pose, "tool", ErrorCode::internal);
+    return tools_->add_tool(normalized);
+}
+
+std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
+    const std::size_t index = add_tool_effect_only(tool);
+    refinalize();
+    publish();
+    return index;
+}
+
+std::size_t Scene::tool_count() const { return tools_ != nullptr ? tools_->size() : 0; }
+
+void Scene::set_tool_pose(std::size_t tool, const collision::ToolPose& pose) { tools_->set_target(tool, pose); }
+
+// A grasp or a release adds or removes the spring's energy between steps: the guard
+// compares the next step with the energies as they are now.
+bool Scene::grasp(std::size_t tool) {
+    const bool held = tools_->grasp(tool, state_);
+    energies_ = dynamics_.energies(state_);
+    return held;
+}
+
+void Scene::release(std::size_t tool) {
+    tools_->release(tool);
+    energies_ = dynamics_.energies(state_);
+}
+
+bool Scene::grasping(std::size_t tool) const { return tools_->grasping(tool); }
+
+void Scene::tool_wrench(std::size_t tool, double force[3], double torque[3]) const {
+    const collision::ToolWrench& wrench = tools_->wrench(tool);
+    for (int c = 0; c < 3; ++c) force[c] = wrench.force[c], torque[c] = wrench.torque[c];
+}
+
 double Scene::sphere_spacing() const {
     return collision_.sphere_spacing > 0.0 ? collision_.sphere_spacing : 0.5 * radius_;
 }
@@ -168,8 +218,11 @@ void Scene::step(double dt) {
     const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
 
     backup_.assign(state_);
+    if (tools_ != nullptr) tools_->begin_step(state_.time, dt);
     for (std::size_t attempt = 0; attempt <= solver_.max_subdivisions; ++attempt) {
+        if (tools_ != nullptr) tools_->begin_attempt();
         if (try_step(dt, substeps << attempt)) {
+            if (tools_ != nullptr) tools_->end_step();
             stats_.steps += 1;
             stats_.last_step_ns = elapsed_ns(start);
             publish();
@@ -180,6 +233,7 @@ void Scene::step(double dt) {
         logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard; retrying with %zu substeps",
                     state_.time, substeps << (attempt + 1));
     }
+    if (tools_ != nullptr) tools_->abort_step();
     stats_.last_step_ns = elapsed_ns(start);
     publish();  // the same state, with the counters of the failed attempts
     char message[256];
@@ -202,7 +256,8 @@ bool Scene::try_step(double dt, std::size_t substeps) {
 
     const Dynamics::Energies after = dynamics_.energies(state_);
     const double floor = 0.5 * total_mass_ * kEnergyFloorSpeed * kEnergyFloorSpeed;
-    const double allowance = std::max(floor, kEnergyGrowthFactor * (energies_.kinetic + energies_.deformation));
+    const double allowance = std::max(floor, kEnergyGrowthFactor * (energies_.kinetic + energies_.deformation)) +
+                             dynamics_.external_work_bound();
     if (!(after.kinetic + after.potential <= energies_.kinetic + energies_.potential + allowance)) return false;
     energies_ = after;
     return true;

@@ -10,11 +10,16 @@
 
 #include "base/logger.h"
 #include "base/memory.h"
+#include "collision/tool.h"
 #include "mechanics/dynamics.h"
 #include "mechanics/integrator.h"
 #include "mechanics/state.h"
 #include "scene/scene_config.h"
 #include "scene/snapshot.h"
+
+namespace enteron::collision {
+class ToolsForce;
+}
 
 namespace enteron::scene {
 
@@ -36,6 +41,18 @@ public:
     std::size_t add_obstacle(const collision::Obstacle& obstacle);
     std::size_t obstacle_count() const { return obstacles_; }
 
+    // Tools (tools_force.h): add_tool starts the tools effect with the first one and
+    // returns the tool's index. The tool calls take a valid index (the caller checks it
+    // against tool_count) and a validated, normalised pose. Not during a step.
+    std::size_t add_tool(const collision::ToolConfig& tool);
+    std::size_t tool_count() const;
+    void set_tool_pose(std::size_t tool, const collision::ToolPose& pose);
+    bool grasp(std::size_t tool);
+    void release(std::size_t tool);
+    bool grasping(std::size_t tool) const;
+    // Force (N) and torque about the tip (N m) on the tool in the last accepted step.
+    void tool_wrench(std::size_t tool, double force[3], double torque[3]) const;
+
     // The latest published snapshot, pinned while the reader lives. Any thread.
     SnapshotPublisher::Reader read() const { return SnapshotPublisher::Reader(publisher_); }
 
@@ -52,6 +69,8 @@ private:
     double sphere_spacing() const;
     // Starts the environment effect with these obstacles.
     void add_environment(const std::vector<collision::Obstacle>& obstacles);
+    // Adds a tool, creating the tools effect with the first; no refinalize.
+    std::size_t add_tool_effect_only(const collision::ToolConfig& tool);
     // Bounds, substep limit and energies after the set of effects changed.
     void refinalize();
     // Fills a free snapshot slot from the current state and publishes it.
@@ -70,6 +89,7 @@ private:
     double radius_;
     CollisionConfig collision_;
     std::size_t obstacles_ = 0;
+    collision::ToolsForce* tools_ = nullptr;  // owned by dynamics_; null until the first tool
     double total_mass_;
     mechanics::Dynamics::Energies energies_;  // of the current state
     SceneStats stats_;

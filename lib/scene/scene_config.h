@@ -11,6 +11,7 @@
 
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
+#include "collision/tool.h"
 
 namespace enteron::scene {
 
@@ -85,6 +86,7 @@ struct SceneConfig {
     std::optional<PinnedConfig> pinned;
     CollisionConfig collision;
     std::vector<collision::Obstacle> environment;  // empty: the environment effect is off
+    std::vector<collision::ToolConfig> tools;       // empty: the tools effect is off
     bool self_collision = false;                   // folds that touch push apart
 };
 

@@ -380,6 +380,11 @@ void validate(const SceneConfig& config, const FieldNames& names) {
     if (config.pinned) validator.pinned(*config.pinned, config.intestine.control_points);
     validator.collision(config.collision, config.intestine.radius);
     for (std::size_t i = 0; i < config.environment.size(); ++i) validator.obstacle(config.environment[i], i);
+    for (std::size_t i = 0; i < config.tools.size(); ++i) {
+        const std::string name = "tools[" + std::to_string(i) + "]";
+        collision::validate_tool_settings(config.tools[i].settings, name, names.code);
+        (void)collision::normalized_pose(config.tools[i].pose, name, names.code);
+    }
 }
 
 void validate_obstacle(const collision::Obstacle& obstacle, std::size_t index, const FieldNames& names) {

@@ -92,6 +92,11 @@ TEST(EffectStats, NamedEffectsRunAndReportTheirCost) {
     ent_obstacle_desc cavity;
     ent_obstacle_desc_default(&cavity);
     ASSERT_EQ(ent_scene_add_obstacle(scene.get(), &cavity, nullptr), ENT_OK) << ent_last_error();
+    // Nor have the tools: the first tool turns them on.
+    ent_tool_desc tool;
+    ent_tool_desc_default(&tool);
+    tool.position_m[2] = 0.5;
+    ASSERT_EQ(ent_tool_add(scene.get(), &tool, nullptr), ENT_OK) << ent_last_error();
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 20));
     for (int32_t effect = 0; effect < ENT_EFFECT_COUNT; ++effect) {
         const ent_effect_stats s = effect_stats(scene.get(), effect);
@@ -101,9 +106,9 @@ TEST(EffectStats, NamedEffectsRunAndReportTheirCost) {
 }
 
 // The effects a description turns on by its bit: all but the environment, which starts
-// with the first obstacle (ent_scene_add_obstacle).
-constexpr uint32_t kDescEffects =
-    ((1u << ENT_EFFECT_COUNT) - 1u) & ~ENT_EFFECT_BIT(ENT_EFFECT_ENVIRONMENT);
+// with the first obstacle (ent_scene_add_obstacle), and the tools (ent_tool_add).
+constexpr uint32_t kDescEffects = ((1u << ENT_EFFECT_COUNT) - 1u) & ~ENT_EFFECT_BIT(ENT_EFFECT_ENVIRONMENT) &
+                                  ~ENT_EFFECT_BIT(ENT_EFFECT_TOOLS);
 
 TEST(EffectStats, OnlyTheNamedEffectsAreEnabledForEverySubset) {
     // Every subset of the effects a description can name (pins need points to hold).

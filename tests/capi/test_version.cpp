@@ -60,7 +60,8 @@ TEST(Status, LastErrorBelongsToTheFailingThreadAndSurvivesLaterSuccesses) {
 
 TEST(EffectName, KnownEffectsHaveTheirJsonNames) {
     const char* expected[ENT_EFFECT_COUNT] = {"stretch", "bend",   "damping",     "gravity",
-                                              "mesentery", "pinned", "environment", "self_collision"};
+                                              "mesentery", "pinned", "environment", "self_collision",
+                                              "tools"};
     for (int32_t e = 0; e < ENT_EFFECT_COUNT; ++e) {
         ASSERT_NE(ent_effect_name(e), nullptr) << e;
         EXPECT_STREQ(ent_effect_name(e), expected[e]);

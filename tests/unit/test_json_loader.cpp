@@ -2,6 +2,7 @@
 // exact error (code and message) for each kind of mistake.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -279,8 +280,30 @@ TEST(JsonLoader, LongKeysAndStringsAreShortenedInMessages) {
                        "intestine.length must be a number, got \"" + std::string(59, 'a') + "...\"");
 }
 
-TEST(JsonLoader, KeysOfLaterVersionsAreNotSupportedYet) {
-    expect_scene_error(R"({"tools": []})", "tools is not supported by this version");
+TEST(JsonLoader, ToolsGiveEveryValue) {
+    const SceneConfig c = load(R"({
+      "tools": [
+        { "radius": 0.004, "length": 0.25, "max_force": 7, "grasp_margin": 0.003,
+          "grasp_stiffness": 150, "grasp_damping": 1.5, "position": [0.1, 0.2, 0.3],
+          "orientation": [0, 1, 0, 0] },
+        {}
+      ]})");
+    ASSERT_EQ(c.tools.size(), 2u);
+    const collision::ToolConfig& t = c.tools[0];
+    EXPECT_EQ(t.settings.radius, 0.004);
+    EXPECT_EQ(t.settings.length, 0.25);
+    EXPECT_EQ(t.settings.max_force, 7.0);
+    EXPECT_EQ(t.settings.grasp_margin, 0.003);
+    EXPECT_EQ(t.settings.grasp_stiffness, 150.0);
+    EXPECT_EQ(t.settings.grasp_damping, 1.5);
+    EXPECT_EQ(t.pose.position, (std::array<double, 3>{0.1, 0.2, 0.3}));
+    EXPECT_EQ(t.pose.orientation, (std::array<double, 4>{0.0, 1.0, 0.0, 0.0}));
+    const collision::ToolConfig defaults;
+    EXPECT_EQ(c.tools[1].settings.max_force, defaults.settings.max_force);
+    EXPECT_EQ(c.tools[1].pose.orientation, defaults.pose.orientation);
+    expect_scene_error(R"({"tools": [{"orientation": [1, 0, 0]}]})",
+                       "tools[0].orientation must be an array of 4 numbers [w, x, y, z], got an array of 3 elements");
+    expect_scene_error(R"({"tools": {}})", "tools must be an array of tools, got an object");
 }
 
 TEST(JsonLoader, CollisionAndEnvironmentGiveEveryValue) {

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <iostream>
 #include <memory_resource>
 #include <random>
 #include <set>
@@ -167,6 +169,45 @@ TEST(SelfContact, TwoCrossingFoldsPushApart) {
     for (std::size_t i = 0; i < axis.state.count(); ++i) (i <= 20 ? lower : upper) += force[3 * i + 2];
     EXPECT_LT(lower, 0.0);
     EXPECT_GT(upper, 0.0);
+}
+
+TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
+    // A crumpled axis (a random walk in a 12 cm box) that keeps moving a little: the effect
+    // that lives through the moves (and searches its grid again only when a sphere has
+    // moved R / 2) must give the same contacts and forces as a new effect each time.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::vector<double> points{0.0, 0.0, 0.0};
+    for (int i = 1; i < 100; ++i) {
+        double step[3], norm = 0.0;
+        for (double& c : step) c = unit(random), norm += c * c;
+        for (int c = 0; c < 3; ++c) {
+            double next = points[3 * (i - 1) + c] + 0.01 * step[c] / std::sqrt(norm);
+            if (std::fabs(next) > 0.06) next = points[3 * (i - 1) + c] - 0.01 * step[c] / std::sqrt(norm);
+            points.push_back(next);
+        }
+    }
+    Axis axis(points);
+    SelfContactForce kept(axis.model, axis.length, kRadius, 0.5 * kRadius, ContactParameters{}, axis.state,
+                          std::pmr::new_delete_resource());
+    const int moves = 60;
+    for (int move = 0; move < moves; ++move) {
+        for (double& q : axis.state.q) q += 0.0005 * unit(random);  // up to 0.5 mm a move
+        std::vector<double> f_kept(axis.state.q.size(), 0.0), f_fresh;
+        kept.evaluate(axis.state, f_kept.data(), nullptr);
+        ContactSummary with_kept;
+        kept.add_contacts(with_kept);
+        const ContactSummary fresh = axis.contacts(&f_fresh);
+        ASSERT_GT(fresh.count, 20u);
+        ASSERT_EQ(with_kept.count, fresh.count) << "move " << move;
+        EXPECT_EQ(with_kept.max_penetration, fresh.max_penetration);
+        for (std::size_t i = 0; i < f_fresh.size(); ++i) EXPECT_NEAR(f_kept[i], f_fresh[i], 1e-12) << "move " << move;
+    }
+    // 60 moves of up to 0.5 mm per coordinate drift some sphere past R / 2 a few times, not
+    // at every move.
+    std::cout << "[ near pairs ] " << kept.grid_searches() << " grid searches in " << moves << " moves\n";
+    EXPECT_GT(kept.grid_searches(), 1u);
+    EXPECT_LT(kept.grid_searches(), std::uint64_t(moves / 2));
 }
 
 }  // namespace

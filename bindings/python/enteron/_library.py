@@ -86,6 +86,16 @@ _declare("ent_scene_control_points", _status, _scene_p, ctypes.c_uint32, _double
          ctypes.POINTER(ctypes.c_uint32))
 _declare("ent_scene_stats", _status, _scene_p, ctypes.POINTER(s.ent_stats))
 _declare("ent_scene_effect_stats", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_effect_stats))
+_declare("ent_obstacle_desc_init", _status, ctypes.POINTER(s.ent_obstacle_desc), ctypes.c_uint32)
+_declare("ent_scene_add_obstacle", _status, _scene_p, ctypes.POINTER(s.ent_obstacle_desc),
+         ctypes.POINTER(ctypes.c_int32))
+_declare("ent_tool_desc_init", _status, ctypes.POINTER(s.ent_tool_desc), ctypes.c_uint32)
+_declare("ent_tool_add", _status, _scene_p, ctypes.POINTER(s.ent_tool_desc), ctypes.POINTER(ctypes.c_int32))
+_declare("ent_tool_set_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_tool_wrench", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_tool_grasp", _status, _scene_p, ctypes.c_int32)
+_declare("ent_tool_release", _status, _scene_p, ctypes.c_int32)
+_declare("ent_tool_state", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(ctypes.c_int32))
 _skin_p = ctypes.c_void_p
 _declare("ent_skin_desc_init", _status, ctypes.POINTER(s.ent_skin_desc), ctypes.c_uint32)
 _declare("ent_skin_create", _status, _scene_p, ctypes.POINTER(s.ent_skin_desc), ctypes.POINTER(_skin_p))

@@ -141,4 +141,32 @@ class ent_skin_metrics(ctypes.Structure):
     ]
 
 
-ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_skin_desc, ent_mesh_view, ent_skin_metrics)
+class ent_obstacle_desc(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("kind", ctypes.c_int32),
+        ("center_m", _vec3),
+        ("half_extents_m", _vec3),
+        ("normal", _vec3),
+        ("start_m", _vec3),
+        ("end_m", _vec3),
+        ("radius_m", ctypes.c_double),
+    ]
+
+
+class ent_tool_desc(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("radius_m", ctypes.c_double),
+        ("length_m", ctypes.c_double),
+        ("max_force_N", ctypes.c_double),
+        ("grasp_margin_m", ctypes.c_double),
+        ("grasp_stiffness_N_per_m", ctypes.c_double),
+        ("grasp_damping_N_s_per_m", ctypes.c_double),
+        ("position_m", _vec3),
+        ("orientation_wxyz", ctypes.c_double * 4),
+    ]
+
+
+ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_obstacle_desc, ent_tool_desc,
+       ent_skin_desc, ent_mesh_view, ent_skin_metrics)

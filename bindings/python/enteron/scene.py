@@ -11,6 +11,7 @@ from . import _buffers
 from . import _structs as s
 from ._errors import ERROR_BUFFER_TOO_SMALL, Error, check
 from ._library import lib
+from .tool import Tool, tool_desc
 
 EFFECT_STRETCH = 0
 EFFECT_BEND = 1
@@ -18,7 +19,10 @@ EFFECT_DAMPING = 2
 EFFECT_GRAVITY = 3
 EFFECT_MESENTERY = 4
 EFFECT_PINNED = 5
-EFFECT_COUNT = 6  # the effects this binding knows (a newer library may know more)
+EFFECT_ENVIRONMENT = 6     # on with the first obstacle
+EFFECT_SELF_COLLISION = 7
+EFFECT_TOOLS = 8           # on with the first tool
+EFFECT_COUNT = 9  # the effects this binding knows (a newer library may know more)
 
 SHAPE_LINE = 0
 SHAPE_SERPENTINE = 1
@@ -33,6 +37,11 @@ PIN_NONE = 0
 PIN_FIRST = 1
 PIN_LAST = 2
 PIN_BOTH = 3
+
+OBSTACLE_BOX_INSIDE = 0
+OBSTACLE_PLANE = 1
+OBSTACLE_SPHERE = 2
+OBSTACLE_CAPSULE = 3
 
 LOG_DEBUG = 0
 LOG_INFO = 1
@@ -55,6 +64,42 @@ def effect_number(effect):
         raise ValueError("unknown effect %r (expected one of: %s)"
                          % (effect, ", ".join(effect_name(n) for n in range(EFFECT_COUNT))))
     return int(effect)
+
+
+# The obstacles of add_obstacle: kind, its number, and its keys (those of the JSON
+# "environment" entries) with the ent_obstacle_desc field each sets.
+_OBSTACLES = {
+    "box_inside": (OBSTACLE_BOX_INSIDE, {"center": "center_m", "half_extents": "half_extents_m"}),
+    "plane": (OBSTACLE_PLANE, {"point": "center_m", "normal": "normal"}),
+    "sphere": (OBSTACLE_SPHERE, {"center": "center_m", "radius": "radius_m"}),
+    "capsule": (OBSTACLE_CAPSULE, {"start": "start_m", "end": "end_m", "radius": "radius_m"}),
+}
+
+
+def obstacle_desc(kind, **keys):
+    """An ent_obstacle_desc with the library's defaults, then the kind (a name of _OBSTACLES
+    or an OBSTACLE_* number) and its keys, named as in the JSON "environment" entries."""
+    if not isinstance(kind, str):
+        kind = {number: name for name, (number, _) in _OBSTACLES.items()}.get(kind, kind)
+    if kind not in _OBSTACLES:
+        raise ValueError("unknown obstacle kind %r (expected one of: %s)" % (kind, ", ".join(_OBSTACLES)))
+    number, allowed = _OBSTACLES[kind]
+    desc = s.ent_obstacle_desc()
+    check(lib.ent_obstacle_desc_init(ctypes.byref(desc), ctypes.sizeof(desc)), "ent_obstacle_desc_init")
+    desc.kind = number
+    for key, value in keys.items():
+        if key not in allowed:
+            raise TypeError("unknown key %r for a %s obstacle (expected one of: %s)"
+                            % (key, kind, ", ".join(allowed)))
+        target = getattr(desc, allowed[key])
+        if isinstance(target, ctypes.Array):
+            values = [float(v) for v in value]
+            if len(values) != 3:
+                raise ValueError("%s must be 3 numbers, got %d" % (key, len(values)))
+            target[:] = values
+        else:
+            setattr(desc, allowed[key], float(value))
+    return desc
 
 
 class SceneDesc:
@@ -149,7 +194,9 @@ class Scene:
     Scene({"intestine": {...}})         from a dict, given to the library as JSON
     Scene(desc=SceneDesc(...))          from a C description (or desc={field: value})
     log=callable(level, message)        optional: receives the scene's log lines
-    Failures raise enteron.Error. Threads: as in C, one thread steps while others query.
+    add_tool(...) -> enteron.Tool, tool(id), tools; add_obstacle(kind, ...) -> index.
+    Failures raise enteron.Error. Threads: as in C, one thread drives (step, add_*, every
+    Tool call) while others query (axis, control_points, stats, effect_stats).
     """
 
     def __init__(self, description=None, *, desc=None, log=None):
@@ -181,6 +228,7 @@ class Scene:
                   "ent_scene_create_json")
         self._handle = handle
         self._count = self._control_point_count()
+        self._tool_count = self._count_tools() if description is not None else 0
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
@@ -215,6 +263,50 @@ class Scene:
     def step(self, dt_s):
         """Advances by dt_s seconds (ent_scene_step)."""
         check(lib.ent_scene_step(self._live(), dt_s), "ent_scene_step")
+
+    def add_obstacle(self, kind, **keys):
+        """Adds a rigid obstacle (ent_scene_add_obstacle) and returns its index. kind (a name
+        or enteron.OBSTACLE_*) and keys are those of a JSON "environment" entry: add_obstacle("box_inside", center=(0, 0, 0),
+        half_extents=(0.12, 0.12, 0.12)), ("plane", point=, normal=), ("sphere", center=,
+        radius=), ("capsule", start=, end=, radius=); m. The first obstacle turns the
+        environment effect on. Allocates: call it between steps."""
+        desc = obstacle_desc(kind, **keys)
+        index = ctypes.c_int32(-1)
+        check(lib.ent_scene_add_obstacle(self._live(), ctypes.byref(desc), ctypes.byref(index)),
+              "ent_scene_add_obstacle")
+        return index.value
+
+    def add_tool(self, *, position=(0.0, 0.0, 0.0), orientation=(1.0, 0.0, 0.0, 0.0), **settings):
+        """Adds a surgical tool (ent_tool_add) and returns its enteron.Tool. Keywords, SI
+        units, library defaults for those not given: radius (m, shaft radius), length (m, of
+        the shaft from the tip along local +z), max_force (N, bound of the force it exerts
+        and reports), grasp_margin (m), grasp_stiffness (N/m), grasp_damping (N s/m),
+        position (m, of the tip), orientation (w, x, y, z; identity: vertical, tip lowest).
+        The first tool turns the tools effect on. Allocates: call it between steps."""
+        desc = tool_desc(position, orientation, **settings)
+        index = ctypes.c_int32(-1)
+        check(lib.ent_tool_add(self._live(), ctypes.byref(desc), ctypes.byref(index)), "ent_tool_add")
+        self._tool_count = index.value + 1
+        return Tool(self, index.value)
+
+    def tool(self, tool_id):
+        """The Tool with this id (0, 1, ...; the JSON description's tools come first).
+        An id the scene does not have raises enteron.Error (ERROR_NOT_FOUND)."""
+        return Tool(self, tool_id)
+
+    @property
+    def tools(self):
+        """The scene's tools, in id order (a tuple of Tool)."""
+        return tuple(Tool(self, n) for n in range(self._tool_count))
+
+    def _count_tools(self):
+        # The C API has no tool count: the JSON tools are ids 0..n-1, so ask for each until
+        # one is not found.
+        grasping = ctypes.c_int32()
+        count = 0
+        while lib.ent_tool_state(self._live(), count, ctypes.byref(grasping)) == 0:
+            count += 1
+        return count
 
     # ---- queries of the last published state (any thread) ---------------------------------
     @property

@@ -46,6 +46,26 @@ class Library(unittest.TestCase):
         self.assertEqual(enteron.version, parts)
         self.assertEqual(enteron.version[0], enteron.SUPPORTED_MAJOR)
 
+    def test_constants_are_the_headers(self):
+        # Every integer constant of the header (ENT_EFFECT_TOOLS, ENT_EFFECT_COUNT, ENT_ERROR_*,
+        # ...) has its twin in the package with the same value: a constant added to the header
+        # and not here fails.
+        header = os.environ.get("ENTERON_HEADER")
+        if not header:
+            self.skipTest("ENTERON_HEADER is not set")
+        with open(header) as file:
+            constants = dict(re.findall(r"^#define ENT_([A-Z0-9_]+) +(\d+)\b", file.read(), re.MULTILINE))
+        constants = {name: int(value) for name, value in constants.items() if not name.startswith("VERSION_")}
+        self.assertIn("EFFECT_COUNT", constants)
+        for name, value in sorted(constants.items()):
+            with self.subTest(constant="ENT_" + name):
+                self.assertEqual(getattr(enteron, name, None), value)
+        # And every effect the binding knows has the library's name.
+        names = [enteron.effect_name(n) for n in range(enteron.EFFECT_COUNT)]
+        self.assertNotIn(None, names)
+        self.assertEqual(names[enteron.EFFECT_TOOLS], "tools")
+        self.assertIsNone(enteron.effect_name(enteron.EFFECT_COUNT))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -61,7 +61,8 @@ class FreeFall(unittest.TestCase):
             self.assertFalse(stretch.enabled)
             self.assertEqual(stretch.calls, 0)
             self.assertEqual(set(scene.all_effect_stats()),
-                             {"stretch", "bend", "damping", "gravity", "mesentery", "pinned"})
+                             {"stretch", "bend", "damping", "gravity", "mesentery", "pinned", "environment",
+                              "self_collision", "tools"})
 
 
 class SameAsTheCApi(unittest.TestCase):

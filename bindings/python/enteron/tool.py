@@ -1,0 +1,137 @@
+"""Surgical tools: rigid capsules driven by the caller (a haptic device, a script) that push
+and grasp the bowel (ent_tool_*).
+
+    with enteron.Scene(...) as scene:
+        tool = scene.add_tool(radius=0.005, max_force=5.0, position=(0.0, 0.05, 0.0125))
+        for i in range(1, 501):
+            tool.set_pose((0.0, 0.05 - 1e-4 * i, 0.0125))   # where the tip is at the end of the step
+            scene.step(0.001)
+            force, torque = tool.wrench()   # on the tool: N, and N m about the tip (render it)
+        if tool.grasp():                    # True if something was within reach
+            ...
+        tool.release()
+
+The tip is at the pose's position; the shaft runs from the tip back along the
+orientation's local +z axis (w x y z; identity: a vertical tool, tip lowest). Every call is
+a driving call, as in C: make it from the thread that steps the scene.
+"""
+import ctypes
+import typing
+
+import numpy as np
+
+from . import _structs as s
+from ._errors import check
+from ._library import lib
+
+#: add_tool's keyword arguments and the ent_tool_desc fields they set (units in the names).
+SETTINGS = {
+    "radius": "radius_m",
+    "length": "length_m",
+    "max_force": "max_force_N",
+    "grasp_margin": "grasp_margin_m",
+    "grasp_stiffness": "grasp_stiffness_N_per_m",
+    "grasp_damping": "grasp_damping_N_s_per_m",
+}
+
+IDENTITY = (1.0, 0.0, 0.0, 0.0)
+
+
+class Wrench(typing.NamedTuple):
+    """What the bowel exerted on a tool in the last step: force (3,) in N and torque (3,)
+    about the tip in N m, both bounded by the tool's max_force. Unpacks as (force, torque)."""
+    force: np.ndarray
+    torque: np.ndarray
+
+
+def _numbers(value, count, name):
+    """`value` as a ctypes array of `count` doubles; ValueError naming `name` if the count is
+    wrong. Non-finite numbers go through: the library refuses them with its own message."""
+    try:
+        numbers = [float(v) for v in value]
+    except TypeError:
+        raise TypeError("%s must be %d numbers, got %r" % (name, count, value)) from None
+    if len(numbers) != count:
+        raise ValueError("%s must be %d numbers, got %d" % (name, count, len(numbers)))
+    return (ctypes.c_double * count)(*numbers)
+
+
+def tool_desc(position=(0.0, 0.0, 0.0), orientation=IDENTITY, **settings):
+    """An ent_tool_desc with the library's defaults (ent_tool_desc_init), then the given
+    pose and settings (the keys of SETTINGS, in SI units)."""
+    desc = s.ent_tool_desc()
+    check(lib.ent_tool_desc_init(ctypes.byref(desc), ctypes.sizeof(desc)), "ent_tool_desc_init")
+    for name, value in settings.items():
+        if name not in SETTINGS:
+            raise TypeError("unknown tool setting %r (expected one of: %s, position, orientation)"
+                            % (name, ", ".join(SETTINGS)))
+        setattr(desc, SETTINGS[name], float(value))
+    desc.position_m[:] = list(_numbers(position, 3, "position"))
+    desc.orientation_wxyz[:] = list(_numbers(orientation, 4, "orientation"))
+    return desc
+
+
+class Tool:
+    """A tool of a scene, named by its id (0, 1, ... in order of addition; the tools of the
+    JSON description come first). Made by Scene.add_tool, Scene.tool(id) or Scene.tools.
+    It keeps its scene alive; once the scene is closed its calls raise ValueError.
+    Failures raise enteron.Error with the library's message."""
+
+    def __init__(self, scene, tool_id):
+        self._scene = scene
+        self._id = int(tool_id)
+        self._grasping_flag = ctypes.c_int32()
+        self._force = (ctypes.c_double * 3)()
+        self._torque = (ctypes.c_double * 3)()
+        # Refuses an id the scene does not have (ENT_ERROR_NOT_FOUND, "tool 5 does not exist ...").
+        check(lib.ent_tool_state(scene._live(), self._id, ctypes.byref(self._grasping_flag)), "ent_tool_state")
+
+    @property
+    def id(self):
+        """The tool's id in its scene (the int32_t of the C API)."""
+        return self._id
+
+    @property
+    def scene(self):
+        return self._scene
+
+    def set_pose(self, position, orientation=IDENTITY):
+        """Sets where the tool is at the end of the next step (ent_tool_set_pose): the tip's
+        position (3 numbers, m) and the orientation (w, x, y, z; normalised by the library).
+        The tool moves continuously there across the step's substeps. Allocates nothing."""
+        check(lib.ent_tool_set_pose(self._scene._live(), self._id, _numbers(position, 3, "position"),
+                                    _numbers(orientation, 4, "orientation")), "ent_tool_set_pose")
+
+    def wrench(self):
+        """The force (N) and the torque about the tip (N m) the bowel exerted on the tool in
+        the last step (ent_tool_wrench), as a Wrench of two new (3,) float64 arrays.
+        Zero before the first step; |force| never exceeds max_force."""
+        check(lib.ent_tool_wrench(self._scene._live(), self._id, self._force, self._torque), "ent_tool_wrench")
+        return Wrench(np.array(self._force[:]), np.array(self._torque[:]))
+
+    def grasp(self):
+        """Grasps the collision sphere nearest the tip if it is within reach (ent_tool_grasp);
+        returns whether the tool now holds the bowel. Grasping again picks anew."""
+        check(lib.ent_tool_grasp(self._scene._live(), self._id), "ent_tool_grasp")
+        return self.grasping
+
+    def release(self):
+        """Releases what the tool holds (ent_tool_release); nothing held: no effect."""
+        check(lib.ent_tool_release(self._scene._live(), self._id), "ent_tool_release")
+
+    @property
+    def grasping(self):
+        """True while a grasp holds; False after a release, a grasp with nothing in reach, or
+        a slip (a hold that needed more than max_force) (ent_tool_state)."""
+        check(lib.ent_tool_state(self._scene._live(), self._id, ctypes.byref(self._grasping_flag)),
+              "ent_tool_state")
+        return bool(self._grasping_flag.value)
+
+    def __eq__(self, other):
+        return isinstance(other, Tool) and other._scene is self._scene and other._id == self._id
+
+    def __hash__(self):
+        return hash((id(self._scene), self._id))
+
+    def __repr__(self):
+        return "<enteron.Tool %d of %r>" % (self._id, self._scene)
