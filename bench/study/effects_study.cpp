@@ -8,7 +8,8 @@
 //    other effect key deleted (what is left: intestine without stiffnesses, solver,
 //    gravity, collision parameters); the pile document with every other effect present
 //    at zero strength (stiffnesses, damping, mesentery and contact stiffness 0, nothing
-//    pinned), which moves exactly alike but still runs them. Per round, each variant's
+//    pinned, one tool parked above the cavity), which moves exactly alike but still runs
+//    them. Per round, each variant's
 //    median step time is divided by the gravity-only one's; the study reports the median
 //    ratio over rounds, and which effects each variant ran (enabled, calls).
 #include "effects_study.h"
@@ -53,7 +54,8 @@ std::string others_zero_json() {
                   " \"collision\": {\"sphere_spacing\": 0, \"stiffness\": 0, \"damping\": 0, \"friction\": 0},"
                   " \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0],"
                   " \"half_extents\": [0.15, 0.15, 0.15]}],"
-                  " \"self_collision\": {}}",
+                  " \"self_collision\": {},"
+                  " \"tools\": [{\"position\": [0, 0, 0.5]}]}",
                   kShape);
 }
 

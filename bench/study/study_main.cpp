@@ -2,7 +2,7 @@
 // Writes CSV files into --out; bench/study/report.py turns them into plots, a markdown
 // table and checks. scripts/study builds and runs both.
 //
-//   enteron_study [--fast | --full] --out DIR [--part mechanics|collision|skin|effects ...]
+//   enteron_study [--fast | --full] --out DIR [--part mechanics|collision|tool|skin|effects ...]
 //
 // --fast (ctest) runs a small grid in a few minutes; --full (the default) is the grid
 // whose results are committed in bench/results/study/.
@@ -11,6 +11,7 @@
 #include "mechanics_study.h"
 #include "skin_study.h"
 #include "study_common.h"
+#include "tool_push_study.h"
 
 #include <cstring>
 #include <ctime>
@@ -22,7 +23,7 @@ namespace {
 
 int usage(const char* message) {
     std::fprintf(stderr, "enteron_study: %s\nusage: enteron_study [--fast | --full] --out DIR [--part NAME]...\n"
-                 "parts: mechanics, collision, skin, effects (default: all)\n", message);
+                 "parts: mechanics, collision, tool, skin, effects (default: all)\n", message);
     return 2;
 }
 
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
     }
     if (options.out_dir.empty()) return usage("--out DIR is required");
     for (const std::string& part : options.parts)
-        if (part != "mechanics" && part != "collision" && part != "skin" && part != "effects")
+        if (part != "mechanics" && part != "collision" && part != "tool" && part != "skin" && part != "effects")
             return usage(("unknown part " + part).c_str());
     if ((ent_version() >> 16) != ENT_VERSION_MAJOR) {
         std::fprintf(stderr, "enteron_study: libenteron major version %u, built for %d\n",
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
         }
         if (options.wants("mechanics")) study::run_mechanics_study(options);
         if (options.wants("collision")) study::run_collision_study(options);
+        if (options.wants("tool")) study::run_tool_push_study(options);
         if (options.wants("skin")) study::run_skin_study(options);
         if (options.wants("effects")) study::run_effects_study(options);
     } catch (const std::exception& error) {
