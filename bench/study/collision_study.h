@@ -1,0 +1,9 @@
+#pragma once
+
+#include "study_common.h"
+
+namespace study {
+
+void run_collision_study(const Options& options);
+
+}  // namespace study

@@ -1,0 +1,9 @@
+#pragma once
+
+#include "study_common.h"
+
+namespace study {
+
+void run_effects_study(const Options& options);
+
+}  // namespace study

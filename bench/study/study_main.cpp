@@ -1,0 +1,83 @@
+// The accuracy study: what each accuracy knob of Enteron buys and what it costs in time.
+// Writes CSV files into --out; bench/study/report.py turns them into plots, a markdown
+// table and checks. scripts/study builds and runs both.
+//
+//   enteron_study [--fast | --full] --out DIR [--part mechanics|collision|tool|skin|effects ...]
+//
+// --fast (ctest) runs a small grid in a few minutes; --full (the default) is the grid
+// whose results are committed in bench/results/study/.
+#include "collision_study.h"
+#include "effects_study.h"
+#include "mechanics_study.h"
+#include "skin_study.h"
+#include "study_common.h"
+#include "tool_push_study.h"
+
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace {
+
+int usage(const char* message) {
+    std::fprintf(stderr, "enteron_study: %s\nusage: enteron_study [--fast | --full] --out DIR [--part NAME]...\n"
+                 "parts: mechanics, collision, tool, skin, effects (default: all)\n", message);
+    return 2;
+}
+
+std::string cpu_model() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(cpuinfo, line))
+        if (line.rfind("model name", 0) == 0) {
+            const auto colon = line.find(':');
+            return colon == std::string::npos ? line : line.substr(colon + 2);
+        }
+    return "unknown";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    study::Options options;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--fast")) options.fast = true;
+        else if (!std::strcmp(argv[i], "--full")) options.fast = false;
+        else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) options.out_dir = argv[++i];
+        else if (!std::strcmp(argv[i], "--part") && i + 1 < argc) options.parts.push_back(argv[++i]);
+        else return usage((std::string("unknown argument ") + argv[i]).c_str());
+    }
+    if (options.out_dir.empty()) return usage("--out DIR is required");
+    for (const std::string& part : options.parts)
+        if (part != "mechanics" && part != "collision" && part != "tool" && part != "skin" && part != "effects")
+            return usage(("unknown part " + part).c_str());
+    if ((ent_version() >> 16) != ENT_VERSION_MAJOR) {
+        std::fprintf(stderr, "enteron_study: libenteron major version %u, built for %d\n",
+                     static_cast<unsigned>(ent_version() >> 16), ENT_VERSION_MAJOR);
+        return 1;
+    }
+    try {
+        std::filesystem::create_directories(options.out_dir);
+        {
+            study::Csv meta(options.out_dir + "/study_run.csv", {"mode", "date_utc", "cpu", "cpus", "library_version"});
+            char date[32];
+            const std::time_t now = std::time(nullptr);
+            std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+            const uint32_t v = ent_version();
+            meta.row({options.fast ? "fast" : "full", date, "\"" + cpu_model() + "\"",
+                      study::num(static_cast<int>(std::thread::hardware_concurrency())),
+                      study::format("%u.%u.%u", v >> 16, (v >> 8) & 0xff, v & 0xff)});
+        }
+        if (options.wants("mechanics")) study::run_mechanics_study(options);
+        if (options.wants("collision")) study::run_collision_study(options);
+        if (options.wants("tool")) study::run_tool_push_study(options);
+        if (options.wants("skin")) study::run_skin_study(options);
+        if (options.wants("effects")) study::run_effects_study(options);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "enteron_study: %s\n", error.what());
+        return 1;
+    }
+    return 0;
+}
