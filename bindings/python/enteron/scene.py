@@ -10,6 +10,7 @@ import numpy as np
 from . import _buffers
 from . import _structs as s
 from ._errors import ERROR_BUFFER_TOO_SMALL, Error, check
+from ._handle import OwnedHandle
 from ._library import lib
 from .tool import Tool, tool_desc
 
@@ -187,7 +188,7 @@ class EffectStats:
     total_time_ns: int
 
 
-class Scene:
+class Scene(OwnedHandle):
     """A simulated intestine (ent_scene).
 
     Scene('{"intestine": {...}}')       from JSON text (str or bytes)
@@ -239,25 +240,6 @@ class Scene:
             for skin in list(getattr(self, "_skins", ())):
                 skin.close()
             lib.ent_scene_destroy(handle)
-
-    @property
-    def closed(self):
-        return not self._handle
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def __del__(self):
-        self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("operation on a closed enteron.Scene")
-        return self._handle
 
     # ---- driving --------------------------------------------------------------------------
     def step(self, dt_s):

@@ -19,6 +19,7 @@ import numpy as np
 from . import _buffers
 from . import _structs as s
 from ._errors import check
+from ._handle import OwnedHandle
 from ._library import lib
 
 SKIN_TUBE = 0
@@ -82,7 +83,7 @@ class SkinMetrics:
     last_update_ns: int
 
 
-class Skin:
+class Skin(OwnedHandle):
     """A skin of a scene (ent_skin).
 
     Skin(scene, "convolution", segments=24, ring_spacing_radii=0.5)
@@ -120,25 +121,6 @@ class Skin:
         handle, self._handle = getattr(self, "_handle", None), None
         if handle:
             lib.ent_skin_destroy(handle)
-
-    @property
-    def closed(self):
-        return not self._handle
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def __del__(self):
-        self.close()
-
-    def _live(self):
-        if not self._handle:
-            raise ValueError("operation on a closed enteron.Skin")
-        return self._handle
 
     # ---- the mesh -------------------------------------------------------------------------
     def update(self):
