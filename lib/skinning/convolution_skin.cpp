@@ -7,10 +7,6 @@
 
 namespace enteron::skinning {
 
-namespace {
-constexpr double kTwoPi = 6.28318530717958647692;
-}  // namespace
-
 ConvolutionSkin::ConvolutionSkin(const SkinSettings& settings) : Skin(settings) {
     // Calibration: the windowed field of a straight skeleton (segments of the skeleton
     // spacing along x, clipped to [-D, D]) at distance R from it.
@@ -79,17 +75,9 @@ void ConvolutionSkin::rebuild() {
     rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
     const std::size_t n = rings_.size();
     frames_.build(&rings_.position(0), &rings_.tangent(0), n);
+    if (grid_.segments() != S) previous_rings_ = 0;  // new vertex directions: no previous solution
     grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
     mesh_.resize_vertices(grid_.vertex_count());
-    if (cosine_.size() != S) {
-        cosine_.resize(S);
-        sine_.resize(S);
-        for (std::size_t j = 0; j < S; ++j) {
-            cosine_[j] = std::cos(kTwoPi * double(j) / double(S));
-            sine_[j] = std::sin(kTwoPi * double(j) / double(S));
-        }
-        previous_rings_ = 0;
-    }
 
     // Starting radii: last frame's, resampled by u when the number of rings changed.
     radius_.resize(n * S);
@@ -116,7 +104,7 @@ void ConvolutionSkin::rebuild() {
         const float u = float(length > 0.0 ? s / length : 0.0);
         const std::size_t row = grid_.body_row(k);
         for (std::size_t j = 0; j < S; ++j) {
-            const Vec3 direction = cosine_[j] * nrm + sine_[j] * bin;
+            const Vec3 direction = grid_.cosine(j) * nrm + grid_.sine(j) * bin;
             const double r = solve_ray(centre, direction, radius_[k * S + j]);
             radius_[k * S + j] = r;
             const std::size_t v = grid_.vertex(row, j);
@@ -144,7 +132,7 @@ void ConvolutionSkin::rebuild() {
         }
         const double phi = grid_.cap_angle(row);
         for (std::size_t j = 0; j < S; ++j) {
-            const Vec3 direction = std::cos(phi) * (cosine_[j] * nrm + sine_[j] * bin) + std::sin(phi) * t;
+            const Vec3 direction = std::cos(phi) * (grid_.cosine(j) * nrm + grid_.sine(j) * bin) + std::sin(phi) * t;
             const std::size_t v = grid_.vertex(row, j);
             store_vec3(mesh_.positions, v, centre + radius_[k * S + j] * direction);
             mesh_.u[v] = u;

@@ -49,7 +49,6 @@ private:
     RingGrid grid_;
     std::vector<Vec3> window_;               // segment end points, pairs
     std::vector<double> radius_, previous_;  // solved ray length per (body ring, segment)
-    std::vector<double> cosine_, sine_;
     std::size_t previous_rings_ = 0;
     std::size_t evaluations_ = 0;
 };

@@ -6,6 +6,7 @@ namespace enteron::skinning {
 
 namespace {
 constexpr double kHalfPi = 1.57079632679489661923;
+constexpr double kTwoPi = 6.28318530717958647692;
 }
 
 bool RingGrid::layout(std::size_t body_rings, std::size_t segments, std::size_t cap_rings,
@@ -13,6 +14,14 @@ bool RingGrid::layout(std::size_t body_rings, std::size_t segments, std::size_t 
     if (body_rings == body_rings_ && segments == segments_ && cap_rings == cap_rings_ && !indices.empty())
         return false;
     body_rings_ = body_rings;
+    if (segments != segments_) {
+        cosine_.resize(segments);
+        sine_.resize(segments);
+        for (std::size_t j = 0; j < segments; ++j) {
+            cosine_[j] = std::cos(kTwoPi * double(j) / double(segments));
+            sine_[j] = std::sin(kTwoPi * double(j) / double(segments));
+        }
+    }
     segments_ = segments;
     cap_rings_ = cap_rings;
     indices.clear();

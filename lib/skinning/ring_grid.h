@@ -15,7 +15,8 @@ namespace enteron::skinning {
 
 class RingGrid {
 public:
-    // Rebuilds the triangle indices when the shape of the grid changed; returns true then.
+    // Rebuilds the triangle indices (and, for a new segment count, the ring's angles) when
+    // the shape of the grid changed; returns true then.
     bool layout(std::size_t body_rings, std::size_t segments, std::size_t cap_rings, std::vector<uint32_t>& indices);
 
     std::size_t rows() const { return body_rings_ + 2 * cap_rings_ + 2; }
@@ -34,6 +35,9 @@ public:
     // Polar angle, from the equator of the cap towards its pole, of row r of a cap (rad);
     // 0 for body rows. Sign: negative on the first cap (towards -t), positive on the last.
     double cap_angle(std::size_t row) const;
+    // cos and sin of the angle of vertex j around a ring, 2 pi j / segments.
+    double cosine(std::size_t j) const { return cosine_[j]; }
+    double sine(std::size_t j) const { return sine_[j]; }
 
     // Outward vertex normals from central differences on the grid (the positions of a ring
     // and of its neighbouring rows); the poles take the end tangents.
@@ -41,6 +45,7 @@ public:
 
 private:
     std::size_t body_rings_ = 0, segments_ = 0, cap_rings_ = 0;
+    std::vector<double> cosine_, sine_;
 };
 
 }  // namespace enteron::skinning

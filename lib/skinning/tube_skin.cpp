@@ -4,10 +4,6 @@
 
 namespace enteron::skinning {
 
-namespace {
-constexpr double kTwoPi = 6.28318530717958647692;
-}  // namespace
-
 void TubeSkin::rebuild() {
     const double R = settings_.radius;
     const std::size_t S = settings_.segments;
@@ -16,14 +12,6 @@ void TubeSkin::rebuild() {
     frames_.build(&rings_.position(0), &rings_.tangent(0), n);
     grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
     mesh_.resize_vertices(grid_.vertex_count());
-    if (cosine_.size() != S) {
-        cosine_.resize(S);
-        sine_.resize(S);
-        for (std::size_t j = 0; j < S; ++j) {
-            cosine_[j] = std::cos(kTwoPi * double(j) / double(S));
-            sine_[j] = std::sin(kTwoPi * double(j) / double(S));
-        }
-    }
     const double length = rings_.length();
     for (std::size_t row = 0; row < grid_.rows(); ++row) {
         // Body rows sit on their ring; cap rows on a hemisphere around an end point.
@@ -37,7 +25,7 @@ void TubeSkin::rebuild() {
         const std::size_t count = pole ? 1 : S;
         for (std::size_t j = 0; j < count; ++j) {
             Vec3 direction = pole ? (row == 0 ? -1.0 * t : t)
-                                  : std::cos(phi) * (cosine_[j] * nrm + sine_[j] * bin) + std::sin(phi) * t;
+                                  : std::cos(phi) * (grid_.cosine(j) * nrm + grid_.sine(j) * bin) + std::sin(phi) * t;
             const std::size_t v = grid_.vertex(row, j);
             store_vec3(mesh_.positions, v, centre + R * direction);
             store_vec3(mesh_.normals, v, direction);

@@ -22,7 +22,6 @@ private:
     AxisSamples rings_;
     RotationMinimizingFrames frames_;
     RingGrid grid_;
-    std::vector<double> cosine_, sine_;
 };
 
 }  // namespace enteron::skinning
