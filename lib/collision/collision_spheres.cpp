@@ -33,35 +33,52 @@ void CollisionSpheres::update(const double* control_points) {
     if (placed_ && std::equal(placed_for_.begin(), placed_for_.end(), control_points)) return;
     std::copy(control_points, control_points + placed_for_.size(), placed_for_.begin());
     placed_ = true;
-    const std::size_t samples = sample_weights_.size();
+    placement_ += 1;
+    // The polyline: kSamplesPerSegment + 1 samples per segment (its two ends included), and
+    // the arc length at each.
+    constexpr std::size_t kPerSegment = kSamplesPerSegment + 1;
+    const std::size_t segments = sample_weights_.size() / kPerSegment;
     double arc = 0.0;
-    for (std::size_t i = 0; i < samples; ++i) {
-        double* p = &sample_points_[3 * i];
-        spline::evaluate(control_points, sample_weights_[i], p);
-        // The first sample of a segment repeats the last one of the previous segment.
-        if (i > 0 && i % (kSamplesPerSegment + 1) != 0) {
-            const double* prev = p - 3;
-            arc += std::sqrt((p[0] - prev[0]) * (p[0] - prev[0]) + (p[1] - prev[1]) * (p[1] - prev[1]) +
-                             (p[2] - prev[2]) * (p[2] - prev[2]));
+    for (std::size_t segment = 0; segment < segments; ++segment) {
+        const std::size_t first = segment * kPerSegment;
+        double* p = &sample_points_[3 * first];
+        spline::evaluate(control_points, sample_weights_[first], p);
+        sample_arc_[first] = arc;  // the first sample repeats the last of the segment before
+        for (std::size_t k = 1; k < kPerSegment; ++k) {
+            p += 3;
+            spline::evaluate(control_points, sample_weights_[first + k], p);
+            const double d[3] = {p[0] - p[-3], p[1] - p[-2], p[2] - p[-1]};
+            arc += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            sample_arc_[first + k] = arc;
         }
-        sample_arc_[i] = arc;
     }
+    // The spheres, evenly spread over the length: walk the polyline's intervals (never the
+    // zero-length step from a segment's last sample to the next one's first).
     const double total = arc;
     const std::size_t count = spheres_.size();
-    std::size_t interval = 0;  // sample index of the interval's start
+    const double spacing = total / double(count - 1);
+    std::size_t segment = 0, k = 0;  // the interval from sample (segment, k) to (segment, k + 1)
     for (std::size_t j = 0; j < count; ++j) {
-        const double target = total * double(j) / double(count - 1);
-        while (interval + 2 < samples &&
-               ((interval + 1) % (kSamplesPerSegment + 1) == 0 || sample_arc_[interval + 1] < target))
-            ++interval;
-        if ((interval + 1) % (kSamplesPerSegment + 1) == 0) --interval;  // never across a segment joint
+        const double target = spacing * double(j);
+        for (;;) {
+            const std::size_t next = segment * kPerSegment + k + 1;
+            if (sample_arc_[next] >= target) break;
+            if (k + 1 < kSamplesPerSegment) {
+                ++k;
+            } else if (segment + 1 < segments) {
+                ++segment, k = 0;
+            } else {
+                break;  // the far end (round-off)
+            }
+        }
+        const std::size_t interval = segment * kPerSegment + k;
         const double a0 = sample_arc_[interval], a1 = sample_arc_[interval + 1];
         const double t = a1 > a0 ? std::clamp((target - a0) / (a1 - a0), 0.0, 1.0) : 0.0;
         const spline::SegmentWeights& w0 = sample_weights_[interval];
         const spline::SegmentWeights& w1 = sample_weights_[interval + 1];
         Sphere& sphere = spheres_[j];
         sphere.weights.first = w0.first;
-        for (int k = 0; k < 4; ++k) sphere.weights.w[k] = (1.0 - t) * w0.w[k] + t * w1.w[k];
+        for (int c = 0; c < 4; ++c) sphere.weights.w[c] = (1.0 - t) * w0.w[c] + t * w1.w[c];
         const double* p0 = &sample_points_[3 * interval];
         for (int c = 0; c < 3; ++c) sphere.center[c] = (1.0 - t) * p0[c] + t * p0[3 + c];
         sphere.arc_length = target;

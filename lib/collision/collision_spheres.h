@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory_resource>
 #include <vector>
 
@@ -33,6 +34,9 @@ public:
     // that make contacts share one set of spheres and each calls this for the state it
     // evaluates: only the first call for given control points does the work.
     void update(const double* control_points);
+    // Counts the updates that moved the spheres: equal values, the same placement (lets an
+    // effect reuse what it found for these spheres).
+    uint64_t placement() const { return placement_; }
 
     std::size_t size() const { return spheres_.size(); }
     const Sphere& operator[](std::size_t i) const { return spheres_[i]; }
@@ -55,6 +59,7 @@ private:
     std::pmr::vector<Sphere> spheres_;
     std::pmr::vector<double> placed_for_;  // the control points of the last update
     bool placed_ = false;
+    uint64_t placement_ = 0;
 };
 
 }  // namespace enteron::collision

@@ -6,15 +6,13 @@
 
 namespace enteron::collision {
 
-using mechanics::add_axial_block;
-using mechanics::add_point_force;
-
 EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParameters& contact,
                                    const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
                                    std::pmr::memory_resource* memory)
     : spheres_(spheres),
       contact_(contact),
-      obstacles_(memory) {
+      obstacles_(memory),
+      loads_(spheres_.size(), memory) {
     obstacles_.reserve(obstacles.size());
     for (const Obstacle& obstacle : obstacles) add_obstacle(obstacle);
     spheres_.update(initial.q.data());  // the stability bounds use the spheres' weights
@@ -32,30 +30,30 @@ void EnvironmentForce::add_obstacle(const Obstacle& obstacle) {
 void EnvironmentForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
     spheres_.update(state.q.data());
     last_ = {};
+    loads_.clear();
     const double r = spheres_.radius();
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const Sphere& sphere = spheres_[i];
         double v[3];
-        spline::evaluate(state.v.data(), sphere.weights, v);
+        bool have_velocity = false;  // most spheres touch nothing
         for (const Obstacle& obstacle : obstacles_) {
             for_each_contact(obstacle, sphere.center, r, [&](const ObstacleContact& c) {
+                if (!have_velocity) spline::evaluate(state.v.data(), sphere.weights, v), have_velocity = true;
                 const ContactForce f = contact_force(contact_, c.depth, c.normal, v);
-                add_point_force(sphere.weights, f.force, force);
                 last_.count += 1;
                 last_.max_penetration = std::max(last_.max_penetration, c.depth);
-                if (lin == nullptr) return;
-                const double h = lin->h;
+                if (lin == nullptr) {
+                    loads_.add_force(i, f.force);
+                    return;
+                }
                 // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I.
-                add_axial_block(*lin->system, sphere.weights, c.normal,
-                                h * h * f.stiffness + h * f.damping - h * f.friction_damping,
-                                h * f.friction_damping, 1.0);
-                const double vn = v[0] * c.normal[0] + v[1] * c.normal[1] + v[2] * c.normal[2];
-                const double hv[3] = {f.stiffness * vn * c.normal[0], f.stiffness * vn * c.normal[1],
-                                      f.stiffness * vn * c.normal[2]};
-                add_point_force(sphere.weights, hv, lin->stiffness_times_velocity);
+                const double h = lin->h;
+                loads_.add(i, f.force, c.normal, h * h * f.stiffness + h * f.damping - h * f.friction_damping,
+                           h * f.friction_damping, f.stiffness, v);
             });
         }
     }
+    loads_.apply(spheres_, force, lin);
 }
 
 double EnvironmentForce::potential_energy(const mechanics::State& state) const {

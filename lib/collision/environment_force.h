@@ -10,6 +10,7 @@
 #include "collision/collision_spheres.h"
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
+#include "collision/sphere_loads.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
@@ -41,6 +42,7 @@ private:
     CollisionSpheres& spheres_;  // shared with the other contact effects
     ContactParameters contact_;
     std::pmr::vector<Obstacle> obstacles_;
+    SphereLoads loads_;
     mechanics::ContactSummary last_;
 };
 

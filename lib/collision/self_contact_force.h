@@ -1,8 +1,10 @@
 // Contact of the bowel with itself: two collision spheres closer than 2R push apart with
 // the penalty law of contact_model.h. Spheres nearer each other along the axis than
-// pi R are neighbours, not folds, and are skipped: on the tightest bend a tube can make
-// (radius R) two points pi R apart along the axis are exactly 2R apart, so the window
-// never hides a real contact, and the legs of a U-turn that touch still collide.
+// pi R (at rest) are neighbours, not folds, and are skipped: on the tightest bend a tube
+// can make (radius R) two points pi R apart along the axis are exactly 2R apart, so the
+// window never hides a real contact, and the legs of a U-turn that touch still collide.
+// The window is counted in spheres (material, not current, arc length): stretching the
+// bowel never turns two neighbours into a contact of a sudden.
 //
 // A pair couples control points far apart along the axis, outside the implicit system's
 // band: each sphere's own share of the contact stiffness goes into the system (so the
@@ -17,6 +19,7 @@
 #include "collision/collision_spheres.h"
 #include "collision/contact_model.h"
 #include "collision/spatial_hash.h"
+#include "collision/sphere_loads.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
@@ -35,29 +38,67 @@ public:
     void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
 
-    // The arc-length window within which spheres never collide, m.
+    // The arc-length window at rest within which spheres never collide, m.
     double neighbour_window() const { return window_; }
-    // How many times the grid was searched (the list of near pairs remade).
-    uint64_t grid_searches() const { return searches_; }
+    // Spheres fewer than this many apart along the axis never collide.
+    std::size_t neighbour_spheres() const { return neighbour_spheres_; }
+    // How many times the grid was searched: for every sphere (the list of near pairs
+    // remade) or for the spheres that moved only (their pairs remade).
+    uint64_t grid_searches() const { return searches_ + moved_searches_; }
+    uint64_t moved_sphere_searches() const { return moved_searches_; }
 
 private:
-    // Places the spheres for `state` and makes sure the list holds every pair (outside the
-    // neighbour window) closer than 2R: it searches the grid for the pairs closer than 3R
-    // again only when a sphere has moved more than R / 2 since the last search.
-    void find_near_pairs(const mechanics::State& state) const;
-    // Calls visit(a, b, depth, normal) for every listed pair in contact (normal b to a).
+    // A pair of spheres in contact: depth (m) and the unit normal from b to a.
+    struct Contact {
+        uint32_t a, b;
+        double depth;
+        double normal[3];
+    };
+
+    // Makes sure the list holds every pair of the placed spheres (outside the neighbour
+    // window) closer than 2R. Each sphere keeps the pairs closer than 3R found at its last
+    // search; only the spheres that moved more than R / 3 since then search again (all at
+    // once, from scratch, when many did).
+    void find_near_pairs() const;
+    // Lists every pair within 3R again (after a large motion, or when the list overflowed).
+    void search_all_near_pairs() const;
+    // Replaces the pairs of the spheres in moved_ by those within 3R of them now.
+    void search_moved_near_pairs() const;
+    // Finds the contacts of the spheres placed for `state`, once per placement: the guard's
+    // energy after a step and the next step's forces see the same positions.
+    void find_contacts(const mechanics::State& state) const;
+    // Calls visit(a, b, depth, normal) for every pair of the current spheres in contact,
+    // from the listed near pairs or, when the list overflowed, from the grid.
+    template <class Visit>
+    void search_contacts(Visit&& visit) const;
+    // Calls visit(a, b, depth, normal) for every contact found by find_contacts.
     template <class Visit>
     void for_each_contact(Visit&& visit) const;
 
     CollisionSpheres& spheres_;  // shared with the other contact effects
-    mutable std::pmr::vector<double> centers_;  // the spheres' centres at the last search, x y z each
-    mutable uint64_t searches_ = 0;
+    mutable std::pmr::vector<double> centers_;  // each sphere's centre at its last search, x y z
+    mutable std::pmr::vector<double> positions_;  // the current centres, x y z, packed
+    mutable std::pmr::vector<uint32_t> moved_;    // spheres due to search again
+    mutable std::pmr::vector<uint8_t> is_moved_;  // 1 for the spheres in moved_
+    mutable uint64_t searches_ = 0;        // of every sphere
+    mutable uint64_t moved_searches_ = 0;  // of the moved spheres only
     mutable SpatialHash grid_;
-    // Pairs closer than 3R at the last search (centers_).
+    // Pairs closer than 3R at the last search of either sphere, a < b.
     mutable std::pmr::vector<std::pair<uint32_t, uint32_t>> near_pairs_;
     mutable bool near_pairs_complete_ = false;
+    // The contacts of the placement contacts_for_; complete unless the list overflowed
+    // (then each use searches again).
+    mutable std::pmr::vector<Contact> contacts_;
+    mutable uint64_t contacts_for_ = 0;
+    mutable bool contacts_found_ = false;
+    mutable bool contacts_complete_ = false;
+    SphereLoads loads_;
     ContactParameters contact_;
     double window_;
+    std::size_t neighbour_spheres_;
+    bool neighbours(std::size_t i, std::size_t j) const {
+        return (i > j ? i - j : j - i) < neighbour_spheres_;
+    }
     mechanics::ContactSummary last_;
 };
 

@@ -25,8 +25,11 @@ SpatialHash::SpatialHash(std::size_t capacity, double cell, std::pmr::memory_res
 std::array<int64_t, 3> SpatialHash::cell_of(const double* p) const {
     // Far-away or non-finite coordinates land in some cell; the distance test sorts them out.
     auto index = [&](double x) {
-        const double scaled = std::floor(x * inverse_cell_);
-        return std::isfinite(scaled) && std::fabs(scaled) < 1e15 ? static_cast<int64_t>(scaled) : int64_t{0};
+        const double scaled = x * inverse_cell_;
+        if (!(std::fabs(scaled) < 1e15)) return int64_t{0};  // also NaN
+        // floor without a library call (baseline x86-64 has no rounding instruction)
+        const auto truncated = static_cast<int64_t>(scaled);
+        return static_cast<double>(truncated) > scaled ? truncated - 1 : truncated;
     };
     return {index(p[0]), index(p[1]), index(p[2])};
 }

@@ -25,6 +25,11 @@ public:
     template <class Visit>
     void for_each_candidate_pair(Visit&& visit) const;
 
+    // Calls visit(j) for every point j in the cell of point i or a neighbouring one (a
+    // superset of the points closer than a cell to point i), i itself included.
+    template <class Visit>
+    void for_each_neighbour(std::size_t i, Visit&& visit) const;
+
 private:
     std::array<int64_t, 3> cell_of(const double* p) const;
     std::size_t bucket_of(int64_t x, int64_t y, int64_t z) const;
@@ -72,6 +77,22 @@ void SpatialHash::for_each_candidate_pair(Visit&& visit) const {
             }
         }
     }
+}
+
+template <class Visit>
+void SpatialHash::for_each_neighbour(std::size_t i, Visit&& visit) const {
+    const auto& c = point_cell_[i];
+    for (int64_t dx = -1; dx <= 1; ++dx)
+        for (int64_t dy = -1; dy <= 1; ++dy)
+            for (int64_t dz = -1; dz <= 1; ++dz) {
+                const int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+                const std::size_t b = bucket_of(x, y, z);
+                const uint64_t key = key_of(x, y, z);
+                for (uint32_t slot = bucket_start_[b]; slot < bucket_start_[b + 1]; ++slot) {
+                    const uint32_t j = order_[slot];
+                    if (point_key_[j] == key) visit(static_cast<std::size_t>(j));
+                }
+            }
 }
 
 }  // namespace enteron::collision

@@ -86,6 +86,42 @@ void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& we
     }
 }
 
+void SegmentBlock::reset(std::size_t first) {
+    first_ = first;
+    for (auto& sum : sums_)
+        for (double& v : sum) v = 0.0;
+}
+
+void SegmentBlock::add(const spline::SegmentWeights& weights, const double s[6]) {
+    // Local copies: the compiler need not assume that s or the weights alias the sums.
+    const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
+    const double m[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
+    int pair = 0;
+#pragma GCC unroll 4
+    for (int j = 0; j < 4; ++j)
+#pragma GCC unroll 4
+        for (int k = 0; k <= j; ++k, ++pair) {
+            const double wjk = w[j] * w[k];
+            for (int e = 0; e < 6; ++e) sums_[pair][e] += wjk * m[e];
+        }
+}
+
+void SegmentBlock::add_to(SystemMatrix& system) const {
+    // Index into the packed lower triangle of a symmetric 3 x 3 for row r, column c.
+    static constexpr int kPacked[3][3] = {{0, 1, 3}, {1, 2, 4}, {3, 4, 5}};
+    constexpr int kStep = static_cast<int>(SystemMatrix::kRowStride) - 1;
+    double* block = &system.lower(3 * first_, 3 * first_);
+    int pair = 0;
+    for (int j = 0; j < 4; ++j)
+        for (int k = 0; k <= j; ++k, ++pair)
+            for (int r = 0; r < 3; ++r) {
+                double* row = block + kStep * (3 * j + r) + 3 * k;
+                // The diagonal point block is stored only up to its own diagonal.
+                const int columns = j == k ? r + 1 : 3;
+                for (int c = 0; c < columns; ++c) row[c] += sums_[pair][kPacked[r][c]];
+            }
+}
+
 }  // namespace enteron::mechanics
 
 namespace enteron::mechanics {

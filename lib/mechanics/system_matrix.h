@@ -31,6 +31,24 @@ void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& we
                           double a0, double b0, const spline::SegmentWeights& weights1, const double u1[3],
                           double a1, double b1);
 
+// The blocks of several spline points on the same four control points, each with its own
+// symmetric 3 x 3 matrix S_m (a point that sums several contacts): collects
+// sum_m (w_m w_m^T) (x) S_m and adds it to the system once, instead of one pass over the
+// band per contact.
+class SegmentBlock {
+public:
+    // Starts an empty block on the control points first .. first+3.
+    void reset(std::size_t first);
+    std::size_t first() const { return first_; }
+    // S given by its lower triangle: xx, yx, yy, zx, zy, zz.
+    void add(const spline::SegmentWeights& weights, const double s[6]);
+    void add_to(SystemMatrix& system) const;
+
+private:
+    std::size_t first_ = 0;
+    double sums_[10][6] = {};  // point pairs (j, k <= j) by sums_[j (j + 1) / 2 + k]
+};
+
 // out = a (u . x) u + b x: H x for H = a u u^T + b I.
 inline void axial_times(const double u[3], double a, double b, const double x[3], double out[3]) {
     const double along = a * (u[0] * x[0] + u[1] * x[1] + u[2] * x[2]);

@@ -176,11 +176,9 @@ TEST(SelfContact, TwoCrossingFoldsPushApart) {
     EXPECT_GT(upper, 0.0);
 }
 
-TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
-    // A crumpled axis (a random walk in a 12 cm box) that keeps moving a little: the effect
-    // that lives through the moves (and searches its grid again only when a sphere has
-    // moved R / 2) must give the same contacts and forces as a new effect each time.
-    std::mt19937 random(11);
+// A crumpled axis: 100 control points 1 cm apart, a random walk inside the cube of half
+// edge `half_box` (m) centred on the origin.
+std::vector<double> crumpled_points(std::mt19937& random, double half_box) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     std::vector<double> points{0.0, 0.0, 0.0};
     for (int i = 1; i < 100; ++i) {
@@ -188,31 +186,76 @@ TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
         for (double& c : step) c = unit(random), norm += c * c;
         for (int c = 0; c < 3; ++c) {
             double next = points[3 * (i - 1) + c] + 0.01 * step[c] / std::sqrt(norm);
-            if (std::fabs(next) > 0.06) next = points[3 * (i - 1) + c] - 0.01 * step[c] / std::sqrt(norm);
+            if (std::fabs(next) > half_box) next = points[3 * (i - 1) + c] - 0.01 * step[c] / std::sqrt(norm);
             points.push_back(next);
         }
     }
-    Axis axis(points);
+    return points;
+}
+
+// The effect that lived through the moves gives the contacts and forces of a new one.
+void expect_same_as_fresh(SelfContactForce& kept, const Axis& axis, int move) {
+    std::vector<double> f_kept(axis.state.q.size(), 0.0), f_fresh;
+    kept.evaluate(axis.state, f_kept.data(), nullptr);
+    ContactSummary with_kept;
+    kept.add_contacts(with_kept);
+    const ContactSummary fresh = axis.contacts(&f_fresh);
+    ASSERT_GT(fresh.count, 20u);
+    ASSERT_EQ(with_kept.count, fresh.count) << "move " << move;
+    EXPECT_EQ(with_kept.max_penetration, fresh.max_penetration);
+    for (std::size_t i = 0; i < f_fresh.size(); ++i) EXPECT_NEAR(f_kept[i], f_fresh[i], 1e-12) << "move " << move;
+}
+
+TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
+    // A crumpled axis (a random walk in a 16 cm box) that keeps moving a little: the effect
+    // that lives through the moves (and searches its grid again only when a sphere has
+    // moved R / 3) must give the same contacts and forces as a new effect each time.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Axis axis(crumpled_points(random, 0.08));
     CollisionSpheres spheres = axis.make_spheres();
     SelfContactForce kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource());
     const int moves = 60;
     for (int move = 0; move < moves; ++move) {
-        for (double& q : axis.state.q) q += 0.0005 * unit(random);  // up to 0.5 mm a move
-        std::vector<double> f_kept(axis.state.q.size(), 0.0), f_fresh;
-        kept.evaluate(axis.state, f_kept.data(), nullptr);
-        ContactSummary with_kept;
-        kept.add_contacts(with_kept);
-        const ContactSummary fresh = axis.contacts(&f_fresh);
-        ASSERT_GT(fresh.count, 20u);
-        ASSERT_EQ(with_kept.count, fresh.count) << "move " << move;
-        EXPECT_EQ(with_kept.max_penetration, fresh.max_penetration);
-        for (std::size_t i = 0; i < f_fresh.size(); ++i) EXPECT_NEAR(f_kept[i], f_fresh[i], 1e-12) << "move " << move;
+        for (double& q : axis.state.q) q += 0.0003 * unit(random);  // up to 0.3 mm a move
+        expect_same_as_fresh(kept, axis, move);
+        if (HasFatalFailure()) return;
     }
-    // 60 moves of up to 0.5 mm per coordinate drift some sphere past R / 2 a few times, not
-    // at every move.
+    // 60 moves of up to 0.3 mm per coordinate (which also change the length, and so slide
+    // every sphere along the axis) drift some sphere past R / 3 often, but not at every move.
     std::cout << "[ near pairs ] " << kept.grid_searches() << " grid searches in " << moves << " moves\n";
     EXPECT_GT(kept.grid_searches(), 1u);
-    EXPECT_LT(kept.grid_searches(), std::uint64_t(moves / 2));
+    EXPECT_LT(kept.grid_searches(), std::uint64_t(moves));
+}
+
+TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
+    // A crumpled axis (a random walk in a 20 cm box: sparser than a pile, so that the list
+    // of near pairs never overflows) at rest but for its last 16 control points, which
+    // turn as one piece about the one before them (lengths nearly kept; the spheres are
+    // spread by arc length, so a change of length would slide them all) and sweep
+    // through the others by up to a few mm a move: those spheres search the grid again on
+    // their own, the rest keep their pairs, and the contacts and forces must equal a fresh
+    // search at every move.
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Axis axis(crumpled_points(random, 0.1));
+    CollisionSpheres spheres = axis.make_spheres();
+    SelfContactForce kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource());
+    const double angle = 0.02;  // rad a move, about z through control point 83
+    const double pivot[2] = {axis.state.q[3 * 83], axis.state.q[3 * 83 + 1]};
+    const int moves = 40;
+    for (int move = 0; move < moves; ++move) {
+        for (std::size_t i = 84; i < 100; ++i) {
+            const double x = axis.state.q[3 * i] - pivot[0], y = axis.state.q[3 * i + 1] - pivot[1];
+            axis.state.q[3 * i] = pivot[0] + std::cos(angle) * x - std::sin(angle) * y;
+            axis.state.q[3 * i + 1] = pivot[1] + std::sin(angle) * x + std::cos(angle) * y;
+        }
+        expect_same_as_fresh(kept, axis, move);
+        if (HasFatalFailure()) return;
+    }
+    std::cout << "[ near pairs ] " << kept.moved_sphere_searches() << " searches of moved spheres, "
+              << kept.grid_searches() << " in all, in " << moves << " moves\n";
+    EXPECT_GT(kept.moved_sphere_searches(), 5u);
 }
 
 }  // namespace
