@@ -14,7 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 // explicit integrators' stable substep).
 constexpr double kMaxContactsPerSphere = 6.0;
 // Pairs are listed up to (2 + this) R apart, the grid's cell size.
-constexpr double kNearMargin = 1.0;
+constexpr double kNearMargin = 0.5;
 }  // namespace
 
 SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact,
@@ -31,7 +31,7 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
       contact_(contact),
       window_(kPi * spheres_.radius()),
       neighbour_spheres_(static_cast<std::size_t>(std::ceil(window_ / spheres_.rest_spacing() - 1e-9))) {
-    // Room for the densest pile: spheres of radius R whose centres lie within 3R of one
+    // Room for the densest pile: spheres of radius R whose centres lie within 2.5R of one
     // sphere number at most about 40 (volume ratio), each pair listed once. The contacts
     // are among the listed pairs.
     near_pairs_.reserve(40 * spheres_.size());
@@ -41,11 +41,11 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
 }
 
 void SelfContactForce::find_near_pairs() const {
-    // Why a sphere may wait until it moved R / 3: take a pair not listed, and the later of
-    // the two spheres' last searches; the pair was at least 3R apart then. Since then
-    // that sphere moved at most R / 3, and the other at most 2R / 3 (R / 3 on each side of
-    // its own last search, which came before). They closed in by at most R, so they are
-    // still at least 2R apart: not in contact.
+    // Why a sphere may wait until it moved mR / 3 (m the margin, R / 6): take a pair not
+    // listed, and the later of the two spheres' last searches; the pair was at least
+    // (2 + m) R apart then. Since then that sphere moved at most mR / 3, and the other at
+    // most 2mR / 3 (mR / 3 on each side of its own last search, which came before). They
+    // closed in by at most mR, so they are still at least 2R apart: not in contact.
     if (near_pairs_complete_) {
         const double limit = kNearMargin * spheres_.radius() / 3.0;
         moved_.clear();

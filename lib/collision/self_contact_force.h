@@ -56,13 +56,13 @@ private:
     };
 
     // Makes sure the list holds every pair of the placed spheres (outside the neighbour
-    // window) closer than 2R. Each sphere keeps the pairs closer than 3R found at its last
-    // search; only the spheres that moved more than R / 3 since then search again (all at
-    // once, from scratch, when many did).
+    // window) closer than 2R. Each sphere keeps the pairs closer than 2.5R found at its
+    // last search; only the spheres that moved more than R / 6 since then search again
+    // (all at once, from scratch, when many did).
     void find_near_pairs() const;
-    // Lists every pair within 3R again (after a large motion, or when the list overflowed).
+    // Lists every pair within 2.5R again (after a large motion, or when the list overflowed).
     void search_all_near_pairs() const;
-    // Replaces the pairs of the spheres in moved_ by those within 3R of them now.
+    // Replaces the pairs of the spheres in moved_ by those within 2.5R of them now.
     void search_moved_near_pairs() const;
     // Finds the contacts of the spheres placed for `state`, once per placement: the guard's
     // energy after a step and the next step's forces see the same positions.
@@ -83,7 +83,7 @@ private:
     mutable uint64_t searches_ = 0;        // of every sphere
     mutable uint64_t moved_searches_ = 0;  // of the moved spheres only
     mutable SpatialHash grid_;
-    // Pairs closer than 3R at the last search of either sphere, a < b.
+    // Pairs closer than 2.5R at the last search of either sphere, a < b.
     mutable std::pmr::vector<std::pair<uint32_t, uint32_t>> near_pairs_;
     mutable bool near_pairs_complete_ = false;
     // The contacts of the placement contacts_for_; complete unless the list overflowed

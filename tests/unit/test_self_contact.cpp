@@ -209,7 +209,7 @@ void expect_same_as_fresh(SelfContactForce& kept, const Axis& axis, int move) {
 TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
     // A crumpled axis (a random walk in a 16 cm box) that keeps moving a little: the effect
     // that lives through the moves (and searches its grid again only when a sphere has
-    // moved R / 3) must give the same contacts and forces as a new effect each time.
+    // moved R / 6) must give the same contacts and forces as a new effect each time.
     std::mt19937 random(11);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     Axis axis(crumpled_points(random, 0.08));
@@ -217,12 +217,12 @@ TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
     SelfContactForce kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource());
     const int moves = 60;
     for (int move = 0; move < moves; ++move) {
-        for (double& q : axis.state.q) q += 0.0003 * unit(random);  // up to 0.3 mm a move
+        for (double& q : axis.state.q) q += 0.00015 * unit(random);  // up to 0.15 mm a move
         expect_same_as_fresh(kept, axis, move);
         if (HasFatalFailure()) return;
     }
-    // 60 moves of up to 0.3 mm per coordinate (which also change the length, and so slide
-    // every sphere along the axis) drift some sphere past R / 3 often, but not at every move.
+    // 60 moves of up to 0.15 mm per coordinate (which also change the length, and so slide
+    // every sphere along the axis) drift some sphere past R / 6 often, but not at every move.
     std::cout << "[ near pairs ] " << kept.grid_searches() << " grid searches in " << moves << " moves\n";
     EXPECT_GT(kept.grid_searches(), 1u);
     EXPECT_LT(kept.grid_searches(), std::uint64_t(moves));
