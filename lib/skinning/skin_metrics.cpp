@@ -115,7 +115,12 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
                    p2 = vertex_at(mesh.positions, i2) - origin;
         const Vec3 face = cross(p1 - p0, p2 - p0);
         volume6 += dot(p0, cross(p1, p2));
-        if (dot(face, radial[i0] + radial[i1] + radial[i2]) < 0.0) ++m.inverted_triangles;
+        // Facing the axis as seen from each corner's own axis point. (Not the sum of the
+        // three radial directions: where two folds touch, marching cubes joins them with
+        // triangles whose corners belong to different folds, radial directions nearly
+        // opposite, and a correctly wound triangle there can face against their sum.)
+        if (dot(face, radial[i0]) < 0.0 && dot(face, radial[i1]) < 0.0 && dot(face, radial[i2]) < 0.0)
+            ++m.inverted_triangles;
         const uint32_t corners[3] = {i0, i1, i2};
         for (int e = 0; e < 3; ++e) {
             const uint32_t a = corners[e], b = corners[(e + 1) % 3];

@@ -4,8 +4,9 @@
 // Each vertex is compared with its own axis point A(u), u being its axis parameter:
 //   radius error      | |v - A(u)| - R | / R                         (RMS and max)
 //   normal deviation  angle between the vertex normal and (v - A(u)) / |v - A(u)|, rad
-//   inverted triangle a triangle whose normal points towards the axis: the fold-over of
-//                     a tube ring at a bend tighter than R
+//   inverted triangle a triangle whose normal points towards the axis as seen from the
+//                     axis point of each of its three corners: the fold-over of a tube
+//                     ring at a bend tighter than R
 //   unwanted blending a vertex within kBlendBand R of a non-neighbouring part of the
 //                     axis (more than kNeighbourWindow R away in arc length): it has been
 //                     pulled into the blend band of another fold (with legs 2.2 R apart a
