@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "skinning/frame_buffers.h"
 #include "skinning/marching_cubes_table.h"
 
 namespace enteron::skinning {
@@ -31,7 +32,7 @@ void MarchingCubes::extract(const SparseVoxelGrid& grid, double iso, Mesh& mesh,
     blocks_ = grid.block_count();
     const std::size_t slots = 3 * std::size_t(kBlockCorners) * blocks_;
     if (edge_vertex_.size() < slots) {
-        if (edge_vertex_.capacity() < slots) edge_vertex_.reserve(slots + slots / 4);
+        reserve_with_headroom(edge_vertex_, slots);
         edge_vertex_.resize(slots, kNone);
     }
     used_slots_.clear();

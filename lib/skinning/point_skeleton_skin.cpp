@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "skinning/frame_buffers.h"
+
 namespace enteron::skinning {
 
 namespace {
@@ -86,10 +88,10 @@ void PointSkeletonSkin::load_skeleton() {
     const std::size_t n = skeleton_.size();
     const float far = 1e6f;
     const std::size_t padded = n + 2 * padding_ + 2 * kLanes;
-    x_.assign(padded, far);
-    y_.assign(padded, far);
-    z_.assign(padded, far);
-    excluded_.assign(padded, 1e30f);
+    assign_buffer(x_, padded, far);
+    assign_buffer(y_, padded, far);
+    assign_buffer(z_, padded, far);
+    assign_buffer(excluded_, padded, 1e30f);
     for (std::size_t j = 0; j < n; ++j) {
         const Vec3& p = skeleton_.position(j);
         x_[padding_ + j] = float(p.x);
@@ -97,7 +99,7 @@ void PointSkeletonSkin::load_skeleton() {
         z_[padding_ + j] = float(p.z);
     }
     std::fill_n(excluded_.begin() + std::ptrdiff_t(padding_ + skeleton_.phantoms()), skeleton_.intervals() + 1, 0.0f);
-    inverse_chord2_.resize(n);
+    resize_buffer(inverse_chord2_, n);
     for (std::size_t j = 0; j + 1 < n; ++j) {
         const Vec3 d = skeleton_.position(j + 1) - skeleton_.position(j);
         inverse_chord2_[j] = 1.0 / std::max(dot(d, d), 1e-300);

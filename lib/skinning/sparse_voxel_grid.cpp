@@ -1,5 +1,7 @@
 #include "skinning/sparse_voxel_grid.h"
 
+#include "skinning/frame_buffers.h"
+
 namespace enteron::skinning {
 
 void SparseVoxelGrid::reset(double voxel_size, std::size_t expected_blocks) {
@@ -13,7 +15,7 @@ uint32_t SparseVoxelGrid::touch(int32_t bx, int32_t by, int32_t bz) {
     const uint32_t index = lookup_.find_or_insert(pack(bx, by, bz), uint32_t(used_), &inserted);
     if (!inserted) return index;
     if (used_ == blocks_.size()) {
-        if (blocks_.capacity() == blocks_.size()) blocks_.reserve(blocks_.size() + blocks_.size() / 4 + 16);
+        reserve_with_headroom(blocks_, used_ + 1);
         blocks_.emplace_back();
     }
     VoxelBlock& b = blocks_[used_++];

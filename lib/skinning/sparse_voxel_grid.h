@@ -56,8 +56,7 @@ public:
 
     // The index of the block at block coordinates (bx, by, bz), made (every corner outside
     // the band) if absent. Indices stay valid until reset; references may not (the block
-    // storage grows, by a quarter more than needed so that a band that breathes from frame
-    // to frame stops allocating).
+    // storage grows, with headroom: frame_buffers.h).
     uint32_t touch(int32_t bx, int32_t by, int32_t bz);
     // The block's index, or kMissing if the band does not reach it.
     uint32_t find(int32_t bx, int32_t by, int32_t bz) const { return lookup_.find(pack(bx, by, bz)); }

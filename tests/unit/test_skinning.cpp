@@ -16,6 +16,7 @@
 #include "skinning/marching_cubes_table.h"
 #include "skinning/mesh_writers.h"
 #include "skinning/point_skeleton_skin.h"
+#include "skinning/ring_placement.h"
 #include "skinning/rotation_minimizing_frames.h"
 #include "skinning/skin.h"
 #include "skinning/skin_metrics.h"
@@ -340,6 +341,17 @@ TEST(Skins, PointSkeletonRadiusDoesNotPulseWhileStretching) {
     EXPECT_NEAR(double(last_points) / double(first_points), 1.1, 0.01);
 }
 
+TEST(Skins, ConvolutionWarmStartOnAStraightTubeTakesOneEvaluationPerVertex) {
+    // On a straight axis every ray's solution is exactly R, so the field there equals the
+    // iso-value to the last bit: a solver that then bisected away from its own solution
+    // took about three evaluations per vertex warm, more than cold.
+    const auto q = skin_test::straight_axis(41, 0.025);
+    ConvolutionSkin skin(defaults(SkinMethod::convolution));
+    skin.update(q.data(), q.size() / 3);
+    skin.update(q.data(), q.size() / 3);
+    EXPECT_EQ(skin.last_field_evaluations(), skin.mesh().vertex_count() - 2 - 2 * 4 * 16);
+}
+
 TEST(Skins, ConvolutionStartsFromThePreviousFrame) {
     const auto q = skin_test::coil_axis(0.04, 2.6 * R, 2.0, 0.01);
     ConvolutionSkin skin(defaults(SkinMethod::convolution));
@@ -350,6 +362,65 @@ TEST(Skins, ConvolutionStartsFromThePreviousFrame) {
     // Same axis: each vertex starts on its solution and needs a single evaluation.
     EXPECT_EQ(warm, skin.mesh().vertex_count() - 2 - 2 * 4 * 16);
     EXPECT_LT(warm * 2, cold);
+}
+
+TEST(RingPlacement, RingsComeCloserOnABendByTheChordErrorBound) {
+    // A U-turn of radius rho = 3 R between straight legs: on the half circle the spacing is
+    // sqrt(8 e / (k (1 + k R))) with k = 1 / rho; on the legs, away from the bend, the
+    // largest spacing.
+    const double rho = 3.0 * R, e = 0.01 * R, largest = 2.0 * R;
+    const auto q = skin_test::u_turn_axis(0.2, 2.0 * rho, 0.25 * R);
+    SkinSettings s = defaults(SkinMethod::convolution);
+    auto skin = make_skin(s);  // for its arc-length table
+    skin->update(q.data(), q.size() / 3);
+    AxisSamples axis;
+    axis.build(skin->arc_length(), skin->axis_points(), skin->axis_count(), 0.25 * R, 0.0);
+    RingPlacement placement;
+    const std::vector<double>& rings = placement.place(axis, R, largest, 0.05 * R, e);
+    const double k = 1.0 / rho, bend = std::sqrt(8.0 * e / (k * (1.0 + k * R)));
+    const double leg = 0.2, arc = kPi * rho;  // the half circle spans [leg, leg + arc] in arc length
+    ASSERT_NEAR(rings.back(), 2 * leg + arc, 1e-3);
+    EXPECT_EQ(rings.front(), 0.0);
+    std::size_t on_bend = 0;
+    for (std::size_t i = 0; i + 1 < rings.size(); ++i) {
+        const double a = rings[i], b = rings[i + 1], gap = b - a;
+        ASSERT_GT(gap, 0.0);
+        EXPECT_LE(gap, largest * 1.001);
+        if (a > leg + 0.1 * arc && b < leg + 0.9 * arc) {  // well inside the bend
+            EXPECT_NEAR(gap, bend, 0.1 * bend) << "at " << a;
+            ++on_bend;
+        }
+        if (b < leg - 2 * largest || a > leg + arc + 2 * largest) {
+            EXPECT_GT(gap, 0.9 * largest) << "at " << a;
+        }
+    }
+    EXPECT_GT(on_bend, 10u);
+}
+
+TEST(Skins, ConvolutionAdaptiveRingsCutTheFacetErrorOfABendWithFewerTriangles) {
+    // Legs 6 R apart: even rings every R leave flat facets on the bend; adaptive rings
+    // (at most R apart on the legs, closer on the bend) do better there, with a few more
+    // rings than the even R only, far fewer than even rings fine enough for the bend.
+    const auto q = skin_test::u_turn_axis(0.3, 6.0 * R, 0.25 * R);
+    SkinSettings coarse = defaults(SkinMethod::convolution);
+    coarse.ring_spacing = R;
+    coarse.segments = 48;
+    SkinSettings fine = coarse;
+    fine.ring_spacing = 0.25 * R;
+    SkinSettings adaptive = coarse;
+    adaptive.ring_chord_error = 0.002 * R;
+    ConvolutionSkin a(coarse), b(fine), c(adaptive);
+    const SkinMetrics even_coarse = skin_and_measure(a, q), even_fine = skin_and_measure(b, q),
+                      lod = skin_and_measure(c, q);
+    EXPECT_TRUE(lod.watertight);
+    EXPECT_EQ(lod.blended_vertices, 0u);
+    EXPECT_LT(lod.facet_error_max, 0.8 * even_coarse.facet_error_max);
+    EXPECT_LT(lod.triangles, even_fine.triangles / 2);
+    EXPECT_LT(lod.radius_error_max, 0.05);
+    // Temporal coherence survives the uneven rings: the same axis again starts every
+    // body vertex on its solution, one evaluation each.
+    c.update(q.data(), q.size() / 3);
+    EXPECT_EQ(c.last_field_evaluations(), c.mesh().vertex_count() - 2 - 2 * 4 * 48);
 }
 
 TEST(MeshWriters, ObjAndPlyDescribeTheMesh) {
