@@ -638,7 +638,8 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
  * read). Safe on a render thread while another thread calls ent_scene_step: it pins the
  * latest snapshot only while it copies the control points, and the stepping thread never
  * waits on it for more than a pointer swap. Reuses the skin's buffers: after the first
- * updates it allocates only when the mesh grows beyond any size it had before.
+ * updates it allocates only when the mesh grows beyond any size it had before (its work
+ * buffers keep headroom; tests/no_alloc/skin_no_alloc.cpp checks this on a moving bowel).
  * Invalidates the previous ent_skin_mesh view.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_OUT_OF_MEMORY (the previous
  *         mesh may then be incomplete: update again).
@@ -682,7 +683,8 @@ struct ent_skin_metrics {
     uint32_t nonmanifold_edges;    /**< edges of three or more triangles. */
     /** Vertices closer than 1.1 R to a part of the axis more than 4 R away along it: pulled into another fold. */
     uint32_t blended_vertices;
-    /** Triangles facing their axis: the tube's fold-over at bends tighter than R. */
+    /** Triangles facing the axis as seen from each of their three corners' axis points: the tube's
+     *  fold-over at bends tighter than R. */
     uint32_t inverted_triangles;
     double radius_error_rms;       /**< RMS over vertices of | |v - A(u)| - R | / R, A(u) the vertex's own axis point. */
     double radius_error_max;       /**< largest of those. */
