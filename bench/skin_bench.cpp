@@ -1,39 +1,71 @@
-// Cost and accuracy of each skinning method on the settled 6 m bowel of the demo (helix,
-// stretch, bend, damping, gravity, mesentery; 2 s simulated first), at three resolutions.
-// Through the C API only. Every benchmark iteration is one ent_skin_update of the same
-// state (after two untimed updates, so temporal coherence and buffers are warm, as on a
-// render thread following a slowly moving bowel). Counters: ms per update, updates per
-// second, triangles, radius error RMS / max (fraction of R), unwanted-blending vertices,
+// Cost and accuracy of each skinning method on the settled 6 m bowel of the demo (dropped
+// as a helix into the abdominal cavity, held by its mesentery, its folds piled on each
+// other with self-collision; 2 s simulated first), at three resolutions. Through the C
+// API. Every benchmark iteration is one ent_skin_update of the same state (after two
+// untimed updates, so temporal coherence and buffers are warm, as on a render thread
+// following a slowly moving bowel). Counters: ms per update (wall), updates per second,
+// triangles, radius and facet error RMS / max (% of R), unwanted-blending vertices,
 // inverted triangles and watertightness, from ent_skin_metrics.
 //
-//   build/bench/enteron_skin_bench --benchmark_min_time=0.5
+// skin/convolution_rings/*: the level of detail of the convolution skin, even rings
+// (ring_spacing_radii) against rings closer where the axis bends
+// (ring_chord_error_radii, at most R apart), at 16 segments: error against triangles.
+//
+// marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
+// (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
+// grid: the point-skeleton field of the settled bowel (the library's internals, not the C
+// API), sampled on the dense lattice of voxel R / 3 that covers its band (0 outside the
+// band). Counter voxels_per_s: lattice cells / time. marching_cubes/enteron_band is ours
+// on the band alone, as the skin runs it.
+//
+//   build/bench/enteron_skin_bench --benchmark_min_time=0.5 [--mesh_dir=DIR]
+//
+// --mesh_dir=DIR also writes the mesh of each method at its default resolution, all of the
+// same state, as DIR/<method>.ply and DIR/<method>.obj (scripts/render_mesh.py draws them).
 #include <enteron/enteron.h>
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <memory>
 #include <string>
+#include <vector>
+
+#include "skinning/marching_cubes.h"
+#include "skinning/mesh_writers.h"
+#include "skinning/point_skeleton_skin.h"
+#include "skinning/sparse_voxel_grid.h"
+#ifdef ENTERON_HAVE_VTK
+#include "peers/vtk_iso_surface.h"
+#endif
 
 namespace {
 
+namespace sk = enteron::skinning;
+
+constexpr double kRadius = 0.0125;  // m
+
+// The demo's scene (examples/demo.c) without its tool.
+constexpr char kScene[] =
+    "{\"intestine\": {\"length\": 6.0, \"radius\": 0.0125, \"control_points\": 240, \"linear_density\": 0.3,"
+    " \"stretch_stiffness\": 100, \"bend_stiffness\": 2.5e-3,"
+    " \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, -0.13], \"helix_radius\": 0.1, \"helix_pitch\": 0.025}},"
+    " \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001},"
+    " \"gravity\": [0, 0, -9.81],"
+    " \"damping\": {\"drag\": 0.05, \"stretch\": 0.05, \"bend\": 0},"
+    " \"mesentery\": {\"root\": [[-0.075, 0, 0], [0.075, 0, 0]], \"stiffness\": 5, \"attachments\": 60,"
+    " \"rest_length\": 0},"
+    " \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0], \"half_extents\": [0.15, 0.15, 0.15]}],"
+    " \"self_collision\": {}}";
+
 ent_scene* settled_bowel() {
     static ent_scene* scene = [] {
-        ent_scene_desc desc;
-        ent_scene_desc_default(&desc);
-        desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
-                       ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) |
-                       ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
-        desc.length_m = 6.0;
-        desc.radius_m = 0.0125;
-        desc.control_points = 240;
-        desc.shape = ENT_SHAPE_HELIX;
-        desc.shape_center_m[2] = -0.15;
-        desc.shape_helix_radius_m = 0.1;
-        desc.shape_helix_pitch_m = 0.03;
         ent_scene* s = nullptr;
-        if (ent_scene_create(&desc, &s) != ENT_OK) return static_cast<ent_scene*>(nullptr);
+        if (ent_scene_create_json(kScene, std::strlen(kScene), &s) != ENT_OK) return static_cast<ent_scene*>(nullptr);
         for (int i = 0; i < 2000; ++i)
             if (ent_scene_step(s, 1e-3) != ENT_OK) break;
         return s;
@@ -45,19 +77,23 @@ struct Resolution {
     const char* name;
     uint32_t segments;
     double ring_spacing, skeleton_spacing, voxel_size;
+    double ring_chord_error = 0.0;
 };
-constexpr Resolution resolutions[] = {
+constexpr Resolution kResolutions[] = {
     {"coarse", 8, 1.0, 0.5, 0.5},
     {"default", 16, 0.5, 0.25, 1.0 / 3.0},
     {"fine", 32, 0.25, 0.125, 0.25},
 };
+constexpr Resolution kDefault = kResolutions[1];
 
-void skin_benchmark(benchmark::State& state, int32_t method, Resolution resolution) {
-    ent_scene* scene = settled_bowel();
-    if (scene == nullptr) {
-        state.SkipWithError(ent_last_error());
-        return;
-    }
+struct Method {
+    const char* name;
+    int32_t id;
+};
+constexpr Method kMethods[] = {
+    {"tube", ENT_SKIN_TUBE}, {"point_skeleton", ENT_SKIN_POINT_SKELETON}, {"convolution", ENT_SKIN_CONVOLUTION}};
+
+ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resolution) {
     ent_skin_desc desc;
     ent_skin_desc_default(&desc);
     desc.method = method;
@@ -65,11 +101,21 @@ void skin_benchmark(benchmark::State& state, int32_t method, Resolution resoluti
     desc.ring_spacing_radii = resolution.ring_spacing;
     desc.skeleton_spacing_radii = resolution.skeleton_spacing;
     desc.voxel_size_radii = resolution.voxel_size;
+    desc.ring_chord_error_radii = resolution.ring_chord_error;
     ent_skin* skin = nullptr;
     if (ent_skin_create(scene, &desc, &skin) != ENT_OK || ent_skin_update(skin) != ENT_OK ||
         ent_skin_update(skin) != ENT_OK) {
-        state.SkipWithError(ent_last_error());
         ent_skin_destroy(skin);
+        return nullptr;
+    }
+    return skin;
+}
+
+void skin_benchmark(benchmark::State& state, int32_t method, Resolution resolution) {
+    ent_scene* scene = settled_bowel();
+    ent_skin* skin = scene != nullptr ? make_skin(scene, method, resolution) : nullptr;
+    if (skin == nullptr) {
+        state.SkipWithError(ent_last_error());
         return;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -89,6 +135,8 @@ void skin_benchmark(benchmark::State& state, int32_t method, Resolution resoluti
         state.counters["triangles"] = m.triangle_count;
         state.counters["radius_rms_pct"] = 100.0 * m.radius_error_rms;
         state.counters["radius_max_pct"] = 100.0 * m.radius_error_max;
+        state.counters["facet_rms_pct"] = 100.0 * m.facet_error_rms;
+        state.counters["facet_max_pct"] = 100.0 * m.facet_error_max;
         state.counters["blended"] = m.blended_vertices;
         state.counters["inverted"] = m.inverted_triangles;
         state.counters["watertight"] = m.watertight;
@@ -96,23 +144,229 @@ void skin_benchmark(benchmark::State& state, int32_t method, Resolution resoluti
     ent_skin_destroy(skin);
 }
 
+// ---- meshes for people ----------------------------------------------------------------
+
+bool write_meshes(const std::string& dir) {
+    ent_scene* scene = settled_bowel();
+    if (scene == nullptr) return false;
+    for (const Method& method : kMethods) {
+        ent_skin* skin = make_skin(scene, method.id, kDefault);
+        ent_mesh_view view;
+        std::memset(&view, 0, sizeof view);
+        view.struct_size = sizeof view;
+        if (skin == nullptr || ent_skin_mesh(skin, &view) != ENT_OK) {
+            std::fprintf(stderr, "skin %s: %s\n", method.name, ent_last_error());
+            ent_skin_destroy(skin);
+            return false;
+        }
+        sk::Mesh mesh;
+        mesh.positions.assign(view.positions_xyz_m, view.positions_xyz_m + 3 * std::size_t(view.vertex_count));
+        mesh.normals.assign(view.normals_xyz, view.normals_xyz + 3 * std::size_t(view.vertex_count));
+        mesh.u.assign(view.axis_u, view.axis_u + view.vertex_count);
+        mesh.indices.assign(view.indices, view.indices + 3 * std::size_t(view.triangle_count));
+        ent_skin_destroy(skin);
+        const std::string base = dir + "/" + method.name;
+        std::ofstream ply(base + ".ply", std::ios::binary), obj(base + ".obj");
+        if (!sk::write_ply(mesh, ply) || !sk::write_obj(mesh, obj)) {
+            std::fprintf(stderr, "cannot write %s.ply / .obj\n", base.c_str());
+            return false;
+        }
+        std::fprintf(stderr, "wrote %s.ply and %s.obj (%u triangles)\n", base.c_str(), base.c_str(),
+                     view.triangle_count);
+    }
+    return true;
+}
+
+// ---- marching cubes against VTK on the same field ---------------------------------------
+
+// The point-skeleton field of the settled bowel at the default resolution, and the dense
+// lattice of voxel R / 3 over the blocks of its band (outside the band: 0, below the iso).
+struct BandField {
+    sk::PointSkeletonSkin skin;
+    std::vector<float> dense;
+    int size[3] = {0, 0, 0};     // corners per axis
+    int32_t first[3] = {0, 0, 0};  // lattice index of the dense lattice's first corner
+    sk::SparseVoxelGrid dense_grid;  // the dense lattice as blocks, every corner in the band
+
+    static sk::SkinSettings settings() {
+        sk::SkinSettings s;
+        s.method = sk::SkinMethod::point_skeleton;
+        s.radius = kRadius;
+        s.skeleton_spacing = kDefault.skeleton_spacing * kRadius;
+        s.voxel_size = kDefault.voxel_size * kRadius;
+        s.window = kRadius;
+        return s;
+    }
+    BandField() : skin(settings()) {}
+
+    bool build() {
+        ent_scene* scene = settled_bowel();
+        uint32_t count = 0;
+        if (scene == nullptr || ent_scene_control_points(scene, 0, nullptr, &count) != ENT_OK) return false;
+        std::vector<double> points(3 * std::size_t(count));
+        if (ent_scene_control_points(scene, count, points.data(), &count) != ENT_OK) return false;
+        skin.update(points.data(), count);
+        const sk::SparseVoxelGrid& band = skin.band();
+        int32_t lo[3] = {INT32_MAX, INT32_MAX, INT32_MAX}, hi[3] = {INT32_MIN, INT32_MIN, INT32_MIN};
+        for (std::size_t b = 0; b < band.block_count(); ++b)
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], band.block(b).coordinates[std::size_t(a)]);
+                hi[a] = std::max(hi[a], band.block(b).coordinates[std::size_t(a)]);
+            }
+        for (int a = 0; a < 3; ++a) {
+            first[a] = lo[a] * sk::kBlockSize;
+            size[a] = (hi[a] - lo[a] + 1) * sk::kBlockSize;
+        }
+        dense.assign(std::size_t(size[0]) * std::size_t(size[1]) * std::size_t(size[2]), 0.0f);
+        for (std::size_t b = 0; b < band.block_count(); ++b) {
+            const sk::VoxelBlock& block = band.block(b);
+            for (int z = 0; z < sk::kBlockSize; ++z)
+                for (int y = 0; y < sk::kBlockSize; ++y)
+                    for (int x = 0; x < sk::kBlockSize; ++x) {
+                        const std::size_t i = dense_index(block.coordinates[0] * sk::kBlockSize + x - first[0],
+                                                          block.coordinates[1] * sk::kBlockSize + y - first[1],
+                                                          block.coordinates[2] * sk::kBlockSize + z - first[2]);
+                        dense[i] = std::max(0.0f, block.field[sk::SparseVoxelGrid::local_index(x, y, z)]);
+                    }
+        }
+        // The same lattice as blocks for our marching cubes: every block of the box.
+        dense_grid.reset(band.voxel_size(), std::size_t(size[0] * size[1] * size[2]) / sk::kBlockCorners);
+        for (int32_t bz = lo[2]; bz <= hi[2]; ++bz)
+            for (int32_t by = lo[1]; by <= hi[1]; ++by)
+                for (int32_t bx = lo[0]; bx <= hi[0]; ++bx) {
+                    sk::VoxelBlock& block = dense_grid.block(dense_grid.touch(bx, by, bz));
+                    for (int z = 0; z < sk::kBlockSize; ++z)
+                        for (int y = 0; y < sk::kBlockSize; ++y)
+                            for (int x = 0; x < sk::kBlockSize; ++x) {
+                                const std::size_t i = sk::SparseVoxelGrid::local_index(x, y, z);
+                                block.field[i] = dense[dense_index(bx * sk::kBlockSize + x - first[0],
+                                                                   by * sk::kBlockSize + y - first[1],
+                                                                   bz * sk::kBlockSize + z - first[2])];
+                                block.nearest[i] = sk::nearest_key(0.0f, 0);
+                            }
+                }
+        return true;
+    }
+    std::size_t dense_index(int x, int y, int z) const {
+        return std::size_t(x) + std::size_t(size[0]) * (std::size_t(y) + std::size_t(size[1]) * std::size_t(z));
+    }
+    // Cells of the dense lattice: the voxels each implementation is charged for.
+    double cells() const { return double(size[0] - 1) * double(size[1] - 1) * double(size[2] - 1); }
+};
+
+std::unique_ptr<BandField> band_field_storage;  // made by the first marching_cubes benchmark
+bool band_field_tried = false;
+
+BandField* band_field() {
+    if (!band_field_tried) {
+        band_field_tried = true;
+        band_field_storage = std::make_unique<BandField>();
+        if (!band_field_storage->build()) band_field_storage.reset();
+    }
+    return band_field_storage.get();
+}
+
+void report_voxels(benchmark::State& state, double voxels, std::size_t triangles) {
+    state.counters["voxels"] = voxels;
+    state.counters["voxels_per_s"] = benchmark::Counter(voxels, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["triangles"] = double(triangles);
+}
+
+void enteron_marching_cubes(benchmark::State& state, bool band_only) {
+    BandField* field = band_field();
+    if (field == nullptr) {
+        state.SkipWithError(ent_last_error());
+        return;
+    }
+    const sk::SparseVoxelGrid& grid = band_only ? field->skin.band() : field->dense_grid;
+    sk::MarchingCubes cubes;
+    sk::Mesh mesh;
+    std::vector<int32_t> seeds;
+    for (auto _ : state) {
+        cubes.extract(grid, field->skin.iso_value(), mesh, seeds);
+        benchmark::DoNotOptimize(mesh.indices.data());
+    }
+    report_voxels(state, band_only ? double(cubes.cells_in_band()) : field->cells(), mesh.triangle_count());
+}
+
+#ifdef ENTERON_HAVE_VTK
+void vtk_marching_cubes(benchmark::State& state, enteron::peers::VtkFilter filter) {
+    BandField* field = band_field();
+    if (field == nullptr) {
+        state.SkipWithError(ent_last_error());
+        return;
+    }
+    enteron::peers::DenseField dense;
+    dense.nx = field->size[0];
+    dense.ny = field->size[1];
+    dense.nz = field->size[2];
+    dense.spacing = field->skin.band().voxel_size();
+    for (int a = 0; a < 3; ++a) dense.origin[a] = field->first[a] * dense.spacing;
+    dense.values = field->dense;
+    enteron::peers::VtkIsoSurface surface(dense, field->skin.iso_value(), filter);
+    std::size_t triangles = 0;
+    for (auto _ : state) triangles = surface.run();
+    report_voxels(state, field->cells(), triangles);
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    const struct {
-        const char* name;
-        int32_t id;
-    } methods[] = {{"tube", ENT_SKIN_TUBE}, {"point_skeleton", ENT_SKIN_POINT_SKELETON}, {"convolution", ENT_SKIN_CONVOLUTION}};
-    for (const auto& method : methods)
-        for (const Resolution& resolution : resolutions) {
-            const std::string name = std::string("skin/") + method.name + "/" + resolution.name;
-            benchmark::RegisterBenchmark(name.c_str(), skin_benchmark, method.id, resolution)
-                ->Unit(benchmark::kMillisecond);
+    // Our own flag first (Google Benchmark refuses flags it does not know).
+    std::string mesh_dir;
+    int kept = 1;
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        if (argument.rfind("--mesh_dir=", 0) == 0) {
+            mesh_dir = argument.substr(std::strlen("--mesh_dir="));
+        } else {
+            argv[kept++] = argv[i];
         }
+    }
+    argc = kept;
+
+    for (const Method& method : kMethods)
+        for (const Resolution& resolution : kResolutions) {
+            const std::string name = std::string("skin/") + method.name + "/" + resolution.name;
+            benchmark::RegisterBenchmark(name.c_str(), skin_benchmark, method.id, resolution)->Unit(benchmark::kMillisecond);
+        }
+    // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
+    for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
+        char name[64];
+        std::snprintf(name, sizeof name, "skin/convolution_rings/even_%.2f", spacing);
+        benchmark::RegisterBenchmark(name, skin_benchmark, ENT_SKIN_CONVOLUTION,
+                                     Resolution{"even", 16, spacing, 0.25, 1.0 / 3.0, 0.0})
+            ->Unit(benchmark::kMillisecond);
+    }
+    for (double chord_error : {0.02, 0.01, 0.005, 0.0025}) {
+        char name[64];
+        std::snprintf(name, sizeof name, "skin/convolution_rings/lod_%.4f", chord_error);
+        benchmark::RegisterBenchmark(name, skin_benchmark, ENT_SKIN_CONVOLUTION,
+                                     Resolution{"lod", 16, 1.0, 0.25, 1.0 / 3.0, chord_error})
+            ->Unit(benchmark::kMillisecond);
+    }
+    benchmark::RegisterBenchmark("marching_cubes/enteron_dense", enteron_marching_cubes, false)
+        ->Unit(benchmark::kMillisecond);
+#ifdef ENTERON_HAVE_VTK
+    benchmark::RegisterBenchmark("marching_cubes/vtkFlyingEdges3D", vtk_marching_cubes,
+                                 enteron::peers::VtkFilter::flying_edges)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("marching_cubes/vtkMarchingCubes", vtk_marching_cubes,
+                                 enteron::peers::VtkFilter::marching_cubes)
+        ->Unit(benchmark::kMillisecond);
+#else
+    std::fprintf(stderr, "VTK not found at build time (libvtk9-dev): the VTK marching cubes peers are skipped\n");
+#endif
+    benchmark::RegisterBenchmark("marching_cubes/enteron_band", enteron_marching_cubes, true)
+        ->Unit(benchmark::kMillisecond);
+
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    if (!mesh_dir.empty() && !write_meshes(mesh_dir)) return 1;
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
+    band_field_storage.reset();
     ent_scene_destroy(settled_bowel());
     return 0;
 }

@@ -599,6 +599,13 @@ typedef struct ent_skin_desc {
     /** point_skeleton, convolution: half-width D of the arc-length window of local blending, in R, 0.25 to < 2 (default 1).
      *  A surface point blends only the skeleton within D of its own axis point, so folds never blend. */
     double window_radii;
+    /** convolution: level of detail along the axis, in R, 0 to 1 (default 0: rings evenly ring_spacing_radii apart).
+     *  Above 0, rings come closer where the axis bends, so that the straight edge between two rings departs
+     *  from the tube by at most this (its sag on the outer side of the bend), down to 1/16 of
+     *  ring_spacing_radii; ring_spacing_radii is then the spacing on straight parts. The ring count
+     *  follows the bends from frame to frame. Added in 0.1 after the first skins: a caller built
+     *  against the older, smaller ent_skin_desc gets 0. */
+    double ring_chord_error_radii;
 } ent_skin_desc;
 
 /**
@@ -631,7 +638,8 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
  * read). Safe on a render thread while another thread calls ent_scene_step: it pins the
  * latest snapshot only while it copies the control points, and the stepping thread never
  * waits on it for more than a pointer swap. Reuses the skin's buffers: after the first
- * updates it allocates only when the mesh grows beyond any size it had before.
+ * updates it allocates only when the mesh grows beyond any size it had before (its work
+ * buffers keep headroom; tests/no_alloc/skin_no_alloc.cpp checks this on a moving bowel).
  * Invalidates the previous ent_skin_mesh view.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_OUT_OF_MEMORY (the previous
  *         mesh may then be incomplete: update again).
@@ -675,7 +683,8 @@ struct ent_skin_metrics {
     uint32_t nonmanifold_edges;    /**< edges of three or more triangles. */
     /** Vertices closer than 1.1 R to a part of the axis more than 4 R away along it: pulled into another fold. */
     uint32_t blended_vertices;
-    /** Triangles facing their axis: the tube's fold-over at bends tighter than R. */
+    /** Triangles facing the axis as seen from each of their three corners' axis points: the tube's
+     *  fold-over at bends tighter than R. */
     uint32_t inverted_triangles;
     double radius_error_rms;       /**< RMS over vertices of | |v - A(u)| - R | / R, A(u) the vertex's own axis point. */
     double radius_error_max;       /**< largest of those. */
@@ -685,6 +694,11 @@ struct ent_skin_metrics {
     double volume_error;           /**< (volume - pi R^2 L) / (pi R^2 L); rounded ends add 4 R / (3 L). */
     double axis_length_m;          /**< L, arc length of the axis skinned. */
     uint64_t last_update_ns;       /**< wall time of the last ent_skin_update. */
+    /** RMS over triangles of | |c - axis| - R | / R, c the triangle's centroid and |c - axis| its distance
+     *  to the axis: how far the flat triangles depart from the tube between the vertices (chord error).
+     *  Added after the first skins: not written for an older, smaller struct_size. */
+    double facet_error_rms;
+    double facet_error_max;        /**< largest of those. */
 };
 
 /**

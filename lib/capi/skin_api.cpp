@@ -2,6 +2,7 @@
 // and the copy of the axis it reads into.
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -47,8 +48,41 @@ void check_count(uint32_t value, uint32_t low, uint32_t high, const char* field)
                                                      std::to_string(high) + "], got " + std::to_string(value));
 }
 
-enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& desc, double radius) {
-    enteron::capi::check_struct_size(desc.struct_size, {sizeof(ent_skin_desc)}, "ent_skin_desc");
+// The sizes of ent_skin_desc in released headers. An older size is the offset of the first
+// field its header lacks; those fields take their defaults.
+//   0.1 first skins  without ring_chord_error_radii.
+//   0.1              the current header.
+void check_skin_desc_size(uint32_t struct_size) {
+    enteron::capi::check_struct_size(struct_size, {offsetof(ent_skin_desc, ring_chord_error_radii), sizeof(ent_skin_desc)},
+                                     "ent_skin_desc");
+}
+
+// The sizes of ent_skin_metrics: without facet_error_rms and facet_error_max, and now.
+void check_skin_metrics_size(uint32_t struct_size) {
+    enteron::capi::check_struct_size(
+        struct_size, {offsetof(struct ent_skin_metrics, facet_error_rms), sizeof(struct ent_skin_metrics)},
+        "ent_skin_metrics");
+}
+
+ent_skin_desc default_desc() {
+    ent_skin_desc defaults{};
+    defaults.struct_size = sizeof defaults;
+    defaults.method = ENT_SKIN_CONVOLUTION;
+    defaults.segments = 16;
+    defaults.ring_spacing_radii = 0.5;
+    defaults.cap_rings = 4;
+    defaults.skeleton_spacing_radii = 0.25;
+    defaults.voxel_size_radii = 1.0 / 3.0;
+    defaults.window_radii = 1.0;
+    defaults.ring_chord_error_radii = 0.0;
+    return defaults;
+}
+
+enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, double radius) {
+    check_skin_desc_size(given.struct_size);
+    // An older caller's smaller struct: the fields it lacks keep their defaults.
+    ent_skin_desc desc = default_desc();
+    std::memcpy(&desc, &given, given.struct_size);
     if (desc.method != ENT_SKIN_TUBE && desc.method != ENT_SKIN_POINT_SKELETON && desc.method != ENT_SKIN_CONVOLUTION)
         throw Error(ErrorCode::invalid_argument,
                     "method must be ENT_SKIN_TUBE, ENT_SKIN_POINT_SKELETON or ENT_SKIN_CONVOLUTION (0, 1, 2), got " +
@@ -59,6 +93,7 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& desc, do
     check_range(desc.skeleton_spacing_radii, 0.05, 2.0, true, "skeleton_spacing_radii");
     check_range(desc.voxel_size_radii, 0.1, 2.0, true, "voxel_size_radii");
     check_range(desc.window_radii, 0.25, 2.0, false, "window_radii");
+    check_range(desc.ring_chord_error_radii, 0.0, 1.0, true, "ring_chord_error_radii");
     enteron::skinning::SkinSettings s;
     s.method = static_cast<enteron::skinning::SkinMethod>(desc.method);
     s.radius = radius;
@@ -68,6 +103,7 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& desc, do
     s.skeleton_spacing = desc.skeleton_spacing_radii * radius;
     s.voxel_size = desc.voxel_size_radii * radius;
     s.window = desc.window_radii * radius;
+    s.ring_chord_error = desc.ring_chord_error_radii * radius;
     return s;
 }
 
@@ -78,16 +114,10 @@ extern "C" {
 ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size) {
     return guarded([&] {
         require(desc, "desc");
-        enteron::capi::check_struct_size(struct_size, {sizeof(ent_skin_desc)}, "ent_skin_desc");
-        ent_skin_desc defaults{};
+        check_skin_desc_size(struct_size);
+        ent_skin_desc defaults = default_desc();
         defaults.struct_size = struct_size;
-        defaults.method = ENT_SKIN_CONVOLUTION;
-        defaults.segments = 16;
-        defaults.ring_spacing_radii = 0.5;
-        defaults.cap_rings = 4;
-        defaults.skeleton_spacing_radii = 0.25;
-        defaults.voxel_size_radii = 1.0 / 3.0;
-        defaults.window_radii = 1.0;
+        // An older caller's struct ends at struct_size: write nothing past it.
         std::memcpy(desc, &defaults, struct_size);
     });
 }
@@ -151,7 +181,7 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
     return guarded([&] {
         require(skin, "skin");
         require(out, "out");
-        enteron::capi::check_struct_size(out->struct_size, {sizeof(struct ent_skin_metrics)}, "ent_skin_metrics");
+        check_skin_metrics_size(out->struct_size);
         const SkinHandle& h = *handle_of(skin);
         struct ent_skin_metrics full{};
         full.struct_size = out->struct_size;
@@ -168,6 +198,8 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
             full.inverted_triangles = static_cast<uint32_t>(m.inverted_triangles);
             full.radius_error_rms = m.radius_error_rms;
             full.radius_error_max = m.radius_error_max;
+            full.facet_error_rms = m.facet_error_rms;
+            full.facet_error_max = m.facet_error_max;
             full.normal_deviation_rms_rad = m.normal_deviation_rms;
             full.normal_deviation_max_rad = m.normal_deviation_max;
             full.volume_m3 = m.volume;

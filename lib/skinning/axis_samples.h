@@ -21,20 +21,33 @@ public:
     void build(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count, double spacing,
                double extension);
 
+    // Samples the spline at the given arc lengths (increasing, from 0 to the total length;
+    // no phantoms), e.g. rings placed closer where the axis bends (ring_placement.h).
+    void build_at(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
+                  const std::vector<double>& arc_lengths);
+
     std::size_t size() const { return position_.size(); }  // all samples, phantoms included
     std::size_t phantoms() const { return phantoms_; }        // phantom samples before (and after) the axis
     std::size_t intervals() const { return intervals_; }      // real samples - 1
-    double spacing() const { return spacing_; }               // actual arc length between samples, m
+    double spacing() const { return spacing_; }               // actual arc length between samples (mean if uneven), m
     double length() const { return length_; }                 // total arc length, m
     // Arc length of sample i from the first end (negative for the leading phantoms), m.
-    double arc_length(std::size_t i) const { return (double(i) - double(phantoms_)) * spacing_; }
+    double arc_length(std::size_t i) const {
+        return arc_.empty() ? (double(i) - double(phantoms_)) * spacing_ : arc_[i];
+    }
 
     const Vec3& position(std::size_t i) const { return position_[i]; }
     const Vec3& tangent(std::size_t i) const { return tangent_[i]; }
 
 private:
+    // Positions and tangents of the real samples k = 0 .. intervals_, at arc_length_of(k).
+    template <typename ArcLengthOf>
+    void sample(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
+                ArcLengthOf arc_length_of);
+
     std::vector<Vec3> position_;
     std::vector<Vec3> tangent_;
+    std::vector<double> arc_;  // arc length of each sample when uneven (build_at), else empty
     std::size_t phantoms_ = 0;
     std::size_t intervals_ = 0;
     double spacing_ = 0.0;

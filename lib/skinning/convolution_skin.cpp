@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skinning/frame_buffers.h"
 #include "skinning/segment_kernel.h"
 
 namespace enteron::skinning {
@@ -58,9 +59,12 @@ double ConvolutionSkin::solve_ray(Vec3 origin, Vec3 direction, double start) {
         // Slope of the field of a straight window along the ray: exact for a straight axis,
         // a good model elsewhere; the bracket [lo, hi] catches the rest.
         const double slope = value * (-2.0 / t - t / (t * t + D * D));
+        // Converged: the Newton step is negligible. (Tested before the bracket: on a
+        // solution, f = 0 puts t itself at the end of the bracket, and bisecting away from
+        // it cost a warm-started vertex several evaluations instead of one.)
+        if (slope < 0.0 && std::fabs(f / slope) < 1e-7 * R) return t - f / slope;
         double next = slope < 0.0 ? t - f / slope : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        if (std::fabs(next - t) < 1e-7 * R) return next;
         t = next;
     }
     return t;
@@ -72,22 +76,38 @@ void ConvolutionSkin::rebuild() {
     evaluations_ = 0;
     skeleton_.build(table_, points_.data(), axis_count(), settings_.skeleton_spacing,
                     settings_.window + settings_.skeleton_spacing);
-    rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
+    if (settings_.ring_chord_error > 0.0) {
+        // Levels of detail: rings closer where the axis bends (ring_placement.h).
+        const double min_spacing = std::max(0.05 * R, settings_.ring_spacing / 16.0);
+        rings_.build_at(table_, points_.data(), axis_count(),
+                        placement_.place(skeleton_, R, settings_.ring_spacing, min_spacing, settings_.ring_chord_error));
+    } else {
+        rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
+    }
     const std::size_t n = rings_.size();
+    const double length = rings_.length();
     frames_.build(&rings_.position(0), &rings_.tangent(0), n);
-    if (grid_.segments() != S) previous_rings_ = 0;  // new vertex directions: no previous solution
+    if (grid_.segments() != S) previous_u_.clear();  // new vertex directions: no previous solution
     grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
     mesh_.resize_vertices(grid_.vertex_count());
 
-    // Starting radii: last frame's, resampled by u when the number of rings changed.
-    radius_.resize(n * S);
-    if (previous_rings_ == n) {
+    // Starting radii: last frame's, at the same place along the axis (interpolated in u
+    // when the rings moved or their number changed).
+    // radius_ and previous_ (u_ and previous_u_) trade places every frame: keep their
+    // capacities equal, or a size reached once would allocate again a frame later.
+    resize_buffer(radius_, n * S);
+    previous_.reserve(radius_.capacity());
+    resize_buffer(u_, n);
+    previous_u_.reserve(u_.capacity());
+    for (std::size_t k = 0; k < n; ++k) u_[k] = length > 0.0 ? rings_.arc_length(k) / length : 0.0;
+    if (previous_u_ == u_) {
         std::copy(previous_.begin(), previous_.begin() + std::ptrdiff_t(n * S), radius_.begin());
-    } else if (previous_rings_ >= 2) {
+    } else if (previous_u_.size() >= 2) {
+        std::size_t k0 = 0;
         for (std::size_t k = 0; k < n; ++k) {
-            const double x = double(k) / double(n - 1) * double(previous_rings_ - 1);
-            const auto k0 = std::min(std::size_t(x), previous_rings_ - 2);
-            const double w = x - double(k0);
+            while (k0 + 2 < previous_u_.size() && previous_u_[k0 + 1] < u_[k]) ++k0;
+            const double span = previous_u_[k0 + 1] - previous_u_[k0];
+            const double w = std::clamp(span > 0.0 ? (u_[k] - previous_u_[k0]) / span : 0.0, 0.0, 1.0);
             for (std::size_t j = 0; j < S; ++j)
                 radius_[k * S + j] = (1 - w) * previous_[k0 * S + j] + w * previous_[(k0 + 1) * S + j];
         }
@@ -95,13 +115,12 @@ void ConvolutionSkin::rebuild() {
         std::fill(radius_.begin(), radius_.end(), R);
     }
 
-    const double length = rings_.length();
     for (std::size_t k = 0; k < n; ++k) {
         const double s = rings_.arc_length(k);
         gather_window(s);
         const Vec3 centre = rings_.position(k);
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
-        const float u = float(length > 0.0 ? s / length : 0.0);
+        const auto u = float(u_[k]);
         const std::size_t row = grid_.body_row(k);
         for (std::size_t j = 0; j < S; ++j) {
             const Vec3 direction = grid_.cosine(j) * nrm + grid_.sine(j) * bin;
@@ -141,7 +160,7 @@ void ConvolutionSkin::rebuild() {
     grid_.grid_normals(mesh_.positions.data(), rings_.tangent(0), rings_.tangent(n - 1), mesh_.normals.data());
 
     previous_.swap(radius_);
-    previous_rings_ = n;
+    previous_u_.swap(u_);
 }
 
 }  // namespace enteron::skinning

@@ -12,14 +12,16 @@
 // safeguarded Newton iterations on the local field, starting from the radius it had in
 // the previous frame (temporal coherence: usually one or two field evaluations). The
 // iso-value is calibrated numerically at construction: the field of a straight skeleton
-// at distance R, so a straight tube has radius exactly R. The level of detail is the ring
-// spacing and the number of segments around.
+// at distance R, so a straight tube has radius exactly R. The level of detail is the number
+// of segments around and the ring spacing: even, or (with a chord-error tolerance) closer
+// where the axis bends, from ring_spacing on straight parts (ring_placement.h).
 #pragma once
 
 #include <vector>
 
 #include "skinning/axis_samples.h"
 #include "skinning/ring_grid.h"
+#include "skinning/ring_placement.h"
 #include "skinning/rotation_minimizing_frames.h"
 #include "skinning/skin.h"
 
@@ -48,8 +50,9 @@ private:
     RotationMinimizingFrames frames_;
     RingGrid grid_;
     std::vector<Vec3> window_;               // segment end points, pairs
+    RingPlacement placement_;
     std::vector<double> radius_, previous_;  // solved ray length per (body ring, segment)
-    std::size_t previous_rings_ = 0;
+    std::vector<double> u_, previous_u_;     // arc length / length of each body ring
     std::size_t evaluations_ = 0;
 };
 

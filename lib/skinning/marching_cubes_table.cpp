@@ -36,6 +36,53 @@ int edge_between(int a, int b) {
 
 Vec3 edge_midpoint(int e) { return 0.5 * (corner_position(kEdgeCorners[e][0]) + corner_position(kEdgeCorners[e][1])); }
 
+// True if edges a and b both lie on one face of the cell.
+bool share_face(int a, int b) {
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side) {
+            auto on = [&](int e) {
+                return ((kEdgeCorners[e][0] >> axis) & 1) == side && ((kEdgeCorners[e][1] >> axis) & 1) == side;
+            };
+            if (on(a) && on(b)) return true;
+        }
+    return false;
+}
+
+// Triangulates the polygon loop[first..last] (indices into loop, first < last), in which
+// (loop[first], loop[last]) is already an edge, with no diagonal between two vertices on a
+// common cell face. Such a diagonal crosses that face, and the cell on the other side of the
+// face (which sees the same two vertices, unjoined, on the same face) may draw it too: the
+// mesh edge would then belong to four triangles. Appends the triangles; false if impossible.
+bool triangulate_range(const int* loop, int first, int last, MarchingCubesCase& out) {
+    if (last - first < 2) return true;
+    const uint8_t saved = out.triangle_count;
+    for (int k = first + 1; k < last; ++k) {
+        // Triangle (first, k, last); its sides (first, k) and (k, last) are diagonals unless
+        // they join neighbours of the loop.
+        if (k - first > 1 && share_face(loop[first], loop[k])) continue;
+        if (last - k > 1 && share_face(loop[k], loop[last])) continue;
+        if (out.triangle_count >= 12) throw Error(ErrorCode::internal, "marching cubes table: too many triangles");
+        uint8_t* t = &out.edges[3 * out.triangle_count++];
+        t[0] = uint8_t(loop[first]);
+        t[1] = uint8_t(loop[k]);
+        t[2] = uint8_t(loop[last]);
+        if (triangulate_range(loop, first, k, out) && triangulate_range(loop, k, last, out)) return true;
+        out.triangle_count = saved;
+    }
+    return false;
+}
+
+// Triangulates a closed loop of edges (wound as the segments were), trying each start
+// vertex in turn so that a fan from loop[0] is kept whenever it is allowed.
+bool triangulate(const int* loop, int length, MarchingCubesCase& out) {
+    for (int start = 0; start < length; ++start) {
+        int rotated[12];
+        for (int i = 0; i < length; ++i) rotated[i] = loop[(start + i) % length];
+        if (triangulate_range(rotated, 0, length - 1, out)) return true;
+    }
+    return false;
+}
+
 std::array<MarchingCubesCase, 256> generate() {
     std::array<MarchingCubesCase, 256> table{};
     for (int mask = 0; mask < 256; ++mask) {
@@ -97,13 +144,8 @@ std::array<MarchingCubesCase, 256> generate() {
                 visited[e] = true;
                 loop[length++] = e;
             }
-            for (int i = 1; i + 1 < length; ++i) {
-                if (out.triangle_count >= 12) throw Error(ErrorCode::internal, "marching cubes table: too many triangles");
-                uint8_t* t = &out.edges[3 * out.triangle_count++];
-                t[0] = uint8_t(loop[0]);
-                t[1] = uint8_t(loop[i]);
-                t[2] = uint8_t(loop[i + 1]);
-            }
+            if (!triangulate(loop, length, out))
+                throw Error(ErrorCode::internal, "marching cubes table: a loop has no triangulation without face diagonals");
         }
     }
     return table;

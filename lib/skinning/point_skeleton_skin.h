@@ -11,10 +11,17 @@
 // Beyond an end the field is made radial around the end point (a hemispherical cap), and
 // points continue straight past the ends so the window is full up to them.
 //
-// Only the voxels within R + 2 voxels of a skeleton point are visited (sparse blocks, see
-// sparse_voxel_grid.h). Each marching-cubes vertex is then projected onto the iso-surface
-// by Newton steps on the field, its normal is the field gradient and its u the projection
-// of the vertex on the axis next to its nearest skeleton point.
+// One update, in four passes:
+//  1. band: the lattice corners within R + 2 voxels of the axis (sparse blocks, see
+//     sparse_voxel_grid.h), found by splatting spheres around every few skeleton points
+//     (about one per R, the sphere grown to cover the points in between), each corner
+//     keeping the nearest of them;
+//  2. field: each band corner walks from that point to its nearest skeleton point along
+//     the axis and sums the window there;
+//  3. marching cubes on the band (marching_cubes.h);
+//  4. each vertex is projected onto the iso-surface by Newton steps on the field until a
+//     step is below R / 50; its normal is the field gradient of the last step and its u
+//     the projection of the vertex on the axis next to its nearest skeleton point.
 #pragma once
 
 #include <vector>
@@ -34,23 +41,43 @@ public:
     std::size_t skeleton_points() const { return skeleton_.intervals() + 1; }
     std::size_t band_blocks() const { return grid_.block_count(); }
     std::size_t cells_visited() const { return cubes_.cells_visited(); }
+    // Field evaluations (window sums) of the last update: band corners and Newton steps.
+    std::size_t last_field_evaluations() const { return evaluations_; }
+    // The band of the last update, with the field at every corner (-1 outside the band).
+    const SparseVoxelGrid& band() const { return grid_; }
 
 private:
     void rebuild() override;
     // Field and gradient at p for the window around skeleton point k (an index into
     // skeleton_, real points only).
     double field(Vec3 p, std::size_t k, Vec3* gradient) const;
-    // The real skeleton point nearest to p, searching from k along the axis.
-    std::size_t nearest_from(Vec3 p, std::size_t k) const;
+    // The real skeleton point nearest to p, searching from k along the axis; *distance2
+    // receives its squared distance to p.
+    std::size_t nearest_from(Vec3 p, std::size_t k, double* distance2) const;
+    // Sum of the window of skeleton point k at q (the field without the end caps) and,
+    // with kGradient, its gradient.
+    template <bool kGradient>
+    float window_sum(float qx, float qy, float qz, std::size_t k, float* gradient) const;
+    void load_skeleton();
     void splat();
+    void evaluate_band();
+    void project_vertices();
 
     double iso_ = 0.0;
     double support2_ = 0.0;  // Rs^2
-    std::size_t window_points_ = 0;
+    std::size_t window_points_ = 0;           // W: the window is skeleton points k - W .. k + W
+    static constexpr std::size_t kLanes = 4;  // floats per SIMD register in the window sums
+    std::size_t window_lanes_ = 0;            // 2 W + 1 rounded up to whole lane groups
+    std::vector<float> window_mask_;          // 1 for the window's lanes, 0 past them
+    std::size_t evaluations_ = 0;
     AxisSamples skeleton_;
+    std::size_t padding_ = 0;           // entries before skeleton point 0 in x_, y_, z_, excluded_
+    std::vector<float> x_, y_, z_;      // skeleton positions, single precision, padded
+    std::vector<float> excluded_;       // 0 at real skeleton points, huge at phantoms and padding
+    std::vector<double> inverse_chord2_;  // 1 / |x_{j+1} - x_j|^2, m^-2
     SparseVoxelGrid grid_;
     MarchingCubes cubes_;
-    std::vector<int32_t> seeds_;
+    std::vector<int32_t> seeds_;  // per vertex: nearest skeleton point of its edge's inside corner
 };
 
 }  // namespace enteron::skinning

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "skinning/frame_buffers.h"
+
 namespace enteron::skinning {
 
 namespace {
@@ -15,8 +17,8 @@ Vec3 any_perpendicular(Vec3 t) {
 }  // namespace
 
 void RotationMinimizingFrames::build(const Vec3* x, const Vec3* t, std::size_t count) {
-    normal_.resize(count);
-    binormal_.resize(count);
+    resize_buffer(normal_, count);
+    resize_buffer(binormal_, count);
     if (count == 0) return;
     // Temporal coherence of the whole frame field: start from last frame's first normal.
     Vec3 r = first_normal_ - dot(first_normal_, t[0]) * t[0];

@@ -68,6 +68,46 @@ private:
     std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
 };
 
+// The axis as a dense polyline (spacing R / 16: it departs from the spline by about
+// (R / 16)^2 / (8 rho), 2e-4 R at a bend of radius 3 R), for the distance of a point to the
+// axis near a given arc length.
+class AxisPolyline {
+public:
+    AxisPolyline(const spline::ArcLengthTable& table, const double* points, std::size_t count, double spacing) {
+        const double length = table.total_length();
+        const auto n = std::max<std::size_t>(2, std::size_t(std::ceil(length / spacing)) + 1);
+        step_ = length / double(n - 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            double p[3];
+            spline::evaluate(points, spline::weights_at(count, table.parameter_at(step_ * double(i)), spline::Derivative::value), p);
+            positions_.push_back(load(p));
+        }
+    }
+
+    // Distance from p to the axis, searching downhill from arc length s.
+    double distance(Vec3 p, double s) const {
+        const std::size_t last = positions_.size() - 1;
+        auto d2 = [&](std::size_t i) { return dot(p - positions_[i], p - positions_[i]); };
+        std::size_t i = std::min(last, std::size_t(std::max(0.0, std::round(s / step_))));
+        while (i > 0 && d2(i - 1) < d2(i)) --i;
+        while (i < last && d2(i + 1) < d2(i)) ++i;
+        double best = d2(i);
+        for (std::size_t a : {i - 1, i}) {  // the segments on either side of the nearest sample
+            if (i == 0 && a != i) continue;
+            if (a + 1 > last) continue;
+            const Vec3 d = positions_[a + 1] - positions_[a];
+            const double w = std::clamp(dot(p - positions_[a], d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+            const Vec3 foot = positions_[a] + w * d;
+            best = std::min(best, dot(p - foot, p - foot));
+        }
+        return std::sqrt(best);
+    }
+
+private:
+    double step_ = 0.0;
+    std::vector<Vec3> positions_;
+};
+
 }  // namespace
 
 SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
@@ -104,7 +144,9 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
     m.radius_error_rms = std::sqrt(sum_radius2 / double(m.vertices));
     m.normal_deviation_rms = std::sqrt(sum_normal2 / double(m.vertices));
 
-    // Per triangle: orientation against the axis, volume, edges.
+    // Per triangle: facet error, orientation against the axis, volume, edges.
+    const AxisPolyline polyline(table, points_xyz, count, R / 16.0);
+    double sum_facet2 = 0.0;
     std::vector<uint64_t> edges;
     edges.reserve(3 * m.triangles);
     const Vec3 origin = vertex_at(mesh.positions, 0);
@@ -114,8 +156,26 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         const Vec3 p0 = vertex_at(mesh.positions, i0) - origin, p1 = vertex_at(mesh.positions, i1) - origin,
                    p2 = vertex_at(mesh.positions, i2) - origin;
         const Vec3 face = cross(p1 - p0, p2 - p0);
+        {
+            // The centroid's distance to the axis, near its corners' axis points (all three
+            // when they lie on different folds).
+            const Vec3 centroid = (1.0 / 3.0) * (p0 + p1 + p2) + origin;
+            const double u0 = mesh.u[i0], u1 = mesh.u[i1], u2 = mesh.u[i2];
+            const double spread = (std::max({u0, u1, u2}) - std::min({u0, u1, u2})) * length;
+            double distance = polyline.distance(centroid, (u0 + u1 + u2) / 3.0 * length);
+            if (spread > kNeighbourWindow * R)
+                for (double u : {u0, u1, u2}) distance = std::min(distance, polyline.distance(centroid, u * length));
+            const double error = std::fabs(distance - R) / R;
+            sum_facet2 += error * error;
+            m.facet_error_max = std::max(m.facet_error_max, error);
+        }
         volume6 += dot(p0, cross(p1, p2));
-        if (dot(face, radial[i0] + radial[i1] + radial[i2]) < 0.0) ++m.inverted_triangles;
+        // Facing the axis as seen from each corner's own axis point. (Not the sum of the
+        // three radial directions: where two folds touch, marching cubes joins them with
+        // triangles whose corners belong to different folds, radial directions nearly
+        // opposite, and a correctly wound triangle there can face against their sum.)
+        if (dot(face, radial[i0]) < 0.0 && dot(face, radial[i1]) < 0.0 && dot(face, radial[i2]) < 0.0)
+            ++m.inverted_triangles;
         const uint32_t corners[3] = {i0, i1, i2};
         for (int e = 0; e < 3; ++e) {
             const uint32_t a = corners[e], b = corners[(e + 1) % 3];
@@ -130,6 +190,7 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         if (j - i > 2) ++m.nonmanifold_edges;
         i = j;
     }
+    m.facet_error_rms = std::sqrt(sum_facet2 / double(m.triangles));
     m.watertight = m.triangles > 0 && m.open_edges == 0 && m.nonmanifold_edges == 0;
     m.volume = volume6 / 6.0;
     const double ideal = kPi * R * R * length;

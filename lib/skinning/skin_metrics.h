@@ -4,8 +4,13 @@
 // Each vertex is compared with its own axis point A(u), u being its axis parameter:
 //   radius error      | |v - A(u)| - R | / R                         (RMS and max)
 //   normal deviation  angle between the vertex normal and (v - A(u)) / |v - A(u)|, rad
-//   inverted triangle a triangle whose normal points towards the axis: the fold-over of
-//                     a tube ring at a bend tighter than R
+//   inverted triangle a triangle whose normal points towards the axis as seen from the
+//                     axis point of each of its three corners: the fold-over of a tube
+//                     ring at a bend tighter than R
+//   facet error       | |c - axis| - R | / R for each triangle's centroid c, its distance
+//                     to the axis near its corners' axis points (RMS and max): how far the
+//                     flat triangles depart from the tube between the vertices (the chord
+//                     error of rings too far apart at a bend, or of too few segments)
 //   unwanted blending a vertex within kBlendBand R of a non-neighbouring part of the
 //                     axis (more than kNeighbourWindow R away in arc length): it has been
 //                     pulled into the blend band of another fold (with legs 2.2 R apart a
@@ -32,6 +37,8 @@ struct SkinMetrics {
     std::size_t triangles = 0;
     double radius_error_rms = 0.0;  // relative to R
     double radius_error_max = 0.0;
+    double facet_error_rms = 0.0;   // relative to R
+    double facet_error_max = 0.0;
     std::size_t blended_vertices = 0;
     std::size_t inverted_triangles = 0;
     bool watertight = false;

@@ -12,7 +12,8 @@ struct SkinSettings {
     SkinMethod method = SkinMethod::convolution;
     double radius = 0.0125;          // R, m
     uint32_t segments = 16;          // vertices around a ring (tube, convolution)
-    double ring_spacing = 0.00625;   // arc length between rings, m (tube, convolution)
+    double ring_spacing = 0.00625;   // arc length between rings, m (tube, convolution); the largest if adaptive
+    double ring_chord_error = 0.0;   // convolution: > 0 places rings closer at bends, chord error tolerance, m
     uint32_t cap_rings = 4;          // rings of each hemispherical end cap (tube, convolution)
     double skeleton_spacing = 0.003125;  // arc length between skeleton samples, m
     double voxel_size = 0.0041667;   // marching-cubes cell edge, m (point_skeleton)

@@ -1,5 +1,7 @@
 #include "skinning/sparse_voxel_grid.h"
 
+#include "skinning/frame_buffers.h"
+
 namespace enteron::skinning {
 
 void SparseVoxelGrid::reset(double voxel_size, std::size_t expected_blocks) {
@@ -8,20 +10,18 @@ void SparseVoxelGrid::reset(double voxel_size, std::size_t expected_blocks) {
     lookup_.clear(expected_blocks);
 }
 
-VoxelBlock& SparseVoxelGrid::touch(int32_t bx, int32_t by, int32_t bz) {
+uint32_t SparseVoxelGrid::touch(int32_t bx, int32_t by, int32_t bz) {
     bool inserted = false;
     const uint32_t index = lookup_.find_or_insert(pack(bx, by, bz), uint32_t(used_), &inserted);
-    if (!inserted) return blocks_[index];
-    if (used_ == blocks_.size()) blocks_.emplace_back();
+    if (!inserted) return index;
+    if (used_ == blocks_.size()) {
+        reserve_with_headroom(blocks_, used_ + 1);
+        blocks_.emplace_back();
+    }
     VoxelBlock& b = blocks_[used_++];
     b.coordinates = {bx, by, bz};
-    b.corners.fill(VoxelCorner{0.0f, 0.0f, -1});
-    return b;
-}
-
-const VoxelBlock* SparseVoxelGrid::find(int32_t bx, int32_t by, int32_t bz) const {
-    const uint32_t index = lookup_.find(pack(bx, by, bz));
-    return index == IndexHash::kMissing ? nullptr : &blocks_[index];
+    b.nearest.fill(kOutsideBand);
+    return index;
 }
 
 }  // namespace enteron::skinning

@@ -671,6 +671,10 @@ std::vector<BadInput> table() {
          kArg, "voxel_size_radii"},
         {"ent_skin_create", "window_radii 2 (must stay below 2 R)",
          skin_with([](ent_skin_desc& d) { d.window_radii = 2.0; }), kArg, "window_radii"},
+        {"ent_skin_create", "ring_chord_error_radii -0.1",
+         skin_with([](ent_skin_desc& d) { d.ring_chord_error_radii = -0.1; }), kArg, "ring_chord_error_radii"},
+        {"ent_skin_create", "ring_chord_error_radii NaN",
+         skin_with([](ent_skin_desc& d) { d.ring_chord_error_radii = kNaN; }), kArg, "ring_chord_error_radii"},
         {"ent_skin_update", "skin NULL", [](L) { return ent_skin_update(nullptr); }, kArg, "skin"},
         {"ent_skin_mesh", "skin NULL",
          [](L) {

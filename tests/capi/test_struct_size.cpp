@@ -95,4 +95,36 @@ TEST(StructSize, OldStatsAreFilledUpToTheirSizeOnly) {
     EXPECT_TRUE(all_bytes(&old, kOldStatsSize, sizeof old, 0xcd)) << "last_step_ns was written";
 }
 
+// ent_skin_desc and ent_skin_metrics before the level of detail and the facet error.
+constexpr uint32_t kOldSkinDescSize = offsetof(ent_skin_desc, ring_chord_error_radii);
+constexpr uint32_t kOldSkinMetricsSize = offsetof(struct ent_skin_metrics, facet_error_rms);
+
+TEST(StructSize, OldSkinDescriptionsAreServedWithEvenRings) {
+    ent_skin_desc full;
+    ent_skin_desc_default(&full);
+    EXPECT_EQ(full.ring_chord_error_radii, 0.0);
+    ent_skin_desc old;
+    std::memset(&old, 0xcd, sizeof old);
+    ASSERT_EQ(ent_skin_desc_init(&old, kOldSkinDescSize), ENT_OK) << ent_last_error();
+    EXPECT_TRUE(all_bytes(&old, kOldSkinDescSize, sizeof old, 0xcd)) << "written past the old size";
+    EXPECT_EQ(old.segments, full.segments);
+    // What lies past the old struct (0xcd bytes: a huge negative double, out of range) is
+    // not read: the skin is made with the default, even rings.
+    ScenePtr scene = create(default_desc());
+    ent_skin* skin = nullptr;
+    ASSERT_EQ(ent_skin_create(scene.get(), &old, &skin), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_skin_update(skin), ENT_OK) << ent_last_error();
+    struct ent_skin_metrics m;
+    std::memset(&m, 0xcd, sizeof m);
+    m.struct_size = kOldSkinMetricsSize;
+    EXPECT_EQ(ent_skin_metrics(skin, &m), ENT_OK) << ent_last_error();
+    EXPECT_GT(m.triangle_count, 0u);
+    EXPECT_TRUE(all_bytes(&m, kOldSkinMetricsSize, sizeof m, 0xcd)) << "facet errors written past the old size";
+    ent_skin_destroy(skin);
+    // The current size refuses that value by name.
+    full.ring_chord_error_radii = -1.0;
+    EXPECT_EQ(ent_skin_create(scene.get(), &full, &skin), ENT_ERROR_INVALID_ARGUMENT);
+    EXPECT_TRUE(contains_text(ent_last_error(), "ring_chord_error_radii")) << ent_last_error();
+}
+
 }  // namespace

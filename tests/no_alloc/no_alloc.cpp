@@ -7,8 +7,6 @@
 // tool calls of a haptic loop (pose, wrench, grasp, release) must then allocate nothing. Links only the shared library, like a simulator would.
 #include <enteron/enteron.h>
 
-#include <dlfcn.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -16,65 +14,7 @@
 #include <vector>
 
 #include "alloc_counter.h"
-
-// ---- counting operator new / delete (every C++17 form) --------------------------------------
-
-namespace {
-void* counted_new(std::size_t size, void* caller) {
-    alloc_counter_note(caller);
-    return alloc_counter_malloc(size == 0 ? 1 : size);
-}
-void* counted_aligned_new(std::size_t size, std::align_val_t alignment, void* caller) {
-    alloc_counter_note(caller);
-    return alloc_counter_memalign(static_cast<std::size_t>(alignment), size == 0 ? 1 : size);
-}
-}  // namespace
-
-void* operator new(std::size_t size) {
-    void* p = counted_new(size, __builtin_return_address(0));
-    if (p == nullptr) throw std::bad_alloc();
-    return p;
-}
-void* operator new[](std::size_t size) {
-    void* p = counted_new(size, __builtin_return_address(0));
-    if (p == nullptr) throw std::bad_alloc();
-    return p;
-}
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-    return counted_new(size, __builtin_return_address(0));
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-    return counted_new(size, __builtin_return_address(0));
-}
-void* operator new(std::size_t size, std::align_val_t alignment) {
-    void* p = counted_aligned_new(size, alignment, __builtin_return_address(0));
-    if (p == nullptr) throw std::bad_alloc();
-    return p;
-}
-void* operator new[](std::size_t size, std::align_val_t alignment) {
-    void* p = counted_aligned_new(size, alignment, __builtin_return_address(0));
-    if (p == nullptr) throw std::bad_alloc();
-    return p;
-}
-void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return counted_aligned_new(size, alignment, __builtin_return_address(0));
-}
-void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
-    return counted_aligned_new(size, alignment, __builtin_return_address(0));
-}
-
-void operator delete(void* p) noexcept { alloc_counter_free(p); }
-void operator delete[](void* p) noexcept { alloc_counter_free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { alloc_counter_free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { alloc_counter_free(p); }
-void operator delete(void* p, std::size_t) noexcept { alloc_counter_free(p); }
-void operator delete[](void* p, std::size_t) noexcept { alloc_counter_free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { alloc_counter_free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { alloc_counter_free(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { alloc_counter_free(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { alloc_counter_free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { alloc_counter_free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { alloc_counter_free(p); }
+#include "first_callers.h"
 
 // ---- the test --------------------------------------------------------------------------------
 
@@ -90,15 +30,7 @@ void report(const char* what, const char* integrator, unsigned long allocations)
     }
     ++failures;
     std::printf("  %-16s %-28s FAILED: %lu allocation(s); first callers:\n", integrator, what, allocations);
-    for (unsigned long i = 0; i < allocations && i < 4; ++i) {
-        void* caller = alloc_counter_caller(i);
-        Dl_info info;
-        if (caller != nullptr && dladdr(caller, &info) != 0 && info.dli_sname != nullptr)
-            std::printf("      %p %s (%s)\n", caller, info.dli_sname, info.dli_fname);
-        else
-            std::printf("      %p (%s)\n", caller,
-                        caller != nullptr && dladdr(caller, &info) != 0 ? info.dli_fname : "?");
-    }
+    print_first_callers(allocations);
 }
 
 bool check(ent_status status, const char* call) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -15,6 +16,7 @@
 #include "skinning/marching_cubes_table.h"
 #include "skinning/mesh_writers.h"
 #include "skinning/point_skeleton_skin.h"
+#include "skinning/ring_placement.h"
 #include "skinning/rotation_minimizing_frames.h"
 #include "skinning/skin.h"
 #include "skinning/skin_metrics.h"
@@ -44,6 +46,42 @@ SkinSettings defaults(SkinMethod method) {
 SkinMetrics skin_and_measure(Skin& skin, const std::vector<double>& q) {
     skin.update(q.data(), q.size() / 3);
     return measure_skin(skin.mesh(), skin.axis_points(), skin.axis_count(), skin.arc_length(), R);
+}
+
+// Random field values in [-1, 1] at the corners of `block`, every corner in the band, and
+// -1 (outside) on the outer layer of the lattice of `extent` corners per side that the
+// block belongs to, so that the surface closes.
+void fill_random(VoxelBlock& block, std::mt19937& random, int extent) {
+    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+    for (int z = 0; z < kBlockSize; ++z)
+        for (int y = 0; y < kBlockSize; ++y)
+            for (int x = 0; x < kBlockSize; ++x) {
+                const int g[3] = {block.coordinates[0] * kBlockSize + x, block.coordinates[1] * kBlockSize + y,
+                                  block.coordinates[2] * kBlockSize + z};
+                bool border = false;
+                for (int c : g) border = border || c == 0 || c == extent - 1;
+                const std::size_t i = SparseVoxelGrid::local_index(x, y, z);
+                block.nearest[i] = nearest_key(0.0f, 0);
+                block.field[i] = border ? -1.0f : value(random);
+            }
+}
+
+// Every directed edge appears once and its reverse once: closed, manifold and
+// consistently wound.
+void expect_closed_and_consistently_wound(const Mesh& mesh) {
+    std::vector<std::pair<uint32_t, uint32_t>> directed;
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t)
+        for (int e = 0; e < 3; ++e) directed.emplace_back(mesh.indices[3 * t + e], mesh.indices[3 * t + (e + 1) % 3]);
+    std::sort(directed.begin(), directed.end());
+    std::size_t failures = 0;
+    for (std::size_t i = 0; i < directed.size() && failures < 10; ++i) {
+        const auto [a, b] = directed[i];
+        const bool once = (i == 0 || directed[i - 1] != directed[i]) &&
+                          (i + 1 == directed.size() || directed[i + 1] != directed[i]);
+        const bool reverse = std::binary_search(directed.begin(), directed.end(), std::make_pair(b, a));
+        EXPECT_TRUE(once && reverse) << "edge " << a << " -> " << b;
+        if (!(once && reverse)) ++failures;
+    }
 }
 
 const SkinMethod kMethods[] = {SkinMethod::tube, SkinMethod::point_skeleton, SkinMethod::convolution};
@@ -114,31 +152,61 @@ TEST(MarchingCubes, RandomFieldGivesAClosedConsistentlyWoundSurface) {
     // Random signs on a small lattice exercise every ambiguous face; the band covers the
     // lattice and its outer layer is outside, so the surface must close.
     std::mt19937 random(7);
-    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
     SparseVoxelGrid grid;
     grid.reset(1.0, 8);
-    VoxelBlock& block = grid.touch(0, 0, 0);
-    for (int z = 0; z < kBlockSize; ++z)
-        for (int y = 0; y < kBlockSize; ++y)
-            for (int x = 0; x < kBlockSize; ++x) {
-                VoxelCorner& c = block.corners[SparseVoxelGrid::local_index(x, y, z)];
-                const bool border = x == 0 || y == 0 || z == 0 || x == 7 || y == 7 || z == 7;
-                c.nearest = 0;
-                c.field = border ? -1.0f : value(random);
-            }
+    fill_random(grid.block(grid.touch(0, 0, 0)), random, kBlockSize);
     Mesh mesh;
     std::vector<int32_t> seeds;
     MarchingCubes cubes;
     cubes.extract(grid, 0.0, mesh, seeds);
     ASSERT_GT(mesh.triangle_count(), 100u);
-    // Every directed edge appears once and its reverse once: closed and consistently wound.
-    std::vector<std::pair<uint32_t, uint32_t>> directed;
-    for (std::size_t t = 0; t < mesh.triangle_count(); ++t)
-        for (int e = 0; e < 3; ++e) directed.emplace_back(mesh.indices[3 * t + e], mesh.indices[3 * t + (e + 1) % 3]);
-    std::sort(directed.begin(), directed.end());
-    for (const auto& [a, b] : directed) {
-        EXPECT_TRUE(std::binary_search(directed.begin(), directed.end(), std::make_pair(b, a)));
-        EXPECT_EQ(std::count(directed.begin(), directed.end(), std::make_pair(a, b)), 1);
+    expect_closed_and_consistently_wound(mesh);
+}
+
+TEST(MarchingCubesTable, NoTriangleEdgeJoinsTwoVerticesOfAFaceThatTheFaceLeavesApart) {
+    // A triangle edge inside a cell whose two vertices lie on one face of the cell, without
+    // a face segment between them, crosses that face; the cell on the other side sees the
+    // same two vertices, apart, on the same face and may draw the same edge: it would then
+    // belong to four triangles (a non-manifold edge: the fan triangulation did this in 18
+    // cases, where two folds touch).
+    const auto& table = marching_cubes_table();
+    auto on_face = [](int e, int axis, int side) {
+        return ((kEdgeCorners[std::size_t(e)][0] >> axis) & 1) == side && ((kEdgeCorners[std::size_t(e)][1] >> axis) & 1) == side;
+    };
+    for (int mask = 0; mask < 256; ++mask) {
+        const MarchingCubesCase& entry = table[std::size_t(mask)];
+        std::map<std::pair<int, int>, int> uses;  // triangle edges of the case
+        for (int t = 0; t < entry.triangle_count; ++t)
+            for (int k = 0; k < 3; ++k) {
+                const int a = entry.edges[std::size_t(3 * t + k)], b = entry.edges[std::size_t(3 * t + (k + 1) % 3)];
+                ++uses[{std::min(a, b), std::max(a, b)}];
+            }
+        for (const auto& [edge, count] : uses) {
+            if (count == 1) continue;  // on the loop: a face segment (or the cell's own edge)
+            for (int axis = 0; axis < 3; ++axis)
+                for (int side = 0; side < 2; ++side)
+                    EXPECT_FALSE(on_face(edge.first, axis, side) && on_face(edge.second, axis, side))
+                        << "case " << mask << ": diagonal between edges " << edge.first << " and " << edge.second;
+        }
+    }
+}
+
+TEST(MarchingCubes, RandomFieldsAcrossBlocksGiveClosedManifoldSurfaces) {
+    // Random signs on 2 x 2 x 2 blocks (cells across block boundaries too), an outside
+    // layer all round; many seeds, so that two neighbouring cells often share an ambiguous
+    // face. Fails with the fan-triangulated table (edges of four triangles).
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        std::mt19937 random(seed);
+        SparseVoxelGrid grid;
+        grid.reset(1.0, 8);
+        for (int b = 0; b < 8; ++b) fill_random(grid.block(grid.touch(b & 1, (b >> 1) & 1, b >> 2)), random, 2 * kBlockSize);
+        Mesh mesh;
+        std::vector<int32_t> seeds;
+        MarchingCubes cubes;
+        cubes.extract(grid, 0.0, mesh, seeds);
+        ASSERT_GT(mesh.triangle_count(), 1000u);
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        expect_closed_and_consistently_wound(mesh);
     }
 }
 
@@ -225,6 +293,36 @@ TEST(Skins, ImplicitMethodsAreWatertightOnBentAndCoiledAxes) {
     }
 }
 
+TEST(Skins, PointSkeletonWatertightWhereFoldsTouch) {
+    // Two legs of a U-turn about 2 R apart, axis to axis: their surfaces touch or come
+    // closer than a voxel, and marching cubes joins them with cells whose faces are
+    // ambiguous. Turned and tilted to several angles against the lattice. Each must give a
+    // closed, manifold surface (the fan-triangulated table left edges of four triangles
+    // here). (Where the surfaces join, vertices lie within 1.1 R of the other leg: the
+    // blending count is not zero, by its definition, for folds this close.)
+    std::size_t total_triangles = 0;
+    for (double gap : {1.95, 2.0, 2.05, 2.1}) {
+        for (int turn = 0; turn < 8; ++turn) {
+            auto q = skin_test::u_turn_axis(0.1, gap * R, 0.25 * R);
+            const double a = 0.3 + 0.17 * turn, b = 0.2 * turn;
+            for (std::size_t i = 0; i < q.size(); i += 3) {
+                const double x = q[i], y = q[i + 1], z = q[i + 2];
+                const double x1 = std::cos(a) * x - std::sin(a) * y, y1 = std::sin(a) * x + std::cos(a) * y;
+                q[i] = x1 + 0.001 * turn;
+                q[i + 1] = std::cos(b) * y1 - std::sin(b) * z + 0.0007 * turn;
+                q[i + 2] = std::sin(b) * y1 + std::cos(b) * z;
+            }
+            PointSkeletonSkin skin(defaults(SkinMethod::point_skeleton));
+            const SkinMetrics m = skin_and_measure(skin, q);
+            EXPECT_TRUE(m.watertight) << "gap " << gap << " R, turn " << turn << ": " << m.open_edges << " open, "
+                                      << m.nonmanifold_edges << " non-manifold edges";
+            EXPECT_GT(m.volume, 0.0);
+            total_triangles += m.triangles;
+        }
+    }
+    EXPECT_GT(total_triangles, 32u * 2000u);
+}
+
 TEST(Skins, PointSkeletonRadiusDoesNotPulseWhileStretching) {
     // 10 % stretch over 100 frames: the skeleton points follow the length, so the radius
     // error stays within the bound of the unstretched tube on every frame.
@@ -243,6 +341,17 @@ TEST(Skins, PointSkeletonRadiusDoesNotPulseWhileStretching) {
     EXPECT_NEAR(double(last_points) / double(first_points), 1.1, 0.01);
 }
 
+TEST(Skins, ConvolutionWarmStartOnAStraightTubeTakesOneEvaluationPerVertex) {
+    // On a straight axis every ray's solution is exactly R, so the field there equals the
+    // iso-value to the last bit: a solver that then bisected away from its own solution
+    // took about three evaluations per vertex warm, more than cold.
+    const auto q = skin_test::straight_axis(41, 0.025);
+    ConvolutionSkin skin(defaults(SkinMethod::convolution));
+    skin.update(q.data(), q.size() / 3);
+    skin.update(q.data(), q.size() / 3);
+    EXPECT_EQ(skin.last_field_evaluations(), skin.mesh().vertex_count() - 2 - 2 * 4 * 16);
+}
+
 TEST(Skins, ConvolutionStartsFromThePreviousFrame) {
     const auto q = skin_test::coil_axis(0.04, 2.6 * R, 2.0, 0.01);
     ConvolutionSkin skin(defaults(SkinMethod::convolution));
@@ -253,6 +362,65 @@ TEST(Skins, ConvolutionStartsFromThePreviousFrame) {
     // Same axis: each vertex starts on its solution and needs a single evaluation.
     EXPECT_EQ(warm, skin.mesh().vertex_count() - 2 - 2 * 4 * 16);
     EXPECT_LT(warm * 2, cold);
+}
+
+TEST(RingPlacement, RingsComeCloserOnABendByTheChordErrorBound) {
+    // A U-turn of radius rho = 3 R between straight legs: on the half circle the spacing is
+    // sqrt(8 e / (k (1 + k R))) with k = 1 / rho; on the legs, away from the bend, the
+    // largest spacing.
+    const double rho = 3.0 * R, e = 0.01 * R, largest = 2.0 * R;
+    const auto q = skin_test::u_turn_axis(0.2, 2.0 * rho, 0.25 * R);
+    SkinSettings s = defaults(SkinMethod::convolution);
+    auto skin = make_skin(s);  // for its arc-length table
+    skin->update(q.data(), q.size() / 3);
+    AxisSamples axis;
+    axis.build(skin->arc_length(), skin->axis_points(), skin->axis_count(), 0.25 * R, 0.0);
+    RingPlacement placement;
+    const std::vector<double>& rings = placement.place(axis, R, largest, 0.05 * R, e);
+    const double k = 1.0 / rho, bend = std::sqrt(8.0 * e / (k * (1.0 + k * R)));
+    const double leg = 0.2, arc = kPi * rho;  // the half circle spans [leg, leg + arc] in arc length
+    ASSERT_NEAR(rings.back(), 2 * leg + arc, 1e-3);
+    EXPECT_EQ(rings.front(), 0.0);
+    std::size_t on_bend = 0;
+    for (std::size_t i = 0; i + 1 < rings.size(); ++i) {
+        const double a = rings[i], b = rings[i + 1], gap = b - a;
+        ASSERT_GT(gap, 0.0);
+        EXPECT_LE(gap, largest * 1.001);
+        if (a > leg + 0.1 * arc && b < leg + 0.9 * arc) {  // well inside the bend
+            EXPECT_NEAR(gap, bend, 0.1 * bend) << "at " << a;
+            ++on_bend;
+        }
+        if (b < leg - 2 * largest || a > leg + arc + 2 * largest) {
+            EXPECT_GT(gap, 0.9 * largest) << "at " << a;
+        }
+    }
+    EXPECT_GT(on_bend, 10u);
+}
+
+TEST(Skins, ConvolutionAdaptiveRingsCutTheFacetErrorOfABendWithFewerTriangles) {
+    // Legs 6 R apart: even rings every R leave flat facets on the bend; adaptive rings
+    // (at most R apart on the legs, closer on the bend) do better there, with a few more
+    // rings than the even R only, far fewer than even rings fine enough for the bend.
+    const auto q = skin_test::u_turn_axis(0.3, 6.0 * R, 0.25 * R);
+    SkinSettings coarse = defaults(SkinMethod::convolution);
+    coarse.ring_spacing = R;
+    coarse.segments = 48;
+    SkinSettings fine = coarse;
+    fine.ring_spacing = 0.25 * R;
+    SkinSettings adaptive = coarse;
+    adaptive.ring_chord_error = 0.002 * R;
+    ConvolutionSkin a(coarse), b(fine), c(adaptive);
+    const SkinMetrics even_coarse = skin_and_measure(a, q), even_fine = skin_and_measure(b, q),
+                      lod = skin_and_measure(c, q);
+    EXPECT_TRUE(lod.watertight);
+    EXPECT_EQ(lod.blended_vertices, 0u);
+    EXPECT_LT(lod.facet_error_max, 0.8 * even_coarse.facet_error_max);
+    EXPECT_LT(lod.triangles, even_fine.triangles / 2);
+    EXPECT_LT(lod.radius_error_max, 0.05);
+    // Temporal coherence survives the uneven rings: the same axis again starts every
+    // body vertex on its solution, one evaluation each.
+    c.update(q.data(), q.size() / 3);
+    EXPECT_EQ(c.last_field_evaluations(), c.mesh().vertex_count() - 2 - 2 * 4 * 48);
 }
 
 TEST(MeshWriters, ObjAndPlyDescribeTheMesh) {

@@ -102,6 +102,7 @@ class ent_skin_desc(ctypes.Structure):
         ("skeleton_spacing_radii", ctypes.c_double),
         ("voxel_size_radii", ctypes.c_double),
         ("window_radii", ctypes.c_double),
+        ("ring_chord_error_radii", ctypes.c_double),
     ]
 
 
@@ -138,6 +139,8 @@ class ent_skin_metrics(ctypes.Structure):
         ("volume_error", ctypes.c_double),
         ("axis_length_m", ctypes.c_double),
         ("last_update_ns", ctypes.c_uint64),
+        ("facet_error_rms", ctypes.c_double),
+        ("facet_error_max", ctypes.c_double),
     ]
 
 

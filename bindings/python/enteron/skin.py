@@ -81,6 +81,8 @@ class SkinMetrics:
     volume_error: float
     axis_length_m: float
     last_update_ns: int
+    facet_error_rms: float
+    facet_error_max: float
 
 
 class Skin(OwnedHandle):
@@ -90,7 +92,8 @@ class Skin(OwnedHandle):
     method: 'tube' | 'point_skeleton' | 'convolution' (or enteron.SKIN_*); default the
     library's (convolution). The keyword arguments are the knobs of ent_skin_desc, named as
     its fields (segments, ring_spacing_radii, cap_rings, skeleton_spacing_radii,
-    voxel_size_radii, window_radii); the others keep the library's defaults.
+    voxel_size_radii, window_radii, ring_chord_error_radii: the convolution's level of
+    detail, rings closer where the axis bends); the others keep the library's defaults.
     The mesh is empty until the first update(). Failures raise enteron.Error.
     The skin keeps its Scene alive; closing the Scene closes its skins first.
     Threads: one thread per skin (update, mesh, metrics, close must not race), which may

@@ -60,7 +60,7 @@ int main(void) {
     END()
     BEGIN(ent_skin_desc)
     FIELD(struct_size) FIELD(method) FIELD(segments) FIELD(ring_spacing_radii) FIELD(cap_rings)
-    FIELD(skeleton_spacing_radii) FIELD(voxel_size_radii) FIELD(window_radii)
+    FIELD(skeleton_spacing_radii) FIELD(voxel_size_radii) FIELD(window_radii) FIELD(ring_chord_error_radii)
     END()
     BEGIN(ent_mesh_view)
     FIELD(struct_size) FIELD(vertex_count) FIELD(triangle_count) FIELD(positions_xyz_m) FIELD(normals_xyz)
@@ -70,7 +70,7 @@ int main(void) {
     FIELD(struct_size) FIELD(vertex_count) FIELD(triangle_count) FIELD(watertight) FIELD(open_edges)
     FIELD(nonmanifold_edges) FIELD(blended_vertices) FIELD(inverted_triangles) FIELD(radius_error_rms)
     FIELD(radius_error_max) FIELD(normal_deviation_rms_rad) FIELD(normal_deviation_max_rad) FIELD(volume_m3)
-    FIELD(volume_error) FIELD(axis_length_m) FIELD(last_update_ns)
+    FIELD(volume_error) FIELD(axis_length_m) FIELD(last_update_ns) FIELD(facet_error_rms) FIELD(facet_error_max)
     END()
     printf("}\n");
     return 0;

@@ -93,6 +93,21 @@ class MeshIsTheCApis(unittest.TestCase):
             self.assertEqual(counts[32] * 8 - counts[8] * 32, (counts[32] % 32) * 8 - (counts[8] % 8) * 32)
             self.assertGreater(counts[32], 3 * counts[8])
 
+    def test_level_of_detail_adds_rings_where_the_axis_bends(self):
+        # The serpentine's U-turns: adaptive rings (at most 2 R apart) add rings there, and
+        # the facet error (the chord between rings) falls against even rings 2 R apart.
+        with enteron.Scene(SCENE) as scene:
+            results = {}
+            for chord_error in (0.0, 0.005):
+                with enteron.Skin(scene, "convolution", segments=32, ring_spacing_radii=2.0,
+                                  ring_chord_error_radii=chord_error) as skin:
+                    skin.update()
+                    results[chord_error] = (skin.mesh().vertex_count, skin.metrics())
+            (even_vertices, even), (lod_vertices, lod) = results[0.0], results[0.005]
+            self.assertGreater(lod_vertices, even_vertices)
+            self.assertLess(lod.facet_error_max, even.facet_error_max)
+            self.assertTrue(lod.watertight)
+
 
 class ZeroCopy(unittest.TestCase):
     def test_views_are_the_librarys_memory_and_follow_updates(self):
@@ -148,6 +163,9 @@ class Errors(unittest.TestCase):
             with self.assertRaises(enteron.Error) as caught:
                 enteron.Skin(scene, "convolution", window_radii=5.0)
             self.assertIn("window_radii", caught.exception.message)
+            with self.assertRaises(enteron.Error) as caught:
+                enteron.Skin(scene, "convolution", ring_chord_error_radii=-0.5)
+            self.assertIn("ring_chord_error_radii", caught.exception.message)
             with self.assertRaises(enteron.Error) as caught:
                 enteron.Skin(scene, 7)
             self.assertEqual(caught.exception.status, enteron.ERROR_INVALID_ARGUMENT)

@@ -1,0 +1,34 @@
+// Where the rings of the convolution skin go along the axis: the level of detail. Evenly
+// spaced rings make flat facets where the axis bends; these rings come closer there, so
+// that the chord between two rings departs from the tube by at most a tolerance, and stay
+// `max_spacing` apart where the axis is straight.
+//
+// Two rings of radius R, Delta apart on a bend of curvature k: on the outer side the ring
+// points are Delta (1 + k R) apart on a circle of radius 1 / k + R, so the straight edge
+// between them sags by Delta^2 k (1 + k R) / 8 below the surface (less on the inner side).
+// The wanted spacing is then Delta(s) = sqrt(8 e / (k (1 + k R))) for a chord error e,
+// clamped to [min_spacing, max_spacing], with k the largest curvature within max_spacing / 2
+// of s. The rings are placed at equal steps of the integral of 1 / Delta(s) ds, so their
+// count is whole, the ends are rings and no spacing exceeds Delta by more than a rounding.
+#pragma once
+
+#include <vector>
+
+#include "skinning/axis_samples.h"
+
+namespace enteron::skinning {
+
+class RingPlacement {
+public:
+    // The rings' places (arc lengths, m, increasing from 0 to the axis length), from `axis`:
+    // samples of the axis with their tangents, no more than min_spacing apart (the skin's
+    // skeleton samples). Valid until the next call; allocates only when the ring count
+    // grows.
+    const std::vector<double>& place(const AxisSamples& axis, double radius, double max_spacing, double min_spacing,
+                                     double chord_error);
+
+private:
+    std::vector<double> curvature_, density_, arc_lengths_;
+};
+
+}  // namespace enteron::skinning
