@@ -695,6 +695,11 @@ class Report:
         mech = read(os.path.join(self.dir, "mechanics.csv")) or []
         times = sorted(set(p["t_s"] for p in self.peer_rows))
         last = times[-1]
+        ref = [(r["x_m"], r["y_m"], r["z_m"]) for r in read(os.path.join(self.dir, "mechanics_reference_axes.csv")) or []
+               if r["scene"] == "swing" and r["t_s"] == last]
+        length = sum(math.dist(a, b) for a, b in zip(ref, ref[1:]))
+        stretched = (f"the reference's axis is {g(length)} m long at t = {g(last)} s, "
+                     f"{g(100 * (length / BOWEL_LENGTH_M - 1), 2)} % more than at rest" if ref else "several per cent")
         self.md.append(
             f"{built or 'A peer'} in the same run and process as ours, on the swing: the same length, radius, mass "
             "per length, bending stiffness, stretch stiffness and damping, drag, gravity, pinned first end, "
@@ -711,8 +716,8 @@ class Report:
             "- *Stretching* (`mujoco_rope`): MuJoCo's stretch joints, a slide between neighbouring capsules of "
             "stiffness EA / l and damping c / l (its soft equality that holds them near zero is turned off); the "
             "capsules keep their length and open gaps, and the last segment cannot stretch. `mujoco_rope_rigid` "
-            "has rigid segments (the collision benchmark's rope): our EA = 100 N lets the swinging bowel "
-            "lengthen by several per cent, which it cannot follow.\n"
+            f"has rigid segments (the collision benchmark's rope): our EA = 100 N lets the swinging bowel "
+            f"lengthen ({stretched}), which it cannot follow.\n"
             "- *Drag*: MuJoCo has no drag per metre (its fluid model is per body, isotropic, on an equivalent "
             "inertia box), so -c v per metre is added through its passive-force callback: -c l v at each "
             "capsule's centre and -c l^3 / 12 omega across it.\n"
@@ -757,7 +762,7 @@ class Report:
             out.append([p["peer"], g(p["control_points"]), g(p["timestep_s"]), mm(p["error_m"]), g(p["us_per_ms"]),
                         finite, status, cell(default), cell(ours(p, "symplectic_euler")),
                         cell(ours(p, "rk4")), g(ratio)])
-            if p["peer"] == "mujoco_rope" and p["sweep"] in ("N", "dt"):
+            if p["peer"] == "mujoco_rope" and p["sweep"] == "N":
                 readme.append([g(p["control_points"]), g(p["timestep_s"]), mm(p["error_m"]), g(p["us_per_ms"]),
                                finite, cell(default), cell(ours(p, "rk4")), g(ratio)])
         self.md.append(f"### Every setting at t = {g(last)} s\n")
@@ -773,6 +778,21 @@ class Report:
             "own convergence: [study.md, Peers](STUDY_MD#peers)):")
         self.readme_notes.append(table(["N", "time step (s)", "MuJoCo error (mm)", "MuJoCo us per 1 ms", "finite",
                                         "Enteron implicit Euler", "Enteron rk4", "MuJoCo / Enteron cost"], readme))
+        # The time-step sweep in one sentence: where its Euler stayed finite, and what ran to the end.
+        sweep = sorted((p for p in self.peer_rows if p["t_s"] == last and p["peer"] == "mujoco_rope"
+                        and p["sweep"] == "dt"),
+                       key=lambda p: p["timestep_s"])
+        if sweep:
+            def steps(rows):
+                return ", ".join(g(p["timestep_s"]) for p in rows) or "none"
+            blown = [p for p in sweep if not p["finite"]]
+            ended = [p for p in sweep if math.isfinite(p["error_m"])]
+            timed = [p for p in sweep if p["finite"] and not math.isfinite(p["error_m"])]
+            self.readme_notes.append(
+                f"Time steps at N = {g(sweep[0]['control_points'])} (s): MuJoCo's Euler went non-finite at "
+                f"{steps(blown)}; ran to the end at {steps(ended)}"
+                + (f"; was only timed (its run too long for the study) at {steps(timed)}" if timed else "")
+                + ". Every setting, and the same rope with rigid segments: `study.md`.")
         self.peer_convergence(last)
         self.peer_checks()
 
@@ -808,6 +828,7 @@ class Report:
             steps.setdefault(n, []).append(h)
         n_time = max(steps, key=lambda n: (len(steps[n]), -n))
         hs = sorted(steps[n_time])
+        time_error = float("nan")
         if len(hs) >= 2:
             finest = rows[(n_time, hs[0])]
             out = [[g(h), g(1e3 * rows[(n_time, h)]["error_m"]),
@@ -816,6 +837,8 @@ class Report:
                            f"({g(hs[0])} s):\n")
             self.md.append(table(["time step (s)", "error vs our reference (mm)",
                                   f"distance to its {g(hs[0])} s run (mm)"], out) + "\n")
+            if (n_time, 1e-3) in rows:
+                time_error = rms_distance(rows[(n_time, 1e-3)]["axis"], finest["axis"])
         big, bigger = ns[-1], 2 * ns[-1]
         finding = (f"MuJoCo rope on the swing at t = {g(t)} s, 1 ms: {g(1e3 * rows[(big, 1e-3)]['error_m'])} mm from "
                    f"our reference at N = {g(big)}, {g(1e3 * rows[(bigger, 1e-3)]['error_m'])} mm at N = {g(bigger)}")
@@ -830,7 +853,9 @@ class Report:
             self.md.append(
                 f"Extrapolated to N -> infinity from N = {g(big)} and {g(bigger)} (Richardson with the observed order "
                 f"{g(order, 2)}), its axis at 1 ms is {g(1e3 * gap)} mm from our reference: what remains once its "
-                "spatial error is taken out, its time error at 1 ms plus the difference between the two models.\n")
+                "spatial error is taken out, its time error at 1 ms plus the difference between the two models"
+                + (f"; its time error at 1 ms alone is {g(1e3 * time_error)} mm (at N = {g(n_time)}, table above)"
+                   if math.isfinite(time_error) else "") + ".\n")
             finding += f"; converging with order {g(order, 2)} in N, extrapolated to {g(1e3 * gap)} mm"
         self.notes.append(finding)
 
