@@ -59,6 +59,47 @@ bool all_finite(const mjtNum* values, int count) {
     return true;
 }
 
+// The drag of a rope that asks for it: the model's numeric kDragNumeric holds c (N s/m^2)
+// and the segment length l. Every body is a segment of the rope (the walls are world
+// geoms). On a rigid segment, -c v per metre integrates to the force -c l v at its centre
+// and the torque -c l^3 / 12 omega across its axis. The generalised force is accumulated
+// from the leaves to the root in MuJoCo's com-based frame, as mj_rne does, so that it costs
+// O(N) (one mj_applyFT per body would cost O(N nv)).
+constexpr const char* kDragNumeric = "enteron_drag";
+
+void add_rope_drag(const mjModel* m, mjData* d) {
+    const int id = mj_name2id(m, mjOBJ_NUMERIC, kDragNumeric);
+    if (id < 0 || m->numeric_size[id] != 2) return;
+    const mjtNum c = m->numeric_data[m->numeric_adr[id]];
+    const mjtNum l = m->numeric_data[m->numeric_adr[id] + 1];
+    mjMARKSTACK;
+    mjtNum* body_force = mj_stackAlloc(d, 6 * m->nbody);  // [torque about the com frame's origin; force]
+    mju_zero(body_force, 6 * m->nbody);
+    for (int b = 1; b < m->nbody; ++b) {
+        const mjtNum* origin = d->subtree_com + 3 * m->body_rootid[b];
+        const mjtNum* centre = d->xipos + 3 * b;
+        const mjtNum* w = d->cvel + 6 * b;       // angular velocity
+        mjtNum arm[3], v[3], spin[3];
+        mju_sub3(arm, centre, origin);
+        mju_cross(spin, w, arm);
+        mju_add3(v, d->cvel + 6 * b + 3, spin);  // the velocity of the segment's centre
+        const mjtNum axis[3] = {d->xmat[9 * b], d->xmat[9 * b + 3], d->xmat[9 * b + 6]};
+        mjtNum across[3];
+        mju_addScl3(across, w, axis, -mju_dot3(w, axis));
+        mjtNum* f = body_force + 6 * b;
+        mju_scl3(f + 3, v, -c * l);
+        mju_scl3(f, across, -c * l * l * l / 12.0);
+        mjtNum moment[3];
+        mju_cross(moment, arm, f + 3);
+        mju_addTo3(f, moment);
+    }
+    for (int b = m->nbody - 1; b > 0; --b)
+        if (m->body_parentid[b] > 0) mju_addTo(body_force + 6 * m->body_parentid[b], body_force + 6 * b, 6);
+    for (int j = 0; j < m->nv; ++j)
+        d->qfrc_passive[j] += mju_dot(d->cdof + 6 * j, body_force + 6 * m->dof_bodyid[j], 6);
+    mjFREESTACK;
+}
+
 }  // namespace
 
 const char* mujoco_integrator_name(MujocoIntegrator integrator) {
@@ -141,7 +182,12 @@ std::string rope_xml(const MujocoRopeDesc& desc) {
       << "  <compiler angle=\"radian\"/>\n"
       << "  <option timestep=\"" << desc.timestep_s << "\" integrator=\""
       << mujoco_integrator_name(desc.integrator) << "\" gravity=\"" << desc.gravity_m_per_s2[0] << ' '
-      << desc.gravity_m_per_s2[1] << ' ' << desc.gravity_m_per_s2[2] << "\"/>\n"
+      << desc.gravity_m_per_s2[1] << ' ' << desc.gravity_m_per_s2[2] << "\">\n"
+      // The composite rope holds each stretch joint near zero by a soft equality constraint
+      // on top of its spring: off, so that the spring EA / l alone sets the stretch (and the
+      // constraint solver has nothing to do). The model has no other equality.
+      << "    <flag equality=\"disable\"/>\n"
+      << "  </option>\n"
       << "  <size nconmax=\"" << desc.max_contacts << "\" njmax=\"" << desc.max_constraint_rows << "\"/>\n"
       << "  <worldbody>\n";
     if (desc.box) {
@@ -171,8 +217,11 @@ std::string rope_xml(const MujocoRopeDesc& desc) {
     // conaffinity 1) but not each other (conaffinity 0).
     x << "      <composite type=\"rope\" count=\"" << bodies << " 1 1\" spacing=\"" << l << "\" prefix=\"r\">\n"
       << "        <joint kind=\"main\" stiffness=\"" << joint_stiffness << "\" damping=\""
-      << desc.joint_damping_N_m_s << "\"/>\n"
-      << "        <geom type=\"capsule\" size=\"" << r << ' ' << 0.5 * l << "\" mass=\"" << mass
+      << desc.joint_damping_N_m_s << "\"/>\n";
+    if (desc.stretch_stiffness_N > 0.0)
+        x << "        <joint kind=\"stretch\" stiffness=\"" << desc.stretch_stiffness_N / l << "\" damping=\""
+          << desc.stretch_damping_N_s / l << "\"/>\n";
+    x << "        <geom type=\"capsule\" size=\"" << r << ' ' << 0.5 * l << "\" mass=\"" << mass
       << "\" friction=\"" << desc.friction << " 0.005 0.0001\" contype=\"1\" conaffinity=\""
       << (desc.self_collision ? 1 : 0) << "\"/>\n"
       << "      </composite>\n"
@@ -185,6 +234,9 @@ std::string rope_xml(const MujocoRopeDesc& desc) {
                 x << "    <exclude body1=\"rB" << i << "\" body2=\"rB" << j << "\"/>\n";
         x << "  </contact>\n";
     }
+    if (desc.drag_N_s_per_m2 > 0.0)
+        x << "  <custom>\n    <numeric name=\"" << kDragNumeric << "\" data=\"" << desc.drag_N_s_per_m2 << ' ' << l
+          << "\"/>\n  </custom>\n";
     x << "</mujoco>\n";
     return x.str();
 }
@@ -198,8 +250,10 @@ std::unique_ptr<MujocoRope> MujocoRope::create(const MujocoRopeDesc& desc, std::
     };
     if (desc.points < 3) return fail("a MuJoCo rope needs at least 3 points");
     if (!(desc.length_m > 0.0 && desc.radius_m > 0.0 && desc.linear_density_kg_per_m > 0.0 &&
-          desc.timestep_s > 0.0 && desc.bend_stiffness_N_m2 >= 0.0))
-        return fail("length, radius, linear density and time step must be > 0, bend stiffness >= 0");
+          desc.timestep_s > 0.0 && desc.bend_stiffness_N_m2 >= 0.0 && desc.stretch_stiffness_N >= 0.0 &&
+          desc.stretch_damping_N_s >= 0.0 && desc.drag_N_s_per_m2 >= 0.0))
+        return fail("length, radius, linear density and time step must be > 0; bend and stretch stiffness, "
+                    "stretch damping and drag >= 0");
     if (desc.initial_points_xyz_m.size() != 3 * static_cast<std::size_t>(desc.points))
         return fail("initial_points_xyz_m must hold points x 3 coordinates");
 
@@ -207,6 +261,8 @@ std::unique_ptr<MujocoRope> MujocoRope::create(const MujocoRopeDesc& desc, std::
         return fail("libmujoco version " + std::to_string(mj_version()) + " does not match its header (" +
                     std::to_string(mjVERSION_HEADER) + ")");
     mju_user_warning = quiet_warning;
+    // One process-wide hook; it acts only on models that carry the drag numeric.
+    if (desc.drag_N_s_per_m2 > 0.0) mjcb_passive = add_rope_drag;
     std::unique_ptr<MujocoRope> rope(new MujocoRope());
     rope->points_ = desc.points;
     rope->segment_length_m_ = desc.length_m / (desc.points - 1);
@@ -267,7 +323,7 @@ std::unique_ptr<MujocoRope> MujocoRope::create(const MujocoRopeDesc& desc, std::
         mju_rotVecQuat(local, world_direction, inverse);
         const double b = std::asin(std::clamp(local[1], -1.0, 1.0));
         const double a = std::atan2(-local[2], local[0]);
-        const int hinge_y = 2 * static_cast<int>(i) - 1;  // joint 0 is the root's
+        const int hinge_y = m->body_jntadr[i + 1];  // body 0 is the world; a stretch joint follows the hinges
         d->qpos[m->jnt_qposadr[hinge_y]] = a;
         d->qpos[m->jnt_qposadr[hinge_y + 1]] = b;
         const mjtNum y_axis[3] = {0.0, 1.0, 0.0}, z_axis[3] = {0.0, 0.0, 1.0};

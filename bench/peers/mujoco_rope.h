@@ -8,14 +8,17 @@
 // end, the N - 2 joints, the last end) play the part of our N control points. Each body
 // carries the mass of its segment, mu l (inertia from the capsule's shape). Bending: a
 // spring of stiffness EI / l on each hinge (the discrete form of the energy
-// EI/2 integral of curvature^2 ds, straight at rest, like ours). Stretching: none, the
-// segments are rigid (our stretch stiffness makes ours nearly so). Self-collision: every
+// EI/2 integral of curvature^2 ds, straight at rest, like ours). Stretching: none by
+// default, the segments are rigid (the collision benchmark's rope); with
+// stretch_stiffness_N set (the accuracy study), MuJoCo's stretch joints, a slide along each
+// segment of stiffness EA / l. Drag, when set, goes through MuJoCo's passive-force
+// callback (mjcb_passive): MuJoCo has no drag per metre of a rope. Self-collision: every
 // capsule pair except those closer along the axis than our neighbour window (pi R): parent
 // and child (MuJoCo filters those itself) and next-but-one bodies (excluded explicitly).
 // The box cavity is six inward-facing planes. Contacts use MuJoCo's own soft-constraint
 // model with its default solver settings and our friction coefficient; there is no
-// mesentery, drag or stretch damping (MuJoCo has no matching element), which the
-// benchmark report says.
+// mesentery (MuJoCo has no matching element), and no drag or stretch damping unless set
+// (the collision benchmark leaves them off), which the benchmark report says.
 //
 // MuJoCo 2.2.2 (Debian 12's libmujoco-dev) has neither the cable composite nor flexcomp
 // (both came later), hence the rope. Built only when MuJoCo is found (ENTERON_BENCH_MUJOCO).
@@ -41,6 +44,15 @@ struct MujocoRopeDesc {
     double linear_density_kg_per_m = 0.3;
     double bend_stiffness_N_m2 = 2.5e-3;     // EI; a joint spring EI / l
     double joint_damping_N_m_s = 0.0;        // per ball joint, N m s / rad
+    // EA, N: 0 keeps the segments rigid; > 0 adds a stretch joint between neighbours (a
+    // slide along the segment) of stiffness EA / l, the discrete form of EA/2 integral of
+    // strain^2 ds. The capsules keep their length: a stretched rope shows gaps between
+    // them, and its last segment (after the last joint) does not stretch.
+    double stretch_stiffness_N = 0.0;
+    double stretch_damping_N_s = 0.0;        // axial force per unit strain rate: damping c / l on each stretch joint
+    // Drag, N s / m^2: a force -c v per metre of axis, as Enteron's drag. On each rigid
+    // segment, -c l v at its centre and the torque -c l^3 / 12 omega across it.
+    double drag_N_s_per_m2 = 0.0;
     double timestep_s = 1e-3;
     MujocoIntegrator integrator = MujocoIntegrator::euler;
     double gravity_m_per_s2[3] = {0.0, 0.0, -9.81};
@@ -65,7 +77,8 @@ struct MujocoRopeDesc {
 // The rope matching an Enteron scene description: length, radius, control points, linear
 // density, bend stiffness, time step, gravity (zero when the effect is off), friction,
 // self-collision (on when the scene's effect is on) and a pinned first end (when the
-// scene pins it). The initial axis is the scene's for the shapes "line" (the swinging
+// scene pins it). Stretching, stretch damping and drag stay off (rigid segments, as the
+// collision benchmark times them): set them for a closer match. The initial axis is the scene's for the shapes "line" (the swinging
 // scene: pinned at one end, released from horizontal) and "points"; for the others it is
 // left empty: give it the scene's control points (ent_scene_control_points).
 MujocoRopeDesc mujoco_rope_desc_from(const ent_scene_desc& scene);

@@ -1,19 +1,21 @@
 // Mechanics accuracy: the error of the axis against a converged reference, for each knob
 // (control points N, integrator, time step), with the cost of a 1 kHz step.
 //
-// Scenes (deterministic, not chaotic; a bowel of length L = kLength, R = 12.5 mm,
-// 0.3 kg/m, EA = 100 N, EI = 2.5e-3 N m^2, gravity, drag kDrag):
+// Scenes (deterministic, not chaotic; mechanics_scenes.h): a bowel of length L = 6 m,
+// R = 12.5 mm, 0.3 kg/m, EA = 100 N, EI = 2.5e-3 N m^2, gravity, drag 1 N s/m^2:
 //   swing  pinned at its first end, released from horizontal, swinging down;
 //   sag    pinned at both ends, straight and horizontal at first, sagging under gravity
 //          to rest;
 //   drop   the swing with a floor 0.5 m below the pin: the bowel drops onto the plane.
 // Error: RMS distance between the axis and the reference's, both sampled at kSamples
-// points evenly spaced in arc length (ent_scene_axis), at each time of kTimes.
+// points evenly spaced in arc length (ent_scene_axis), at each time of the grid.
 // Cost: median wall time of one ent_scene_step, scaled to 1 ms of simulated time (what a
 // 1 kHz loop pays); a time step above 1 ms is stepped as one call of that length.
 // The explicit integrators never take a substep above their stability limit, whatever
 // the time step asked: the effective substep (simulated time / substeps) is reported.
 #include "mechanics_study.h"
+
+#include "mechanics_scenes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,45 +26,10 @@ namespace study {
 
 namespace {
 
-constexpr double kLength = 6.0;       // m, the whole small bowel
-constexpr double kFloorDepth = 0.5;   // m below the pin (drop)
-// Drag of every scene, N s/m^2. The library's light default (0.05) lets the free end of a
-// 6 m bowel whip: measured, the swing's state at 2 s then does not converge with N up to
-// 960 (the distance between N and 2N stalls near 7 mm). Tissue around the bowel damps it
-// far more than that anyway.
-constexpr double kDrag = 1.0;
-constexpr uint32_t kSamples = 201;    // axis samples for the error
-constexpr double kOneMs = 1e-3;
-
-enum class Scene { swing, sag, drop };
-const char* scene_name(Scene scene) {
-    switch (scene) {
-        case Scene::swing: return "swing";
-        case Scene::sag: return "sag";
-        case Scene::drop: return "drop";
-    }
-    return "?";
-}
-
-std::string scene_json(Scene scene, uint32_t control_points, int32_t integrator, double timestep) {
-    const bool both = scene == Scene::sag;
-    std::string environment;
-    if (scene == Scene::drop)
-        environment = format(", \"environment\": [{\"type\": \"plane\", \"point\": [0, 0, %.17g], "
-                             "\"normal\": [0, 0, 1]}]",
-                             -kFloorDepth);
-    return format(
-        "{\"intestine\": {\"length\": %.17g, \"radius\": 0.0125, \"control_points\": %u,"
-        " \"linear_density\": 0.3, \"stretch_stiffness\": 100, \"bend_stiffness\": 0.0025,"
-        " \"shape\": {\"kind\": \"line\", \"center\": [0, 0, 0], \"direction\": [1, 0, 0]}},"
-        " \"solver\": {\"integrator\": \"%s\", \"timestep\": %.17g, \"max_substeps\": 1000000,"
-        " \"max_speed\": 1000},"
-        " \"gravity\": [0, 0, -9.81],"
-        " \"damping\": {\"drag\": %.17g, \"stretch\": 0.05, \"bend\": 0},"
-        " \"pinned\": {\"ends\": \"%s\"}%s}",
-        kLength, control_points, integrator_name(integrator), timestep, kDrag, both ? "both" : "first",
-        environment.c_str());
-}
+using Scene = MechanicsScene;
+const char* scene_name(Scene scene) { return mechanics_scene_name(scene); }
+constexpr double kLength = kMechanicsBowel.length_m;
+constexpr uint32_t kSamples = kAxisSamples;
 
 struct Setting {
     Scene scene;
@@ -87,24 +54,13 @@ struct Run {
 class MechanicsStudy {
 public:
     MechanicsStudy(const Options& options) : options_(options) {
-        if (options.fast) {
-            times_ = {0.5};
-            sizes_ = {30, 60, 120, 240};
-            reference_ = {240, ENT_INTEGRATOR_RK4, 2e-5};
-            dt_sweep_points_ = 60;
-            timesteps_ = {2e-5, 1e-4, 5e-4, 1e-3, 5e-3};
-            scenes_ = {Scene::swing, Scene::sag, Scene::drop};
-        } else {
-            times_ = {0.5, 2.0};
-            sizes_ = {30, 60, 120, 240, 480, 960};
-            // dt = 2e-5 s, not 1e-5: below rk4's stability limit at N = 960 (3e-5 s), and
-            // halving it (reported) moves the axis by orders of magnitude less than halving
-            // N; 1e-5 would double the hour's worth of reference runs on the 2-core machine.
-            reference_ = {960, ENT_INTEGRATOR_RK4, 2e-5};
-            dt_sweep_points_ = 240;
-            timesteps_ = {1e-5, 2e-5, 5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2};
-            scenes_ = {Scene::swing, Scene::sag, Scene::drop};
-        }
+        const MechanicsGrid grid = mechanics_grid(options);
+        times_ = grid.times_s;
+        sizes_ = grid.sizes;
+        reference_ = {grid.reference_points, grid.reference_integrator, grid.reference_timestep_s};
+        dt_sweep_points_ = grid.dt_sweep_points;
+        timesteps_ = grid.timesteps_s;
+        scenes_ = grid.scenes;
     }
 
     void run() {
@@ -205,7 +161,7 @@ private:
         const double start = now_s();
         const double outer = std::max(setting.timestep, kOneMs);
         try {
-            ScenePtr scene = make_scene(scene_json(setting.scene, setting.control_points, setting.integrator,
+            ScenePtr scene = make_scene(mechanics_scene_json(setting.scene, setting.control_points, setting.integrator,
                                                    setting.timestep));
             std::vector<double> samples;
             long done = 0;

@@ -10,11 +10,15 @@ absent effects never run, ...) and exits 1 naming every failed check. With --rea
 replaces the block between the markers `<!-- study:begin -->` and `<!-- study:end -->` of
 that file with the main table and the plots.
 
-Peers (a MuJoCo rope, ...): a CSV `peers.csv` in RESULTS_DIR (or --peers) with the columns
-    peer, scene, control_points, timestep_s, t_s, us_per_ms, finite, axis_xyz_m
-where axis_xyz_m is 201 points evenly spaced in arc length, "x y z x y z ..." separated by
-spaces, is compared with the study's reference axes (mechanics_reference_axes.csv) and
-shown next to our own error on the same scene, N and time step.
+Peers (the MuJoCo rope of bench/peers, written by the study's peers part): a CSV
+`peers.csv` in RESULTS_DIR (or --peers) with the columns
+    peer, scene, sweep, integrator, control_points, timestep_s, t_s, us_per_ms, finite,
+    steps_timed, build_s, status, axis_xyz_m
+(only peer, scene, control_points, timestep_s, t_s, us_per_ms, finite and axis_xyz_m are
+required) where axis_xyz_m is 201 points evenly spaced in arc length, "x y z x y z ..."
+separated by spaces, or empty when the run did not reach t_s. It is compared with the
+study's reference axes (mechanics_reference_axes.csv), with the same metric as ours, and
+shown next to our own error and cost on the same scene, N and time step.
 """
 import argparse
 import csv
@@ -35,6 +39,12 @@ EXPECTED_TIME_ORDER = {"rk4": 4.0, "symplectic_euler": 1.0, "implicit_euler": 1.
 # check accepts from 1 up (measured about 1.2 to 1.7 on the swing between N = 60 and 960).
 EXPECTED_SPACE_ORDER = 2.0
 SMOOTH_SCENES = ("swing", "sag")  # the drop has penalty contacts: no smooth order
+BOWEL_LENGTH_M = 6.0  # of the mechanics scenes (bench/study/mechanics_scenes.h)
+PEER_LABELS = {"mujoco_rope": "MuJoCo rope (Euler)", "mujoco_rope_rigid": "MuJoCo rope, rigid segments"}
+# A peer that ran the swing to the end with N >= 30 and a step <= 1 ms must be within this of
+# the reference (measured: about 1 cm at N = 30, t = 2 s); farther, the scenes differ (the
+# rigid rope, which cannot stretch, is 0.3 m off).
+PEER_ERROR_BOUND_M = 0.05
 # What the library does by default (JSON and C): the settings marked in the tables.
 DEFAULTS = {
     "integrator": "implicit_euler",
@@ -85,6 +95,13 @@ def fit_order(xs, ys):
     sxx = sum(p[0] ** 2 for p in pts)
     sxy = sum(p[0] * p[1] for p in pts)
     return (n * sxy - sx * sy) / (n * sxx - sx * sx)
+
+
+def rms_distance(a, b):
+    """RMS distance between two axes given as flat x y z lists of the same length (NaN if not)."""
+    if not a or not b or len(a) != len(b):
+        return float("nan")
+    return math.sqrt(sum((x - y) ** 2 for x, y in zip(a, b)) / (len(a) / 3))
 
 
 def pareto(points, *objectives):
@@ -151,6 +168,20 @@ class Report:
         self.plots = []
         self.run = (read(os.path.join(directory, "study_run.csv")) or [{}])[0]
         self.source = source_version()
+        self.peer_rows = []   # peers.csv with error_m, loaded by load_peers
+
+    def load_peers(self, path):
+        """Reads the peers' runs and measures each axis against the reference, as ours."""
+        self.peers_path = path
+        self.peer_rows = (read(path) if path else None) or []
+        ref = {}
+        for r in read(os.path.join(self.dir, "mechanics_reference_axes.csv")) or []:
+            ref.setdefault((r["scene"], r["t_s"]), []).extend([r["x_m"], r["y_m"], r["z_m"]])
+        for p in self.peer_rows:
+            p["axis"] = [float(v) for v in str(p.get("axis_xyz_m") or "").split()]
+            p["error_m"] = rms_distance(p["axis"], ref.get((p["scene"], p["t_s"])))
+            p.setdefault("sweep", "N" if p["timestep_s"] == 1e-3 else "dt")
+            p.setdefault("status", "ok" if p["axis"] else "no axis")
 
     def expect(self, condition, message):
         if not condition:
@@ -341,6 +372,7 @@ class Report:
                           and r["sweep"] == "N_fine_dt"), key=lambda r: r["control_points"])
             ax.loglog([r["control_points"] for r in sel], [r["error_rel"] for r in sel], "k--",
                       label="rk4, reference step")
+            self.draw_peers(ax, scene, last, lambda p: p["control_points"], sweeps=("N",))
             finish_axes(ax, "control points N", "RMS axis error / length", f"{scene}, t = {g(last)} s")
         self.save(fig, "mechanics_error_vs_N.png", "Mechanics: error against control points")
 
@@ -369,8 +401,23 @@ class Report:
                           label=integrator)
             draw_front_and_default(ax, pts, pareto(pts, lambda r: r["us_per_ms"], lambda r: r["error_m"]),
                                    lambda r: r["us_per_ms"], lambda r: r["error_rel"], self.is_default)
+            self.draw_peers(ax, scene, last, lambda p: p["us_per_ms"], sweeps=("N", "dt"))
             finish_axes(ax, "wall time per 1 ms simulated (us)", "RMS axis error / length", f"{scene}, t = {g(last)} s")
         self.save(fig, "mechanics_pareto.png", "Mechanics: error against cost, every setting, Pareto front")
+
+    def draw_peers(self, ax, scene, t, x, sweeps):
+        """The peers' runs that reached t, as black (x) and grey (+) markers, error relative to L."""
+        for peer, marker in (("mujoco_rope", "x"), ("mujoco_rope_rigid", "+")):
+            sel = {}
+            for p in self.peer_rows:
+                if (p["peer"] == peer and p["scene"] == scene and p["t_s"] == t and p["sweep"] in sweeps
+                        and math.isfinite(p["error_m"])):
+                    sel.setdefault((p["control_points"], p["timestep_s"]), p)
+            sel = sorted(sel.values(), key=x)
+            if sel:
+                ax.loglog([x(p) for p in sel], [p["error_m"] / BOWEL_LENGTH_M for p in sel], marker=marker, ms=8,
+                          color="k" if peer == "mujoco_rope" else "0.5", ls=":" if len(sweeps) == 1 else "none",
+                          label=PEER_LABELS[peer])
 
     def is_default(self, r):
         if (r.get("integrator") == DEFAULTS["integrator"] and r.get("timestep_s") == DEFAULTS["timestep_s"]
@@ -628,37 +675,218 @@ class Report:
         self.save(fig, "effects.png", "Effects: what each costs; absent ones cost nothing")
 
     # ---------------------------------------------------------------- peers
-    def peers(self, path):
+    def peers(self):
         self.md.append("## Peers\n")
-        peers = read(path) if path else None
-        axes = read(os.path.join(self.dir, "mechanics_reference_axes.csv"))
-        if not peers:
-            self.md.append(
-                "No peer results in this run. A peer (the MuJoCo rope of `bench/peers`, ...) joins the "
-                "study by writing `peers.csv` into this folder (columns: peer, scene, control_points, "
-                "timestep_s, t_s, us_per_ms, finite, axis_xyz_m with 201 points evenly spaced in arc length); "
-                "its error is measured against the same reference axes (`mechanics_reference_axes.csv`).\n")
+        built = str(self.run.get("peers", ""))
+        if not self.peer_rows:
+            if built.startswith("none"):
+                text = f"Skipped: {built[len('none'):].strip(' :')}."
+            else:
+                text = ("No peer results in this run. A peer (the MuJoCo rope of `bench/peers`, ...) joins the "
+                        "study by writing `peers.csv` into this folder (columns: see `bench/study/report.py`); its "
+                        "error is measured against the same reference axes (`mechanics_reference_axes.csv`).")
+                self.expect(not built.startswith("MuJoCo"),
+                            f"this build has a peer ({built}) but the study wrote no {self.peers_path}")
+            self.md.append(text + "\n")
+            self.readme_notes.append(f"Peers: {text}")
             return
-        ref = {}
-        for r in axes or []:
-            ref.setdefault((r["scene"], r["t_s"]), []).extend([r["x_m"], r["y_m"], r["z_m"]])
         mech = read(os.path.join(self.dir, "mechanics.csv")) or []
-        out = []
-        for p in peers:
-            xyz = [float(v) for v in str(p["axis_xyz_m"]).split()] if p.get("axis_xyz_m") else []
-            reference = ref.get((p["scene"], p["t_s"]))
-            err = float("nan")
-            if reference and len(xyz) == len(reference):
-                err = math.sqrt(sum((a - b) ** 2 for a, b in zip(xyz, reference)) / (len(xyz) / 3))
-            ours = [r for r in mech if r["scene"] == p["scene"] and r["t_s"] == p["t_s"]
-                    and r["control_points"] == p["control_points"] and r["timestep_s"] == p["timestep_s"]
-                    and r["sweep"] in ("N", "dt")]
-            ours_text = "; ".join(f"{r['integrator']} {g(r['error_m'])} m, {g(r['us_per_ms'])} us"
-                                  for r in {r["integrator"]: r for r in ours}.values())
-            out.append([p["peer"], p["scene"], g(p["control_points"]), g(p["timestep_s"]), g(p["t_s"]),
-                        g(p["us_per_ms"]), "yes" if p["finite"] else "no", g(err), ours_text or "-"])
-        self.md.append(table(["peer", "scene", "N", "time step (s)", "t (s)", "us per 1 ms", "finite",
-                              "error (m)", "Enteron, same scene, N and step"], out) + "\n")
+        times = sorted(set(p["t_s"] for p in self.peer_rows))
+        last = times[-1]
+        ref = [(r["x_m"], r["y_m"], r["z_m"]) for r in read(os.path.join(self.dir, "mechanics_reference_axes.csv")) or []
+               if r["scene"] == "swing" and r["t_s"] == last]
+        length = sum(math.dist(a, b) for a, b in zip(ref, ref[1:]))
+        stretched = (f"the reference's axis is {g(length)} m long at t = {g(last)} s, "
+                     f"{g(100 * (length / BOWEL_LENGTH_M - 1), 2)} % more than at rest" if ref else "several per cent")
+        self.md.append(
+            f"{built or 'A peer'} in the same run and process as ours, on the swing: the same length, radius, mass "
+            "per length, bending stiffness, stretch stiffness and damping, drag, gravity, pinned first end, "
+            "straight start at rest, N (its joint points), time step and times; its axis (201 points evenly spaced "
+            "in arc length along its joint polyline) is measured against the same reference with the same metric. "
+            "Cost: median `mj_step` per 1 ms simulated. MuJoCo 2.2.2 has no cable or flex element, so the "
+            "peer is its composite rope, and it differs from our model in ways no setting removes:\n")
+        self.md.append(
+            "- *Geometry and mass*: N - 1 rigid capsules (its axis a polyline, first order in the segment length "
+            "l) each carrying its mass mu l at its centre with the capsule's rotary inertia; ours a C1 cubic "
+            "Catmull-Rom axis with a consistent mass matrix and no rotary inertia.\n"
+            "- *Bending*: a spring EI / l on each of the two hinges between capsules (the angle over l as the "
+            "curvature); ours EI/2 times the integral of the spline's squared curvature.\n"
+            "- *Stretching* (`mujoco_rope`): MuJoCo's stretch joints, a slide between neighbouring capsules of "
+            "stiffness EA / l and damping c / l (its soft equality that holds them near zero is turned off); the "
+            "capsules keep their length and open gaps, and the last segment cannot stretch. `mujoco_rope_rigid` "
+            f"has rigid segments (the collision benchmark's rope): our EA = 100 N lets the swinging bowel "
+            f"lengthen ({stretched}), which it cannot follow.\n"
+            "- *Drag*: MuJoCo has no drag per metre (its fluid model is per body, isotropic, on an equivalent "
+            "inertia box), so -c v per metre is added through its passive-force callback: -c l v at each "
+            "capsule's centre and -c l^3 / 12 omega across it.\n"
+            "- *Integrator*: MuJoCo's Euler (its default): semi-implicit, joint damping implicit, springs "
+            "explicit, so the stretch and bending springs bound its stable step. Ours: the three integrators "
+            "of the study.\n"
+            "- *Cost*: MuJoCo works in joint coordinates, where the mass matrix of a chain is dense, so its step "
+            "grows like N^3 (ours like N). A setting whose whole run is projected above the study's budget "
+            "is timed on a few steps only (cost, no error: \"timed only\"); one whose model build and first "
+            "steps are projected above it is not run.\n")
+
+        def ours(p, integrator):
+            for r in mech:
+                if (r["scene"] == p["scene"] and r["t_s"] == p["t_s"] and r["integrator"] == integrator
+                        and r["control_points"] == p["control_points"] and r["timestep_s"] == p["timestep_s"]
+                        and r["sweep"] in ("N", "dt")):
+                    return r
+            return None
+
+        def mm(value):
+            return g(1e3 * value) if value is not None else "-"
+
+        def cell(r):
+            if not r:
+                return "-"
+            return f"{mm(r['error_m'])} mm, {g(r['us_per_ms'])} us" + (" (N of the reference)" if r["at_reference_N"] else "")
+
+        # Every setting at the last time; the same setting may sit in two sweeps: once.
+        unique = {}
+        for p in self.peer_rows:
+            if p["t_s"] == last:
+                unique.setdefault((p["peer"], p["control_points"], p["timestep_s"]), p)
+        order = {"N": 0, "dt": 1, "dt_own": 2}
+        out, readme = [], []
+        for p in sorted(unique.values(), key=lambda p: (p["peer"] != "mujoco_rope", order.get(p["sweep"], 3),
+                                                        p["control_points"], p["timestep_s"])):
+            default = ours(p, DEFAULTS["integrator"])
+            ratio = p["us_per_ms"] / default["us_per_ms"] if default else float("nan")
+            status = str(p.get("status", "ok"))
+            finite = "-" if status.startswith("not run") else ("yes" if p["finite"] else "no") + (
+                f" ({g(p['steps_timed'])} steps)" if status != "ok" and p["finite"] else "")
+            out.append([p["peer"], g(p["control_points"]), g(p["timestep_s"]), mm(p["error_m"]), g(p["us_per_ms"]),
+                        finite, status, cell(default), cell(ours(p, "symplectic_euler")),
+                        cell(ours(p, "rk4")), g(ratio)])
+            if p["peer"] == "mujoco_rope" and p["sweep"] == "N":
+                readme.append([g(p["control_points"]), g(p["timestep_s"]), mm(p["error_m"]), g(p["us_per_ms"]),
+                               finite, cell(default), cell(ours(p, "rk4")), g(ratio)])
+        self.md.append(f"### Every setting at t = {g(last)} s\n")
+        self.md.append("Error: RMS distance to the reference (mm); Enteron's cells: error and us per 1 ms at the same "
+                       "N and time step; ratio: the peer's cost over ours with implicit Euler (> 1: we are faster). "
+                       "Finite: whether it stayed finite over the steps it ran.\n")
+        self.md.append(table(["peer", "N", "time step (s)", "error (mm)", "us per 1 ms", "finite", "status",
+                              "Enteron implicit Euler (default)", "Enteron symplectic Euler", "Enteron rk4",
+                              "cost ratio"], out) + "\n")
+        self.readme_notes.append(
+            f"MuJoCo next to Enteron in the same run (swing, t = {g(last)} s; {built}'s composite rope with "
+            "stretch joints, hinge springs and drag, its Euler integrator; how it differs from our model and its "
+            "own convergence: [study.md, Peers](STUDY_MD#peers)):")
+        self.readme_notes.append(table(["N", "time step (s)", "MuJoCo error (mm)", "MuJoCo us per 1 ms", "finite",
+                                        "Enteron implicit Euler", "Enteron rk4", "MuJoCo / Enteron cost"], readme))
+        # The time-step sweep in one sentence: where its Euler stayed finite, and what ran to the end.
+        sweep = sorted((p for p in self.peer_rows if p["t_s"] == last and p["peer"] == "mujoco_rope"
+                        and p["sweep"] == "dt"),
+                       key=lambda p: p["timestep_s"])
+        if sweep:
+            def steps(rows):
+                return ", ".join(g(p["timestep_s"]) for p in rows) or "none"
+            blown = [p for p in sweep if not p["finite"]]
+            ended = [p for p in sweep if math.isfinite(p["error_m"])]
+            timed = [p for p in sweep if p["finite"] and not math.isfinite(p["error_m"])]
+            self.readme_notes.append(
+                f"Time steps at N = {g(sweep[0]['control_points'])} (s): MuJoCo's Euler went non-finite at "
+                f"{steps(blown)}; ran to the end at {steps(ended)}"
+                + (f"; was only timed (its run too long for the study) at {steps(timed)}" if timed else "")
+                + ". Every setting, and the same rope with rigid segments: `study.md`.")
+        self.peer_convergence(last)
+        self.peer_checks()
+
+    def peer_convergence(self, t):
+        """The rope's own convergence: is its gap to our reference discretisation or model?"""
+        rows = {(p["control_points"], p["timestep_s"]): p for p in self.peer_rows
+                if p["peer"] == "mujoco_rope" and p["t_s"] == t and p["axis"]}
+        rigid = {p["control_points"]: p for p in self.peer_rows
+                 if p["peer"] == "mujoco_rope_rigid" and p["t_s"] == t and p["timestep_s"] == 1e-3 and p["axis"]}
+        sizes = sorted(n for n, h in rows if h == 1e-3)
+        if len(sizes) < 2:
+            return
+        out, ns, diffs = [], [], []
+        for n in sizes:
+            p = rows[(n, 1e-3)]
+            nxt = rows.get((2 * n, 1e-3))
+            d = rms_distance(p["axis"], nxt["axis"]) if nxt else float("nan")
+            if math.isfinite(d):
+                ns.append(n)
+                diffs.append(d)
+            out.append([g(n), g(1e3 * p["error_m"]), g(1e3 * d),
+                        g(1e3 * rigid[n]["error_m"]) if n in rigid else "-"])
+        order = -fit_order(ns, diffs)  # needs two distances, so three N
+        self.md.append(f"### The peer's own convergence (t = {g(t)} s)\n")
+        self.md.append("In space: the distance between its axes at N and 2N (both at 1 ms), so our reference plays "
+                       f"no part; observed order {g(order, 2)} (from three N or more). The rigid rope beside it, "
+                       "for scale.\n")
+        self.md.append(table(["N", "error vs our reference (mm)", "distance to 2N (mm)",
+                              "rigid segments: error (mm)"], out) + "\n")
+        # In time: at the N of its finest time step that reached t.
+        steps = {}
+        for (n, h), p in rows.items():
+            steps.setdefault(n, []).append(h)
+        n_time = max(steps, key=lambda n: (len(steps[n]), -n))
+        hs = sorted(steps[n_time])
+        time_error = float("nan")
+        if len(hs) >= 2:
+            finest = rows[(n_time, hs[0])]
+            out = [[g(h), g(1e3 * rows[(n_time, h)]["error_m"]),
+                    g(1e3 * rms_distance(rows[(n_time, h)]["axis"], finest["axis"]))] for h in hs[1:]]
+            self.md.append(f"In time, at N = {g(n_time)}: the distance to its own finest step that ran to the end "
+                           f"({g(hs[0])} s):\n")
+            self.md.append(table(["time step (s)", "error vs our reference (mm)",
+                                  f"distance to its {g(hs[0])} s run (mm)"], out) + "\n")
+            if (n_time, 1e-3) in rows:
+                time_error = rms_distance(rows[(n_time, 1e-3)]["axis"], finest["axis"])
+        big, bigger = ns[-1], 2 * ns[-1]
+        finding = (f"MuJoCo rope on the swing at t = {g(t)} s, 1 ms: {g(1e3 * rows[(big, 1e-3)]['error_m'])} mm from "
+                   f"our reference at N = {g(big)}, {g(1e3 * rows[(bigger, 1e-3)]['error_m'])} mm at N = {g(bigger)}")
+        if math.isfinite(order) and order > 0.5:
+            # The gap at N -> infinity: Richardson on its two finest N, with the observed order.
+            a, b = rows[(big, 1e-3)]["axis"], rows[(bigger, 1e-3)]["axis"]
+            factor = 1.0 / (2.0 ** order - 1.0)
+            limit = [y + (y - x) * factor for x, y in zip(a, b)]
+            ref = [v for r in (read(os.path.join(self.dir, "mechanics_reference_axes.csv")) or [])
+                   if r["scene"] == "swing" and r["t_s"] == t for v in (r["x_m"], r["y_m"], r["z_m"])]
+            gap = rms_distance(limit, ref)
+            self.md.append(
+                f"Extrapolated to N -> infinity from N = {g(big)} and {g(bigger)} (Richardson with the observed order "
+                f"{g(order, 2)}), its axis at 1 ms is {g(1e3 * gap)} mm from our reference: what remains once its "
+                "spatial error is taken out, its time error at 1 ms plus the difference between the two models"
+                + (f"; its time error at 1 ms alone is {g(1e3 * time_error)} mm (at N = {g(n_time)}, table above)"
+                   if math.isfinite(time_error) else "") + ".\n")
+            finding += f"; converging with order {g(order, 2)} in N, extrapolated to {g(1e3 * gap)} mm"
+        self.notes.append(finding)
+
+    def peer_checks(self):
+        """The peer ran, on the same scene: checks that fail when it did not or when the scenes differ."""
+        mech = read(os.path.join(self.dir, "mechanics.csv")) or []
+        sizes = sorted(set(r["control_points"] for r in mech if r["scene"] == "swing" and r["sweep"] == "N"))
+        times = sorted(set(r["t_s"] for r in mech if r["scene"] == "swing"))
+        rope = [p for p in self.peer_rows if p["peer"] == "mujoco_rope"]
+        for n in sizes:
+            for t in times:
+                self.expect(any(p["control_points"] == n and p["timestep_s"] == 1e-3 and p["t_s"] == t for p in rope),
+                            f"peers: no mujoco_rope row for the swing at N = {g(n)}, 1 ms, t = {g(t)} s")
+        for p in self.peer_rows:
+            label = f"peers: {p['peer']} N = {g(p['control_points'])} dt = {g(p['timestep_s'])} t = {g(p['t_s'])}"
+            status = str(p.get("status", "ok"))
+            self.expect((not p["finite"]) == status.startswith("not finite"),
+                        f"{label}: finite = {g(p['finite'])} but status \"{status}\"")
+            if not status.startswith("not run"):
+                self.expect(p["us_per_ms"] > 0, f"{label}: no cost measured ({status})")
+            if status == "ok":
+                self.expect(len(p["axis"]) == 3 * 201, f"{label}: ran to the end but has no axis")
+            if (p["peer"] == "mujoco_rope" and status == "ok" and p["control_points"] >= 30
+                    and p["timestep_s"] <= 1e-3):
+                self.expect(p["error_m"] < PEER_ERROR_BOUND_M,
+                            f"{label}: {g(p['error_m'])} m from our reference, more than {PEER_ERROR_BOUND_M} m: "
+                            "the two scenes differ")
+        for t in times:
+            errors = [p["error_m"] for p in sorted(rope, key=lambda p: p["control_points"])
+                      if p["timestep_s"] == 1e-3 and p["t_s"] == t and p["sweep"] == "N" and math.isfinite(p["error_m"])]
+            self.expect(len(errors) >= 2, f"peers: fewer than two mujoco_rope runs reached t = {g(t)} s at 1 ms")
+            self.expect(all(b < a for a, b in zip(errors, errors[1:])),
+                        f"peers: the MuJoCo rope's error does not fall as N grows at t = {g(t)} s: {errors}")
 
     # ---------------------------------------------------------------- output
     def main_table(self):
@@ -691,6 +919,8 @@ class Report:
                      f"(`scripts/study`, mode {self.run.get('mode', '?')}); every table of the study: "
                      f"[`{rel}/study.md`]({rel}/study.md).",
                      "", self.main_table(), ""]
+            for note in self.readme_notes:
+                block += [note.replace("STUDY_MD", f"{rel}/study.md"), ""]
             block += [f"![{caption}]({rel}/{name})" for name, caption in self.plots]
             block.append("<!-- study:end -->")
             with open(readme) as f:
@@ -711,12 +941,13 @@ def main():
     parser.add_argument("--peers")
     args = parser.parse_args()
     report = Report(args.results)
+    report.load_peers(args.peers or os.path.join(args.results, "peers.csv"))
     report.mechanics()
     report.collision()
     report.tool()
     report.skin()
     report.effects()
-    report.peers(args.peers or os.path.join(args.results, "peers.csv"))
+    report.peers()
     report.write(args.readme)
     print(f"report.py: wrote {os.path.join(args.results, 'study.md')} and {len(report.plots)} plots")
     for note in report.notes:

@@ -2,13 +2,14 @@
 // Writes CSV files into --out; bench/study/report.py turns them into plots, a markdown
 // table and checks. scripts/study builds and runs both.
 //
-//   enteron_study [--fast | --full] --out DIR [--part mechanics|collision|tool|skin|effects ...]
+//   enteron_study [--fast | --full] --out DIR [--part mechanics|collision|tool|skin|effects|peers ...]
 //
 // --fast (ctest) runs a small grid in a few minutes; --full (the default) is the grid
 // whose results are committed in bench/results/study/.
 #include "collision_study.h"
 #include "effects_study.h"
 #include "mechanics_study.h"
+#include "peers_study.h"
 #include "skin_study.h"
 #include "study_common.h"
 #include "tool_push_study.h"
@@ -23,7 +24,7 @@ namespace {
 
 int usage(const char* message) {
     std::fprintf(stderr, "enteron_study: %s\nusage: enteron_study [--fast | --full] --out DIR [--part NAME]...\n"
-                 "parts: mechanics, collision, tool, skin, effects (default: all)\n", message);
+                 "parts: mechanics, collision, tool, skin, effects, peers (default: all)\n", message);
     return 2;
 }
 
@@ -51,7 +52,8 @@ int main(int argc, char** argv) {
     }
     if (options.out_dir.empty()) return usage("--out DIR is required");
     for (const std::string& part : options.parts)
-        if (part != "mechanics" && part != "collision" && part != "tool" && part != "skin" && part != "effects")
+        if (part != "mechanics" && part != "collision" && part != "tool" && part != "skin" && part != "effects" &&
+            part != "peers")
             return usage(("unknown part " + part).c_str());
     if ((ent_version() >> 16) != ENT_VERSION_MAJOR) {
         std::fprintf(stderr, "enteron_study: libenteron major version %u, built for %d\n",
@@ -61,20 +63,22 @@ int main(int argc, char** argv) {
     try {
         std::filesystem::create_directories(options.out_dir);
         {
-            study::Csv meta(options.out_dir + "/study_run.csv", {"mode", "date_utc", "cpu", "cpus", "library_version"});
+            study::Csv meta(options.out_dir + "/study_run.csv", {"mode", "date_utc", "cpu", "cpus", "library_version", "peers"});
             char date[32];
             const std::time_t now = std::time(nullptr);
             std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
             const uint32_t v = ent_version();
             meta.row({options.fast ? "fast" : "full", date, "\"" + cpu_model() + "\"",
                       study::num(static_cast<int>(std::thread::hardware_concurrency())),
-                      study::format("%u.%u.%u", v >> 16, (v >> 8) & 0xff, v & 0xff)});
+                      study::format("%u.%u.%u", v >> 16, (v >> 8) & 0xff, v & 0xff),
+                      "\"" + study::peers_in_this_build() + "\""});
         }
         if (options.wants("mechanics")) study::run_mechanics_study(options);
         if (options.wants("collision")) study::run_collision_study(options);
         if (options.wants("tool")) study::run_tool_push_study(options);
         if (options.wants("skin")) study::run_skin_study(options);
         if (options.wants("effects")) study::run_effects_study(options);
+        if (options.wants("peers")) study::run_peers_study(options);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "enteron_study: %s\n", error.what());
         return 1;
