@@ -18,6 +18,7 @@ void TubeSkin::rebuild() {
         std::size_t k = 0;
         if (row > grid_.cap_rings()) k = std::min(row - grid_.cap_rings() - 1, n - 1);
         const double phi = grid_.cap_angle(row);
+        const double along = std::sin(phi), across = std::cos(phi);  // once per row, not per vertex
         const Vec3 centre = rings_.position(k), t = rings_.tangent(k);
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
         const float u = float(length > 0.0 ? rings_.arc_length(k) / length : 0.0);
@@ -25,7 +26,7 @@ void TubeSkin::rebuild() {
         const std::size_t count = pole ? 1 : S;
         for (std::size_t j = 0; j < count; ++j) {
             Vec3 direction = pole ? (row == 0 ? -1.0 * t : t)
-                                  : std::cos(phi) * (grid_.cosine(j) * nrm + grid_.sine(j) * bin) + std::sin(phi) * t;
+                                  : across * (grid_.cosine(j) * nrm + grid_.sine(j) * bin) + along * t;
             const std::size_t v = grid_.vertex(row, j);
             store_vec3(mesh_.positions, v, centre + R * direction);
             store_vec3(mesh_.normals, v, direction);
