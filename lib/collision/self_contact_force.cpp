@@ -29,8 +29,7 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
       contacts_(memory),
       loads_(spheres_.size(), memory),
       contact_(contact),
-      window_(kPi * spheres_.radius()),
-      neighbour_spheres_(static_cast<std::size_t>(std::ceil(window_ / spheres_.rest_spacing() - 1e-9))) {
+      neighbour_spheres_(static_cast<std::size_t>(std::ceil(kPi * spheres_.radius() / spheres_.rest_spacing() - 1e-9))) {
     // Room for the densest pile: spheres of radius R whose centres lie within 2.5R of one
     // sphere number at most about 40 (volume ratio), each pair listed once. The contacts
     // are among the listed pairs.
@@ -148,7 +147,7 @@ void SelfContactForce::search_contacts(Visit&& visit) const {
 
 void SelfContactForce::find_contacts(const mechanics::State& state) const {
     spheres_.update(state.q.data());
-    if (contacts_found_ && contacts_for_ == spheres_.placement()) return;
+    if (contacts_for_ == spheres_.placement()) return;
     for (std::size_t i = 0; i < spheres_.size(); ++i)
         for (int c = 0; c < 3; ++c) positions_[3 * i + c] = spheres_[i].center[c];
     find_near_pairs();
@@ -162,7 +161,6 @@ void SelfContactForce::find_contacts(const mechanics::State& state) const {
         contacts_.push_back(Contact{static_cast<uint32_t>(i), static_cast<uint32_t>(j), depth, {n[0], n[1], n[2]}});
     });
     contacts_for_ = spheres_.placement();
-    contacts_found_ = true;
 }
 
 template <class Visit>

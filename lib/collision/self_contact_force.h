@@ -38,10 +38,6 @@ public:
     void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
 
-    // The arc-length window at rest within which spheres never collide, m.
-    double neighbour_window() const { return window_; }
-    // Spheres fewer than this many apart along the axis never collide.
-    std::size_t neighbour_spheres() const { return neighbour_spheres_; }
     // How many times the grid was searched: for every sphere (the list of near pairs
     // remade) or for the spheres that moved only (their pairs remade).
     uint64_t grid_searches() const { return searches_ + moved_searches_; }
@@ -86,16 +82,14 @@ private:
     // Pairs closer than 2.5R at the last search of either sphere, a < b.
     mutable std::pmr::vector<std::pair<uint32_t, uint32_t>> near_pairs_;
     mutable bool near_pairs_complete_ = false;
-    // The contacts of the placement contacts_for_; complete unless the list overflowed
-    // (then each use searches again).
+    // The contacts of the placement contacts_for_ (0: none yet; placements count from 1);
+    // complete unless the list overflowed (then each use searches again).
     mutable std::pmr::vector<Contact> contacts_;
     mutable uint64_t contacts_for_ = 0;
-    mutable bool contacts_found_ = false;
     mutable bool contacts_complete_ = false;
     SphereLoads loads_;
     ContactParameters contact_;
-    double window_;
-    std::size_t neighbour_spheres_;
+    std::size_t neighbour_spheres_;  // fewer spheres apart than this (pi R at rest): neighbours, never a contact
     bool neighbours(std::size_t i, std::size_t j) const {
         return (i > j ? i - j : j - i) < neighbour_spheres_;
     }
