@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#include "base/hot_kernel.h"
 
 namespace enteron::collision {
 
@@ -14,7 +17,9 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
       sample_points_(memory),
       sample_arc_(memory),
       spheres_(memory),
-      placed_for_(3 * control_points, 0.0, memory) {
+      placed_for_(3 * control_points, 0.0, memory),
+      velocities_(memory),
+      velocities_for_(3 * control_points, 0.0, memory) {
     const std::size_t segments = control_points - 1;
     const std::size_t per_segment = kSamplesPerSegment + 1;  // both ends of every segment
     sample_weights_.reserve(segments * per_segment);
@@ -27,10 +32,22 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
     const std::size_t count = static_cast<std::size_t>(std::llround(rest_length / spacing)) + 1;
     rest_spacing_ = rest_length / double(count - 1);
     spheres_.resize(std::max<std::size_t>(count, 2));
+    velocities_.assign(3 * spheres_.size(), 0.0);
 }
 
-void CollisionSpheres::update(const double* control_points) {
-    if (placed_ && std::equal(placed_for_.begin(), placed_for_.end(), control_points)) return;
+const double* CollisionSpheres::velocities(const double* v) {
+    const std::size_t bytes = velocities_for_.size() * sizeof(double);
+    if (velocities_placement_ == placement_ && std::memcmp(velocities_for_.data(), v, bytes) == 0)
+        return velocities_.data();
+    std::memcpy(velocities_for_.data(), v, bytes);
+    velocities_placement_ = placement_;
+    for (std::size_t i = 0; i < spheres_.size(); ++i) spline::evaluate(v, spheres_[i].weights, &velocities_[3 * i]);
+    return velocities_.data();
+}
+
+ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
+    // The same bits, the same placement (a byte compare: several effects ask per state).
+    if (placed_ && std::memcmp(placed_for_.data(), control_points, placed_for_.size() * sizeof(double)) == 0) return;
     std::copy(control_points, control_points + placed_for_.size(), placed_for_.begin());
     placed_ = true;
     placement_ += 1;
@@ -38,18 +55,26 @@ void CollisionSpheres::update(const double* control_points) {
     // the arc length at each.
     constexpr std::size_t kPerSegment = kSamplesPerSegment + 1;
     const std::size_t segments = sample_weights_.size() / kPerSegment;
+    // Raw pointers: the compiler need not reload the vectors' storage after every store.
+    const spline::SegmentWeights* weights = sample_weights_.data();
+    double* points = sample_points_.data();
+    double* arcs = sample_arc_.data();
     double arc = 0.0;
     for (std::size_t segment = 0; segment < segments; ++segment) {
         const std::size_t first = segment * kPerSegment;
-        double* p = &sample_points_[3 * first];
-        spline::evaluate(control_points, sample_weights_[first], p);
-        sample_arc_[first] = arc;  // the first sample repeats the last of the segment before
+        double* p = &points[3 * first];
+        // A segment starts where the one before ends (the spline interpolates its points).
+        if (segment == 0)
+            spline::evaluate(control_points, weights[first], p);
+        else
+            for (int c = 0; c < 3; ++c) p[c] = p[c - 3];
+        arcs[first] = arc;  // the first sample repeats the last of the segment before
         for (std::size_t k = 1; k < kPerSegment; ++k) {
             p += 3;
-            spline::evaluate(control_points, sample_weights_[first + k], p);
+            spline::evaluate(control_points, weights[first + k], p);
             const double d[3] = {p[0] - p[-3], p[1] - p[-2], p[2] - p[-1]};
             arc += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            sample_arc_[first + k] = arc;
+            arcs[first + k] = arc;
         }
     }
     // The spheres, evenly spread over the length: walk the polyline's intervals (never the
@@ -57,12 +82,13 @@ void CollisionSpheres::update(const double* control_points) {
     const double total = arc;
     const std::size_t count = spheres_.size();
     const double spacing = total / double(count - 1);
+    Sphere* spheres = spheres_.data();
     std::size_t segment = 0, k = 0;  // the interval from sample (segment, k) to (segment, k + 1)
     for (std::size_t j = 0; j < count; ++j) {
         const double target = spacing * double(j);
         for (;;) {
             const std::size_t next = segment * kPerSegment + k + 1;
-            if (sample_arc_[next] >= target) break;
+            if (arcs[next] >= target) break;
             if (k + 1 < kSamplesPerSegment) {
                 ++k;
             } else if (segment + 1 < segments) {
@@ -72,14 +98,14 @@ void CollisionSpheres::update(const double* control_points) {
             }
         }
         const std::size_t interval = segment * kPerSegment + k;
-        const double a0 = sample_arc_[interval], a1 = sample_arc_[interval + 1];
+        const double a0 = arcs[interval], a1 = arcs[interval + 1];
         const double t = a1 > a0 ? std::clamp((target - a0) / (a1 - a0), 0.0, 1.0) : 0.0;
-        const spline::SegmentWeights& w0 = sample_weights_[interval];
-        const spline::SegmentWeights& w1 = sample_weights_[interval + 1];
-        Sphere& sphere = spheres_[j];
+        const spline::SegmentWeights& w0 = weights[interval];
+        const spline::SegmentWeights& w1 = weights[interval + 1];
+        Sphere& sphere = spheres[j];
         sphere.weights.first = w0.first;
         for (int c = 0; c < 4; ++c) sphere.weights.w[c] = (1.0 - t) * w0.w[c] + t * w1.w[c];
-        const double* p0 = &sample_points_[3 * interval];
+        const double* p0 = &points[3 * interval];
         for (int c = 0; c < 3; ++c) sphere.center[c] = (1.0 - t) * p0[c] + t * p0[3 + c];
         sphere.arc_length = target;
     }

@@ -38,6 +38,11 @@ public:
     // effect reuse what it found for these spheres).
     uint64_t placement() const { return placement_; }
 
+    // The velocities of the placed spheres' centres (x y z each, m/s) for the control
+    // points' velocities v: worked out on the first call for this placement and these v,
+    // then shared by the contact effects.
+    const double* velocities(const double* v);
+
     std::size_t size() const { return spheres_.size(); }
     const Sphere& operator[](std::size_t i) const { return spheres_[i]; }
     double radius() const { return radius_; }
@@ -58,6 +63,9 @@ private:
     std::pmr::vector<double> sample_arc_;                      // arc length at each sample
     std::pmr::vector<Sphere> spheres_;
     std::pmr::vector<double> placed_for_;  // the control points of the last update
+    std::pmr::vector<double> velocities_;  // of the centres, x y z
+    std::pmr::vector<double> velocities_for_;  // the control point velocities they are for
+    uint64_t velocities_placement_ = 0;        // and the placement (0: none yet)
     bool placed_ = false;
     uint64_t placement_ = 0;
 };

@@ -12,6 +12,7 @@ EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParam
     : spheres_(spheres),
       contact_(contact),
       obstacles_(memory),
+      contacts_(memory),
       loads_(spheres_.size(), memory) {
     obstacles_.reserve(obstacles.size());
     for (const Obstacle& obstacle : obstacles) add_obstacle(obstacle);
@@ -24,47 +25,60 @@ void EnvironmentForce::add_obstacle(const Obstacle& obstacle) {
         const double norm = std::sqrt(o.extent[0] * o.extent[0] + o.extent[1] * o.extent[1] + o.extent[2] * o.extent[2]);
         for (double& c : o.extent) c /= norm;
     }
+    // Room first (this may throw and must then change nothing): every sphere touching every
+    // obstacle as often as it can, six walls for a box narrower than a sphere.
+    std::size_t per_sphere = o.kind == ObstacleKind::box_inside ? 6 : 1;
+    for (const Obstacle& other : obstacles_) per_sphere += other.kind == ObstacleKind::box_inside ? 6 : 1;
+    contacts_.reserve(spheres_.size() * per_sphere);
+    obstacles_.reserve(obstacles_.size() + 1);
     obstacles_.push_back(o);
+    contacts_for_ = 0;  // the contacts found so far miss this obstacle
+}
+
+void EnvironmentForce::find_contacts(const mechanics::State& state) const {
+    spheres_.update(state.q.data());
+    if (contacts_for_ == spheres_.placement()) return;
+    contacts_.clear();
+    const double r = spheres_.radius();
+    for (std::size_t i = 0; i < spheres_.size(); ++i)
+        for (const Obstacle& obstacle : obstacles_)
+            for_each_contact(obstacle, spheres_[i].center, r, [&](const ObstacleContact& c) {
+                contacts_.push_back(Contact{static_cast<uint32_t>(i), c});
+            });
+    contacts_for_ = spheres_.placement();
 }
 
 void EnvironmentForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
-    spheres_.update(state.q.data());
+    find_contacts(state);
     last_ = {};
     loads_.clear();
-    const double r = spheres_.radius();
-    for (std::size_t i = 0; i < spheres_.size(); ++i) {
-        const Sphere& sphere = spheres_[i];
-        double v[3];
-        bool have_velocity = false;  // most spheres touch nothing
-        for (const Obstacle& obstacle : obstacles_) {
-            for_each_contact(obstacle, sphere.center, r, [&](const ObstacleContact& c) {
-                if (!have_velocity) spline::evaluate(state.v.data(), sphere.weights, v), have_velocity = true;
-                const ContactForce f = contact_force(contact_, c.depth, c.normal, v);
-                last_.count += 1;
-                last_.max_penetration = std::max(last_.max_penetration, c.depth);
-                if (lin == nullptr) {
-                    loads_.add_force(i, f.force);
-                    return;
-                }
-                // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I.
-                const double h = lin->h;
-                loads_.add(i, f.force, c.normal, h * h * f.stiffness + h * f.damping - h * f.friction_damping,
-                           h * f.friction_damping, f.stiffness, v);
-            });
+    // The velocity of the spheres in contact only (in sphere order: once per sphere); most
+    // spheres touch nothing.
+    std::size_t have_velocity = spheres_.size();  // the sphere whose velocity v holds
+    double v[3] = {0.0, 0.0, 0.0};
+    for (const Contact& contact : contacts_) {
+        const std::size_t i = contact.sphere;
+        const ObstacleContact& c = contact.contact;
+        if (have_velocity != i) spline::evaluate(state.v.data(), spheres_[i].weights, v), have_velocity = i;
+        const ContactForce f = contact_force(contact_, c.depth, c.normal, v);
+        last_.count += 1;
+        last_.max_penetration = std::max(last_.max_penetration, c.depth);
+        if (lin == nullptr) {
+            loads_.add_force(i, f.force);
+            continue;
         }
+        // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I.
+        const double h = lin->h;
+        loads_.add(i, f.force, c.normal, h * h * f.stiffness + h * f.damping - h * f.friction_damping,
+                   h * f.friction_damping, f.stiffness, v);
     }
     loads_.apply(spheres_, force, lin);
 }
 
 double EnvironmentForce::potential_energy(const mechanics::State& state) const {
-    spheres_.update(state.q.data());
+    find_contacts(state);
     double energy = 0.0;
-    const double r = spheres_.radius();
-    for (std::size_t i = 0; i < spheres_.size(); ++i)
-        for (const Obstacle& obstacle : obstacles_)
-            for_each_contact(obstacle, spheres_[i].center, r, [&](const ObstacleContact& c) {
-                energy += 0.5 * contact_.stiffness * c.depth * c.depth;
-            });
+    for (const Contact& contact : contacts_) energy += 0.5 * contact_.stiffness * contact.contact.depth * contact.contact.depth;
     return energy;
 }
 

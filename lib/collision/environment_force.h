@@ -4,6 +4,7 @@
 // consecutive control points, so its linearisation goes into the implicit system.
 #pragma once
 
+#include <cstdint>
 #include <memory_resource>
 #include <vector>
 
@@ -35,6 +36,13 @@ public:
     void add_obstacle(const Obstacle& obstacle);
 
 private:
+    struct Contact {
+        uint32_t sphere;
+        ObstacleContact contact;
+    };
+    // Finds the contacts of the spheres placed for `state`, once per placement: the guard's
+    // energy after a step and the next step's forces see the same positions.
+    void find_contacts(const mechanics::State& state) const;
     void summary_add(mechanics::ContactSummary& summary) const;
     // Contact planes one sphere may touch at once, summed over the obstacles.
     double max_contacts_per_sphere() const;
@@ -42,6 +50,10 @@ private:
     CollisionSpheres& spheres_;  // shared with the other contact effects
     ContactParameters contact_;
     std::pmr::vector<Obstacle> obstacles_;
+    // The contacts of the placement contacts_for_ (0: none yet), in sphere order; room for
+    // every sphere touching every obstacle as often as it can, so no step allocates.
+    mutable std::pmr::vector<Contact> contacts_;
+    mutable uint64_t contacts_for_ = 0;
     SphereLoads loads_;
     mechanics::ContactSummary last_;
 };

@@ -58,7 +58,8 @@ private:
     void find_near_pairs() const;
     // Lists every pair within 2.5R again (after a large motion, or when the list overflowed).
     void search_all_near_pairs() const;
-    // Replaces the pairs of the spheres in moved_ by those within 2.5R of them now.
+    // Replaces the pairs of the spheres in moved_ by those within 2.5R of them now, after
+    // refiling them in the grid (no rebuild: the others stay where they were filed).
     void search_moved_near_pairs() const;
     // Finds the contacts of the spheres placed for `state`, once per placement: the guard's
     // energy after a step and the next step's forces see the same positions.
@@ -76,12 +77,14 @@ private:
     mutable std::pmr::vector<double> positions_;  // the current centres, x y z, packed
     mutable std::pmr::vector<uint32_t> moved_;    // spheres due to search again
     mutable std::pmr::vector<uint8_t> is_moved_;  // 1 for the spheres in moved_
+    mutable std::pmr::vector<uint32_t> partners_;  // search_moved_near_pairs: one sphere's new pairs
     mutable uint64_t searches_ = 0;        // of every sphere
     mutable uint64_t moved_searches_ = 0;  // of the moved spheres only
-    mutable SpatialHash grid_;
+    mutable SpatialHash grid_;  // every sphere filed at centers_
     // Pairs closer than 2.5R at the last search of either sphere, a < b.
     mutable std::pmr::vector<std::pair<uint32_t, uint32_t>> near_pairs_;
     mutable bool near_pairs_complete_ = false;
+    mutable std::pmr::vector<uint32_t> touching_;  // search_contacts: the near pairs in contact, by index
     // The contacts of the placement contacts_for_ (0: none yet; placements count from 1);
     // complete unless the list overflowed (then each use searches again).
     mutable std::pmr::vector<Contact> contacts_;

@@ -22,13 +22,30 @@ public:
     void clear();
 
     // A force f (N) on sphere i, without linearisation (the explicit integrators).
-    void add_force(std::size_t i, const double f[3]);
+    void add_force(std::size_t i, const double f[3]) {
+        Load& load = at(i);
+        for (int c = 0; c < 3; ++c) load.force[c] += f[c];
+    }
 
     // A force f on sphere i with its linearisation along the unit normal n: the system
     // block axial n n^T + transverse I (h^2 H + h C of the contact) and the product
     // H v = stiffness (n . v) n for the sphere's velocity v.
     void add(std::size_t i, const double f[3], const double n[3], double axial, double transverse,
-             double stiffness, const double v[3]);
+             double stiffness, const double v[3]) {
+        Load& load = at(i);
+        const double hv = stiffness * (n[0] * v[0] + n[1] * v[1] + n[2] * v[2]);
+        for (int c = 0; c < 3; ++c) {
+            load.force[c] += f[c];
+            load.stiffness_times_velocity[c] += hv * n[c];
+        }
+        double* b = load.block;
+        b[0] += axial * n[0] * n[0] + transverse;
+        b[1] += axial * n[1] * n[0];
+        b[2] += axial * n[1] * n[1] + transverse;
+        b[3] += axial * n[2] * n[0];
+        b[4] += axial * n[2] * n[1];
+        b[5] += axial * n[2] * n[2] + transverse;
+    }
 
     // Adds the gathered loads to the generalised forces (3n values) and, when lin is not
     // null, to the implicit system and H v.
@@ -40,10 +57,17 @@ private:
         double stiffness_times_velocity[3];
         double block[6];  // lower triangle: xx, yx, yy, zx, zy, zz
     };
-    Load& at(std::size_t i);
+    // Sphere i's load, zeroed when first touched since clear().
+    Load& at(std::size_t i) {
+        if (touched_[i] == 0) {
+            touched_[i] = 1;
+            loads_[i] = Load{};
+        }
+        return loads_[i];
+    }
 
-    std::pmr::vector<int32_t> slot_;  // per sphere: its entry in loads_, or -1
-    std::pmr::vector<Load> loads_;    // the touched spheres, in the order first touched
+    std::pmr::vector<uint8_t> touched_;  // per sphere: 1 once it has a load
+    std::pmr::vector<Load> loads_;       // per sphere, meaningful where touched
 };
 
 }  // namespace enteron::collision

@@ -76,6 +76,37 @@ GraspSpring grasp_spring(const ToolSettings& settings, double rest, const double
     return spring;
 }
 
+// A tool's shaft at one instant, as the segment tip + s axis (s in [0, 1]) that sphere
+// centres are measured against: most spheres are far, so the test is on squared
+// distances and the square root waits for a contact.
+struct Shaft {
+    double tip[3];
+    double axis[3];
+    double inverse_axis2;  // 0 for a zero-length shaft (the tip alone)
+    double reach;          // the tool's radius plus the bowel's
+
+    Shaft(const double tip_in[3], const double tail[3], double reach_in) : reach(reach_in) {
+        double axis2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            tip[c] = tip_in[c];
+            axis[c] = tail[c] - tip[c];
+            axis2 += axis[c] * axis[c];
+        }
+        inverse_axis2 = axis2 > 0.0 ? 1.0 / axis2 : 0.0;
+    }
+
+    // For a centre p: s of the closest shaft point, d = p minus that point, and |d|^2;
+    // true if the sphere reaches into the tool.
+    bool touches(const double p[3], double* s, double d[3], double* distance2) const {
+        double rel[3], along = 0.0;
+        for (int c = 0; c < 3; ++c) rel[c] = p[c] - tip[c], along += rel[c] * axis[c];
+        *s = std::clamp(along * inverse_axis2, 0.0, 1.0);
+        for (int c = 0; c < 3; ++c) d[c] = rel[c] - *s * axis[c];
+        *distance2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        return *distance2 < reach * reach;
+    }
+};
+
 }  // namespace
 
 ToolsForce::ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
@@ -134,21 +165,16 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
     for (Tool& tool : tools_) {
         double tip[3], tail[3], tip_v[3], tail_v[3];
         segment_at(tool, t, tip, tail, tip_v, tail_v);
-        const double axis[3] = {tail[0] - tip[0], tail[1] - tip[1], tail[2] - tip[2]};
-        const double axis2 = axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2];
-        const double reach = tool.settings.radius + r;
+        const Shaft shaft(tip, tail, tool.settings.radius + r);
+        const double* axis = shaft.axis;
+        const double reach = shaft.reach;
         hits_.clear();
         double total[3] = {0.0, 0.0, 0.0};  // on the bowel
         double total_magnitude = 0.0;       // sum of the magnitudes of its parts
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
             const Sphere& sphere = spheres_[i];
-            double rel[3], along = 0.0;
-            for (int c = 0; c < 3; ++c) rel[c] = sphere.center[c] - tip[c], along += rel[c] * axis[c];
-            const double s = axis2 > 0.0 ? std::clamp(along / axis2, 0.0, 1.0) : 0.0;
-            double d[3];
-            for (int c = 0; c < 3; ++c) d[c] = rel[c] - s * axis[c];
-            const double dist2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if (!(dist2 < reach * reach)) continue;
+            double s, d[3], dist2;
+            if (!shaft.touches(sphere.center, &s, d, &dist2)) continue;
             const double dist = std::sqrt(dist2);
             Hit hit;
             hit.sphere = i;
@@ -247,18 +273,12 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
     for (const Tool& tool : tools_) {
         double tip[3], tail[3], tip_v[3], tail_v[3];
         segment_at(tool, state.time, tip, tail, tip_v, tail_v);
-        const double axis[3] = {tail[0] - tip[0], tail[1] - tip[1], tail[2] - tip[2]};
-        const double axis2 = axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2];
-        const double reach = tool.settings.radius + r;
+        const Shaft shaft(tip, tail, tool.settings.radius + r);
         double stored = 0.0, total_magnitude = 0.0;
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
-            double rel[3], along = 0.0;
-            for (int c = 0; c < 3; ++c) rel[c] = spheres_[i].center[c] - tip[c], along += rel[c] * axis[c];
-            const double s = axis2 > 0.0 ? std::clamp(along / axis2, 0.0, 1.0) : 0.0;
-            double d[3];
-            for (int c = 0; c < 3; ++c) d[c] = rel[c] - s * axis[c];
-            const double dist = norm3(d);
-            const double depth = reach - dist;
+            double s, d[3], dist2;
+            if (!shaft.touches(spheres_[i].center, &s, d, &dist2)) continue;
+            const double depth = shaft.reach - std::sqrt(dist2);
             if (!(depth > 0.0)) continue;
             stored += 0.5 * contact_.stiffness * depth * depth;
             total_magnitude += contact_.stiffness * depth;

@@ -9,6 +9,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "mechanics/axial_blocks.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 #include "spline/segment_quadrature.h"
@@ -36,13 +37,9 @@ private:
     DampingCoefficients coefficients_;
     spline::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
     std::pmr::vector<spline::QuadratureNode> nodes_;
-    // Per node, between the force pass and the block pass of evaluate: the tangent d and the
-    // block's coefficient h w c / (l0 |d|^2) (see add_axial_block_pair).
-    struct AxialNode {
-        double d[3];
-        double axial;
-    };
-    std::pmr::vector<AxialNode> axial_nodes_;
+    // The axial damper's blocks when the linearisation brings no shared ones (the implicit
+    // integrator always does; a caller that linearises one effect alone may not).
+    AxialBlocks own_blocks_;
 };
 
 }  // namespace enteron::mechanics

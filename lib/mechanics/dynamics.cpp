@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "base/error.h"
+#include "mechanics/axial_blocks.h"
 
 namespace enteron::mechanics {
 
@@ -112,7 +113,20 @@ void Dynamics::forces(const State& state, double* force, const Linearization* li
         counter.calls += 1;
         counter.total_time_ns += now_ns() - start;
     };
+    // The axial laws (stretch, damping) share their blocks (axial_blocks.h); without them
+    // the blocks cost nothing.
+    const bool axial_laws = has_effect(EffectId::stretch) || has_effect(EffectId::damping);
+    AxialBlocks* axial = lin != nullptr && axial_laws ? lin->axial : nullptr;
+    if (axial != nullptr) axial->clear();
     for (Owned<Effect>& effect : effects_) run(*effect);
+    // The blocks reach the system before the pins make their rows identity. Their time is
+    // the stretch's (or the damper's, without stretch): per-effect times stay whole.
+    if (axial != nullptr) {
+        const uint64_t start = now_ns();
+        axial->add_to(*lin->system);
+        const EffectId owner = has_effect(EffectId::stretch) ? EffectId::stretch : EffectId::damping;
+        counters_[static_cast<std::size_t>(owner)].total_time_ns += now_ns() - start;
+    }
     if (pinned_) run(*pinned_);
 }
 

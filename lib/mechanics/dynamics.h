@@ -39,7 +39,8 @@ public:
     bool has_effect(EffectId id) const { return enabled_[static_cast<std::size_t>(id)]; }
     const EffectCounters& counters(EffectId id) const { return counters_[static_cast<std::size_t>(id)]; }
 
-    // force = F(state); with lin, also the linearisation (see effect.h). Times each effect.
+    // force = F(state); with lin, also the linearisation (see effect.h), the shared axial
+    // blocks (lin->axial) cleared first and added to the system before the pins. Times each effect.
     void forces(const State& state, double* force, const Linearization* lin);
     // acceleration = M^-1 F(state).
     void acceleration(const State& state, double* acceleration);

@@ -18,12 +18,17 @@
 
 namespace enteron::mechanics {
 
+class AxialBlocks;
+
 // What the implicit integrator asks of an effect: add h C + h^2 H into `system` and H v
-// into `stiffness_times_velocity` (3n values).
+// into `stiffness_times_velocity` (3n values). The axis' axial laws (stretch, axial
+// damping) put their blocks into `axial` when it is given, and Dynamics::forces adds those
+// to the system once, after every effect and before the pins; without it each law adds its own.
 struct Linearization {
     SystemMatrix* system;
     double h;
     double* stiffness_times_velocity;
+    AxialBlocks* axial = nullptr;
 };
 
 // Contacts an effect made in its last evaluation (for ent_stats).

@@ -3,13 +3,16 @@
 namespace enteron::mechanics {
 
 ImplicitEuler::ImplicitEuler(std::size_t coordinates, std::pmr::memory_resource* memory)
-    : system_(memory), rhs_(coordinates, 0.0, memory), stiffness_times_velocity_(coordinates, 0.0, memory) {
+    : system_(memory),
+      axial_(coordinates / 3, memory),
+      rhs_(coordinates, 0.0, memory),
+      stiffness_times_velocity_(coordinates, 0.0, memory) {
     system_.resize(coordinates);
 }
 
 bool ImplicitEuler::step(Dynamics& dynamics, State& state, double h) {
     system_.assign(dynamics.constant_system(h));
-    Linearization lin{&system_, h, stiffness_times_velocity_.data()};
+    Linearization lin{&system_, h, stiffness_times_velocity_.data(), &axial_};
     dynamics.forces(state, rhs_.data(), &lin);
     const std::size_t m = rhs_.size();
     for (std::size_t k = 0; k < m; ++k) rhs_[k] = h * (rhs_[k] - h * stiffness_times_velocity_[k]);

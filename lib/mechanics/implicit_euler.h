@@ -6,6 +6,7 @@
 // Unconditionally stable on linear problems, first order, and it dissipates energy.
 #pragma once
 
+#include "mechanics/axial_blocks.h"
 #include "mechanics/integrator.h"
 
 namespace enteron::mechanics {
@@ -18,6 +19,7 @@ public:
 
 private:
     SystemMatrix system_;
+    AxialBlocks axial_;  // the stretch and axial damping blocks, added to system_ together
     std::pmr::vector<double> rhs_;                       // F, then h (F - h H v), then dv
     std::pmr::vector<double> stiffness_times_velocity_;  // H v
 };

@@ -20,7 +20,7 @@ StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
       stiffness_(stretch_stiffness),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
                                         kNodesPerSegment, memory)),
-      axial_nodes_(nodes_.size(), AxialNode{}, memory) {}
+      own_blocks_(model.control_points, memory) {}
 
 void StretchForce::evaluate(const State& state, double* force, const Linearization* lin) {
     const double* q = state.q.data();
@@ -32,10 +32,12 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     const double h2 = lin != nullptr ? lin->h * lin->h : 0.0;
     // The nodes of one segment share their four control points: their forces are added
     // together (one read and write per coordinate). The square roots and divisions of both
-    // nodes come before any store, so they overlap. The stiffness blocks are added in a
-    // second pass: interleaved, each block's few hundred instructions kept the processor
-    // from starting the next segment's square roots early (about 4 us at N = 240).
+    // nodes come before any store, so they overlap. The stiffness blocks go to the axial
+    // blocks (axial_blocks.h), which add them to the system after this pass.
     static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
+    static_assert(kNodesPerSegment == AxialBlocks::kNodesPerSegment, "the axial blocks are at these nodes");
+    AxialBlocks* blocks = lin == nullptr ? nullptr : lin->axial != nullptr ? lin->axial : &own_blocks_;
+    if (blocks == &own_blocks_) own_blocks_.clear();
     const std::size_t count = nodes_.size();
     for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
@@ -47,38 +49,27 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
         }
         double f[2][3] = {}, hr[2][3] = {};
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
-            AxialNode& axial_node = axial_nodes_[first + m];
-            double* u = axial_node.u;
-            if (!(len[m] > tiny)) {
-                u[0] = u[1] = u[2] = 0.0;
-                axial_node.axial = axial_node.transverse = 0.0;
-                continue;
-            }
+            if (!(len[m] > tiny)) continue;  // no direction: the node adds nothing
+            double u[3];
             for (int c = 0; c < 3; ++c) u[c] = d[m][c] * inv[m];
             const double strain = len[m] * inverse_l0 - 1.0;
             const double tension = ea * strain;  // N
             const double scale = node[m].weight * tension;
             for (int c = 0; c < 3; ++c) f[m][c] = -scale * u[c];
-            if (lin != nullptr) {
+            if (blocks != nullptr) {
                 const double transverse = ea * std::max(strain, 0.0) * inv[m];
                 const double axial = ea * inverse_l0 - transverse;
                 double rate[3];
                 tangent(state.v.data(), node[m].weights, rate);
                 axial_times(u, node[m].weight * axial, node[m].weight * transverse, rate, hr[m]);
-                axial_node.axial = h2 * node[m].weight * axial;
-                axial_node.transverse = h2 * node[m].weight * transverse;
+                blocks->add(first + m, u, h2 * node[m].weight * axial, h2 * node[m].weight * transverse);
             }
         }
         add_point_force_pair(node[0].weights, f[0], node[1].weights, f[1], force);
         if (lin != nullptr)
             add_point_force_pair(node[0].weights, hr[0], node[1].weights, hr[1], lin->stiffness_times_velocity);
     }
-    if (lin == nullptr) return;
-    for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
-        const AxialNode* a = &axial_nodes_[first];
-        add_axial_block_pair(*lin->system, nodes_[first].weights, a[0].u, a[0].axial, a[0].transverse,
-                             nodes_[first + 1].weights, a[1].u, a[1].axial, a[1].transverse);
-    }
+    if (blocks == &own_blocks_) own_blocks_.add_to(*lin->system);
 }
 
 double StretchForce::potential_energy(const State& state) const {

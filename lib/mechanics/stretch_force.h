@@ -12,6 +12,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "mechanics/axial_blocks.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 #include "spline/segment_quadrature.h"
@@ -31,14 +32,9 @@ private:
     AxisModel model_;
     double stiffness_;  // EA, N
     std::pmr::vector<spline::QuadratureNode> nodes_;
-    // Per node, between the force pass and the stiffness-block pass of evaluate: the unit
-    // tangent and the block's coefficients h^2 w a and h^2 w b (see add_axial_block_pair).
-    struct AxialNode {
-        double u[3];
-        double axial;
-        double transverse;
-    };
-    std::pmr::vector<AxialNode> axial_nodes_;
+    // The stiffness blocks when the linearisation brings no shared ones (the implicit
+    // integrator always does; a caller that linearises one effect alone may not).
+    AxialBlocks own_blocks_;
 };
 
 }  // namespace enteron::mechanics

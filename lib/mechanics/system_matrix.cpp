@@ -1,5 +1,7 @@
 #include "mechanics/system_matrix.h"
 
+#include "base/hot_kernel.h"
+
 namespace enteron::mechanics {
 
 namespace {
@@ -48,7 +50,7 @@ void add_axial_blocks(SystemMatrix& system, std::size_t first, const spline::Seg
 
 }  // namespace
 
-void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const double u[3],
+ENTERON_HOT_KERNEL void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const double u[3],
                      double a, double b, double scale) {
     const spline::SegmentWeights* const w[1] = {&weights};
     const double* const directions[1] = {u};
@@ -56,7 +58,7 @@ void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights
     add_axial_blocks<1>(system, weights.first, w, directions, sa, sb);
 }
 
-void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0, const double u0[3],
+ENTERON_HOT_KERNEL void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0, const double u0[3],
                           double a0, double b0, const spline::SegmentWeights& weights1, const double u1[3],
                           double a1, double b1) {
     // The same as add_axial_blocks<2>, written out: GCC pairs the columns of this form
@@ -92,7 +94,7 @@ void SegmentBlock::reset(std::size_t first) {
         for (double& v : sum) v = 0.0;
 }
 
-void SegmentBlock::add(const spline::SegmentWeights& weights, const double s[6]) {
+ENTERON_HOT_KERNEL void SegmentBlock::add(const spline::SegmentWeights& weights, const double s[6]) {
     // Local copies: the compiler need not assume that s or the weights alias the sums.
     const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
     const double m[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
@@ -106,20 +108,26 @@ void SegmentBlock::add(const spline::SegmentWeights& weights, const double s[6])
         }
 }
 
-void SegmentBlock::add_to(SystemMatrix& system) const {
+ENTERON_HOT_KERNEL void SegmentBlock::add_to(SystemMatrix& system) const {
     // Index into the packed lower triangle of a symmetric 3 x 3 for row r, column c.
     static constexpr int kPacked[3][3] = {{0, 1, 3}, {1, 2, 4}, {3, 4, 5}};
     constexpr int kStep = static_cast<int>(SystemMatrix::kRowStride) - 1;
     double* block = &system.lower(3 * first_, 3 * first_);
-    int pair = 0;
+    // Constant trip counts, unrolled: every offset and packed index is known at compile time.
+#pragma GCC unroll 4
     for (int j = 0; j < 4; ++j)
-        for (int k = 0; k <= j; ++k, ++pair)
+#pragma GCC unroll 4
+        for (int k = 0; k <= j; ++k) {
+            const double* sum = sums_[j * (j + 1) / 2 + k];
+#pragma GCC unroll 3
             for (int r = 0; r < 3; ++r) {
                 double* row = block + kStep * (3 * j + r) + 3 * k;
                 // The diagonal point block is stored only up to its own diagonal.
-                const int columns = j == k ? r + 1 : 3;
-                for (int c = 0; c < columns; ++c) row[c] += sums_[pair][kPacked[r][c]];
+#pragma GCC unroll 3
+                for (int c = 0; c < 3; ++c)
+                    if (j != k || c <= r) row[c] += sum[kPacked[r][c]];
             }
+        }
 }
 
 }  // namespace enteron::mechanics

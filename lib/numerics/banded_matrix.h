@@ -15,6 +15,8 @@
 #include <memory_resource>
 #include <vector>
 
+#include "base/hot_kernel.h"
+
 namespace enteron::numerics {
 
 // Two doubles that the compiler keeps in one SIMD register where there is one (GCC/Clang
@@ -151,7 +153,7 @@ public:
     // trailing P x P window takes the rank-one update -l c^T, c the column before scaling.
     // The window has a fixed size and each of its rows is contiguous in the band storage, so
     // away from the last P columns the loops have constant trip counts and unroll.
-    bool factor() {
+    ENTERON_HOT_KERNEL bool factor() {
         factored_ = false;
         std::size_t k = 0;
         const std::size_t interior = n_ > static_cast<std::size_t>(P) ? n_ - P : 0;
@@ -164,7 +166,7 @@ public:
     }
 
     // Solves A x = b in place after factor(); same layout as multiply.
-    void solve(double* x, std::size_t stride = 1, std::size_t columns = 1) const {
+    ENTERON_HOT_KERNEL void solve(double* x, std::size_t stride = 1, std::size_t columns = 1) const {
         if (columns == 1)
             solve_columns<1>(x, stride);
         else if (columns == 3)

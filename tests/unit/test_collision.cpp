@@ -203,6 +203,31 @@ TEST(CollisionSpheres, CentresLieOnTheSpline) {
     EXPECT_LT(worst, bound + 1e-9);
 }
 
+TEST(CollisionSpheres, VelocitiesFollowTheVelocitiesAndThePlacement) {
+    // Cached per placement and velocities: a new v at the same q, and a new q with the same
+    // v, must both give the centres' velocities anew.
+    const std::size_t n = 30;
+    std::vector<double> q = curved_points(n, 0.02, 0.2);
+    CollisionSpheres spheres(n, spline_length(q), 0.5 * kRadius, kRadius, std::pmr::new_delete_resource());
+    std::vector<double> v(3 * n);
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = std::sin(0.7 * double(k));
+    auto expect_velocities = [&](const char* when) {
+        const double* got = spheres.velocities(v.data());
+        for (std::size_t j = 0; j < spheres.size(); ++j) {
+            double expected[3];
+            spline::evaluate(v.data(), spheres[j].weights, expected);
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(got[3 * j + c], expected[c]) << when << ", sphere " << j;
+        }
+    };
+    spheres.update(q.data());
+    expect_velocities("first");
+    for (double& x : v) x *= -0.5;
+    expect_velocities("new v, same q");
+    for (std::size_t k = 0; k < q.size(); k += 3) q[k] *= 1.1;  // stretched along x
+    spheres.update(q.data());
+    expect_velocities("same v, new q");
+}
+
 // ---- obstacles -------------------------------------------------------------------------
 
 std::vector<ObstacleContact> contacts_of(const Obstacle& o, const double* p, double r) {
@@ -471,6 +496,17 @@ TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForce
     EXPECT_EQ(*std::max_element(force.begin(), force.end()), 0.0);
     EXPECT_EQ(*std::min_element(force.begin(), force.end()), 0.0);
     EXPECT_EQ(effect.potential_energy(state), 0.0);
+
+    // An obstacle added between two evaluations of the same state counts at once (the
+    // contacts found for that placement are not reused).
+    Obstacle floor_above = plane;
+    floor_above.center = {0.0, 0.0, 2e-6};
+    effect.add_obstacle(floor_above);
+    effect.evaluate(state, force.data(), nullptr);
+    ContactSummary after;
+    effect.add_contacts(after);
+    EXPECT_EQ(after.count, spheres);
+    EXPECT_GT(effect.potential_energy(state), 0.0);
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 // finds, folds closer than 2R push apart, and neighbours along the axis never collide.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <limits>
 #include <memory_resource>
 #include <random>
 #include <set>
@@ -52,6 +54,44 @@ TEST(SpatialHash, CandidatePairsCoverBruteForceAndRepeatNone) {
                     EXPECT_TRUE(found.count({i, j})) << "missed pair " << i << ", " << j;
                 }
             }
+    }
+}
+
+TEST(SpatialHash, PointsRefiledOneByOneFindTheSamePairsAsARebuild) {
+    // The self-contact refiles only the spheres that moved; after any sequence of moves the
+    // grid must answer as one built from scratch at the new places.
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> coordinate(-0.1, 0.1), step(-0.03, 0.03);
+    const std::size_t count = 400;
+    const double cell = 0.025;
+    std::vector<double> points(3 * count);
+    for (double& p : points) p = coordinate(random);
+    SpatialHash moved(count, cell, std::pmr::new_delete_resource());
+    moved.build(points.data(), count, 3);
+    for (int round = 0; round < 10; ++round) {
+        for (std::size_t i = round % 3; i < count; i += 2) {  // some move a little, some across cells
+            for (int c = 0; c < 3; ++c) points[3 * i + c] += (i % 5 == 0 ? 4.0 : 1.0) * step(random);
+            moved.move(i, &points[3 * i]);
+        }
+        SpatialHash rebuilt(count, cell, std::pmr::new_delete_resource());
+        rebuilt.build(points.data(), count, 3);
+        // Sorted lists, not sets: a pair visited twice (a point filed twice) must show.
+        auto pairs_of = [](const SpatialHash& grid) {
+            std::vector<std::pair<std::size_t, std::size_t>> pairs;
+            grid.for_each_candidate_pair(
+                [&](std::size_t i, std::size_t j) { pairs.emplace_back(std::min(i, j), std::max(i, j)); });
+            std::sort(pairs.begin(), pairs.end());
+            return pairs;
+        };
+        EXPECT_EQ(pairs_of(moved), pairs_of(rebuilt)) << "round " << round;
+        for (std::size_t i = 0; i < count; i += 37) {
+            std::vector<std::size_t> a, b;
+            moved.for_each_neighbour(i, [&](std::size_t j) { a.push_back(j); });
+            rebuilt.for_each_neighbour(i, [&](std::size_t j) { b.push_back(j); });
+            std::sort(a.begin(), a.end());
+            std::sort(b.begin(), b.end());
+            EXPECT_EQ(a, b) << "round " << round << ", point " << i;
+        }
     }
 }
 
@@ -206,15 +246,27 @@ void expect_same_as_fresh(SelfContactForce& kept, const Axis& axis, int move) {
     for (std::size_t i = 0; i < f_fresh.size(); ++i) EXPECT_NEAR(f_kept[i], f_fresh[i], 1e-12) << "move " << move;
 }
 
+// A crumpled axis (a random walk of 1 cm steps in a box of the given half size) and a
+// self-contact effect that lives through the moves a test makes.
+struct Crumpled {
+    Crumpled(unsigned seed, double half_box)
+        : random(seed),
+          axis(crumpled_points(random, half_box)),
+          spheres(axis.make_spheres()),
+          kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource()) {}
+    std::mt19937 random;
+    Axis axis;
+    CollisionSpheres spheres;
+    SelfContactForce kept;
+};
+
 TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
     // A crumpled axis (a random walk in a 16 cm box) that keeps moving a little: the effect
     // that lives through the moves (and searches its grid again only when a sphere has
     // moved R / 6) must give the same contacts and forces as a new effect each time.
-    std::mt19937 random(11);
+    Crumpled crumpled(11, 0.08);
+    auto& [random, axis, spheres, kept] = crumpled;
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    Axis axis(crumpled_points(random, 0.08));
-    CollisionSpheres spheres = axis.make_spheres();
-    SelfContactForce kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource());
     const int moves = 60;
     for (int move = 0; move < moves; ++move) {
         for (double& q : axis.state.q) q += 0.00015 * unit(random);  // up to 0.15 mm a move
@@ -228,6 +280,26 @@ TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
     EXPECT_LT(kept.grid_searches(), std::uint64_t(moves));
 }
 
+TEST(SelfContact, AStateThatIsNotFiniteLeavesNoContactBehind) {
+    // An explicit stage that blew up (a NaN control point: the spheres' arc lengths are
+    // NaN from there on) is evaluated and then rolled back: the spheres must search again at the finite state,
+    // with the contacts and forces of a fresh search, however the NaN state was filed.
+    Crumpled crumpled(17, 0.1);
+    auto& [random, axis, spheres, kept] = crumpled;
+    expect_same_as_fresh(kept, axis, 0);
+    const State finite = axis.state;
+    State blown = finite;
+    blown.q[3 * 50] = std::numeric_limits<double>::quiet_NaN();
+    kept.potential_energy(blown);
+    std::vector<double> f(blown.q.size(), 0.0);
+    kept.evaluate(blown, f.data(), nullptr);
+    axis.state = finite;
+    expect_same_as_fresh(kept, axis, 1);
+    // And after a small move from there.
+    for (double& q : axis.state.q) q += 1e-4;
+    expect_same_as_fresh(kept, axis, 2);
+}
+
 TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
     // A crumpled axis (a random walk in a 20 cm box: sparser than a pile, so that the list
     // of near pairs never overflows) at rest but for its last 16 control points, which
@@ -236,11 +308,8 @@ TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
     // through the others by up to a few mm a move: those spheres search the grid again on
     // their own, the rest keep their pairs, and the contacts and forces must equal a fresh
     // search at every move.
-    std::mt19937 random(5);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    Axis axis(crumpled_points(random, 0.1));
-    CollisionSpheres spheres = axis.make_spheres();
-    SelfContactForce kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource());
+    Crumpled crumpled(5, 0.1);
+    auto& [random, axis, spheres, kept] = crumpled;
     const double angle = 0.02;  // rad a move, about z through control point 83
     const double pivot[2] = {axis.state.q[3 * 83], axis.state.q[3 * 83 + 1]};
     const int moves = 40;

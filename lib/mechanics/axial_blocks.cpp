@@ -1,0 +1,24 @@
+#include "mechanics/axial_blocks.h"
+
+namespace enteron::mechanics {
+
+AxialBlocks::AxialBlocks(std::size_t control_points, std::pmr::memory_resource* memory)
+    : nodes_(spline::segment_quadrature(control_points, spline::Derivative::first, kNodesPerSegment, memory)),
+      blocks_(nodes_.size(), Block{}, memory) {}
+
+void AxialBlocks::add_to(SystemMatrix& system) const {
+    static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
+    for (std::size_t first = 0; first < nodes_.size(); first += kNodesPerSegment) {
+        // A node no law reached (or whose tangent vanished) adds nothing.
+        const bool live[2] = {has_tangent(first), has_tangent(first + 1)};
+        if (!live[0] && !live[1]) continue;
+        static constexpr double kNone[3] = {0.0, 0.0, 0.0};
+        const Block& b0 = blocks_[first];
+        const Block& b1 = blocks_[first + 1];
+        add_axial_block_pair(system, nodes_[first].weights, live[0] ? b0.u : kNone, live[0] ? b0.a : 0.0,
+                             live[0] ? b0.b : 0.0, nodes_[first + 1].weights, live[1] ? b1.u : kNone,
+                             live[1] ? b1.a : 0.0, live[1] ? b1.b : 0.0);
+    }
+}
+
+}  // namespace enteron::mechanics
