@@ -59,22 +59,25 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
     const spline::SegmentWeights* weights = sample_weights_.data();
     double* points = sample_points_.data();
     double* arcs = sample_arc_.data();
+    // The last sample stays in registers: reloading it from the stores that wrote it cost a
+    // store-forwarding stall per segment.
+    double last[3];
+    spline::evaluate(control_points, weights[0], last);
     double arc = 0.0;
     for (std::size_t segment = 0; segment < segments; ++segment) {
         const std::size_t first = segment * kPerSegment;
         double* p = &points[3 * first];
         // A segment starts where the one before ends (the spline interpolates its points).
-        if (segment == 0)
-            spline::evaluate(control_points, weights[first], p);
-        else
-            for (int c = 0; c < 3; ++c) p[c] = p[c - 3];
+        for (int c = 0; c < 3; ++c) p[c] = last[c];
         arcs[first] = arc;  // the first sample repeats the last of the segment before
         for (std::size_t k = 1; k < kPerSegment; ++k) {
             p += 3;
-            spline::evaluate(control_points, weights[first + k], p);
-            const double d[3] = {p[0] - p[-3], p[1] - p[-2], p[2] - p[-1]};
+            double next[3];
+            spline::evaluate(control_points, weights[first + k], next);
+            const double d[3] = {next[0] - last[0], next[1] - last[1], next[2] - last[2]};
             arc += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             arcs[first + k] = arc;
+            for (int c = 0; c < 3; ++c) p[c] = last[c] = next[c];
         }
     }
     // The spheres, evenly spread over the length: walk the polyline's intervals (never the

@@ -69,8 +69,10 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* force, co
         }
         // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I.
         const double h = lin->h;
-        loads_.add(i, f.force, c.normal, h * h * f.stiffness + h * f.damping - h * f.friction_damping,
-                   h * f.friction_damping, f.stiffness, v);
+        double block[6];
+        SphereLoads::contact_block(c.normal, h * h * f.stiffness + h * f.damping - h * f.friction_damping,
+                                   h * f.friction_damping, block);
+        loads_.add(i, f.force, c.normal, block, f.stiffness, v);
     }
     loads_.apply(spheres_, force, lin);
 }

@@ -238,8 +238,10 @@ void SelfContactForce::evaluate(const mechanics::State& state, double* force, co
         const double h = lin->h;
         const double axial = h * h * f.stiffness + h * f.damping - h * f.friction_damping;
         const double transverse = h * f.friction_damping;
-        loads_.add(i, f.force, n, axial, transverse, f.stiffness, va);
-        loads_.add(j, opposite, n, axial, transverse, f.stiffness, vb);
+        double block[6];
+        SphereLoads::contact_block(n, axial, transverse, block);
+        loads_.add(i, f.force, n, block, f.stiffness, va);
+        loads_.add(j, opposite, n, block, f.stiffness, vb);
     });
     loads_.apply(spheres_, force, lin);
 }

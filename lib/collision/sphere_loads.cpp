@@ -13,21 +13,40 @@ void SphereLoads::clear() { std::fill(touched_.begin(), touched_.end(), uint8_t{
 
 void SphereLoads::apply(const CollisionSpheres& spheres, double* force, const mechanics::Linearization* lin) const {
     // In sphere order, so that the spheres of one segment (the same four control points)
-    // follow each other and share one block.
+    // follow each other: their forces, H v products and blocks are summed first, and each
+    // segment reaches the generalised forces and the system once.
     mechanics::SegmentBlock block;
-    bool open = false;
+    constexpr std::size_t kNone = ~std::size_t{0};
+    std::size_t first = kNone;
+    double force_sum[12] = {}, hv_sum[12] = {};
+    const auto flush = [&] {
+        if (first == kNone) return;
+        double* f = force + 3 * first;
+        for (int k = 0; k < 12; ++k) f[k] += force_sum[k];
+        if (lin == nullptr) return;
+        double* hv = lin->stiffness_times_velocity + 3 * first;
+        for (int k = 0; k < 12; ++k) hv[k] += hv_sum[k];
+        block.add_to(*lin->system);
+    };
     for (std::size_t i = 0; i < touched_.size(); ++i) {
         if (touched_[i] == 0) continue;
         const Load& load = loads_[i];
         const spline::SegmentWeights& weights = spheres[i].weights;
-        mechanics::add_point_force(weights, load.force, force);
+        if (weights.first != first) {
+            flush();
+            first = weights.first;
+            for (int k = 0; k < 12; ++k) force_sum[k] = hv_sum[k] = 0.0;
+            if (lin != nullptr) block.reset(first);
+        }
+        const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
+        for (int k = 0; k < 4; ++k)
+            for (int c = 0; c < 3; ++c) force_sum[3 * k + c] += w[k] * load.force[c];
         if (lin == nullptr) continue;
-        mechanics::add_point_force(weights, load.stiffness_times_velocity, lin->stiffness_times_velocity);
-        if (open && block.first() != weights.first) block.add_to(*lin->system), open = false;
-        if (!open) block.reset(weights.first), open = true;
+        for (int k = 0; k < 4; ++k)
+            for (int c = 0; c < 3; ++c) hv_sum[3 * k + c] += w[k] * load.stiffness_times_velocity[c];
         block.add(weights, load.block);
     }
-    if (open) block.add_to(*lin->system);
+    flush();
 }
 
 }  // namespace enteron::collision

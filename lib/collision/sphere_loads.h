@@ -27,24 +27,30 @@ public:
         for (int c = 0; c < 3; ++c) load.force[c] += f[c];
     }
 
+    // The system block of a contact along the unit normal n, axial n n^T + transverse I
+    // (h^2 H + h C of the contact), as a lower triangle: xx, yx, yy, zx, zy, zz. A pair's
+    // two spheres share it.
+    static void contact_block(const double n[3], double axial, double transverse, double block[6]) {
+        block[0] = axial * n[0] * n[0] + transverse;
+        block[1] = axial * n[1] * n[0];
+        block[2] = axial * n[1] * n[1] + transverse;
+        block[3] = axial * n[2] * n[0];
+        block[4] = axial * n[2] * n[1];
+        block[5] = axial * n[2] * n[2] + transverse;
+    }
+
     // A force f on sphere i with its linearisation along the unit normal n: the system
-    // block axial n n^T + transverse I (h^2 H + h C of the contact) and the product
-    // H v = stiffness (n . v) n for the sphere's velocity v.
-    void add(std::size_t i, const double f[3], const double n[3], double axial, double transverse,
-             double stiffness, const double v[3]) {
+    // block (contact_block) and the product H v = stiffness (n . v) n for the sphere's
+    // velocity v.
+    void add(std::size_t i, const double f[3], const double n[3], const double block[6], double stiffness,
+             const double v[3]) {
         Load& load = at(i);
         const double hv = stiffness * (n[0] * v[0] + n[1] * v[1] + n[2] * v[2]);
         for (int c = 0; c < 3; ++c) {
             load.force[c] += f[c];
             load.stiffness_times_velocity[c] += hv * n[c];
         }
-        double* b = load.block;
-        b[0] += axial * n[0] * n[0] + transverse;
-        b[1] += axial * n[1] * n[0];
-        b[2] += axial * n[1] * n[1] + transverse;
-        b[3] += axial * n[2] * n[0];
-        b[4] += axial * n[2] * n[1];
-        b[5] += axial * n[2] * n[2] + transverse;
+        for (int e = 0; e < 6; ++e) load.block[e] += block[e];
     }
 
     // Adds the gathered loads to the generalised forces (3n values) and, when lin is not

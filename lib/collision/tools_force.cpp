@@ -84,20 +84,30 @@ struct Shaft {
     double axis[3];
     double inverse_axis2;  // 0 for a zero-length shaft (the tip alone)
     double reach;          // the tool's radius plus the bowel's
+    // A box around the shaft, reach wide (and a hair more, for rounding): a centre outside
+    // it cannot touch, and most of the bowel's spheres are far from the tool.
+    double low[3], high[3];
 
     Shaft(const double tip_in[3], const double tail[3], double reach_in) : reach(reach_in) {
         double axis2 = 0.0;
+        const double margin = reach * (1.0 + 1e-9);
         for (int c = 0; c < 3; ++c) {
             tip[c] = tip_in[c];
             axis[c] = tail[c] - tip[c];
             axis2 += axis[c] * axis[c];
+            low[c] = std::min(tip[c], tail[c]) - margin;
+            high[c] = std::max(tip[c], tail[c]) + margin;
         }
         inverse_axis2 = axis2 > 0.0 ? 1.0 / axis2 : 0.0;
     }
 
     // For a centre p: s of the closest shaft point, d = p minus that point, and |d|^2;
-    // true if the sphere reaches into the tool.
+    // true if the sphere reaches into the tool (false, the rest unset, when p is outside
+    // the box).
     bool touches(const double p[3], double* s, double d[3], double* distance2) const {
+        if ((p[0] < low[0]) | (p[0] > high[0]) | (p[1] < low[1]) | (p[1] > high[1]) | (p[2] < low[2]) |
+            (p[2] > high[2]))
+            return false;
         double rel[3], along = 0.0;
         for (int c = 0; c < 3; ++c) rel[c] = p[c] - tip[c], along += rel[c] * axis[c];
         *s = std::clamp(along * inverse_axis2, 0.0, 1.0);

@@ -5,19 +5,20 @@
 namespace enteron::mechanics {
 
 BendForce::BendForce(const AxisModel& model, double bend_stiffness, std::pmr::memory_resource* memory)
-    : stiffness_(memory) {
+    : stiffness_(memory), stiffness_products_(memory) {
     stiffness_.resize(model.control_points);
     const double l0 = model.rest_segment_length;
     spline::add_gram_matrix(model.control_points, spline::Derivative::second,
                             bend_stiffness / (l0 * l0 * l0), stiffness_);
+    stiffness_products_.assign(stiffness_);
 }
 
 void BendForce::evaluate(const State& state, double* force, const Linearization* lin) {
     if (lin != nullptr)  // K q and K v in one pass over K
-        add_per_coordinate_products(stiffness_, state.q.data(), -1.0, force, state.v.data(), 1.0,
-                                    lin->stiffness_times_velocity);
+        stiffness_products_.multiply_add(state.q.data(), -1.0, force, state.v.data(), 1.0,
+                                         lin->stiffness_times_velocity);
     else
-        add_per_coordinate_product(stiffness_, state.q.data(), -1.0, force);
+        stiffness_products_.multiply_add(state.q.data(), -1.0, force);
 }
 
 void BendForce::add_constant_linearization(double h, SystemMatrix& system) const {

@@ -9,6 +9,7 @@
 
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
+#include "mechanics/per_coordinate_matrix.h"
 
 namespace enteron::mechanics {
 
@@ -24,6 +25,7 @@ public:
 
 private:
     spline::ScalarBandMatrix stiffness_;  // K_b
+    PerCoordinateMatrix stiffness_products_;  // K_b again, for K_b q and K_b v
 };
 
 }  // namespace enteron::mechanics

@@ -14,6 +14,7 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
     : model_(model),
       coefficients_(coefficients),
       constant_(memory),
+      constant_products_(memory),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
                                         kNodesPerSegment, memory)),
       own_blocks_(model.control_points, memory) {
@@ -22,10 +23,11 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
     constant_.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value, coefficients.drag * l0, constant_);
     spline::add_gram_matrix(n, spline::Derivative::second, coefficients.bend / (l0 * l0 * l0), constant_);
+    constant_products_.assign(constant_);
 }
 
 void DampingForce::evaluate(const State& state, double* force, const Linearization* lin) {
-    add_per_coordinate_product(constant_, state.v.data(), -1.0, force);
+    constant_products_.multiply_add(state.v.data(), -1.0, force);
 
     const double l0 = model_.rest_segment_length;
     const double c = coefficients_.stretch;

@@ -12,6 +12,7 @@
 #include "mechanics/axial_blocks.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
+#include "mechanics/per_coordinate_matrix.h"
 #include "spline/segment_quadrature.h"
 
 namespace enteron::mechanics {
@@ -36,6 +37,7 @@ private:
     AxisModel model_;
     DampingCoefficients coefficients_;
     spline::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
+    PerCoordinateMatrix constant_products_;  // the same, for its product with v
     std::pmr::vector<spline::QuadratureNode> nodes_;
     // The axial damper's blocks when the linearisation brings no shared ones (the implicit
     // integrator always does; a caller that linearises one effect alone may not).

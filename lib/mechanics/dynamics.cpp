@@ -26,6 +26,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       memory_(memory),
       effects_(memory),
       mass_(memory),
+      mass_products_(memory),
       mass_factor_(memory),
       constant_system_(memory),
       scratch_(memory) {
@@ -33,6 +34,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
     mass_.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value,
                             model.linear_density * model.rest_segment_length, mass_);
+    mass_products_.assign(mass_);
     mass_factor_.resize(n);
     constant_system_.resize(3 * n);
     scratch_.assign(3 * n, 0.0);
@@ -147,7 +149,7 @@ const SystemMatrix& Dynamics::constant_system(double h) {
 }
 
 double Dynamics::kinetic_energy(const State& state) const {
-    mass_.multiply(state.v.data(), scratch_.data(), 3, 3);
+    mass_products_.multiply(state.v.data(), scratch_.data());
     double energy = 0.0;
     for (std::size_t k = 0; k < scratch_.size(); ++k) energy += 0.5 * state.v[k] * scratch_[k];
     return energy;

@@ -11,6 +11,7 @@
 #include "base/memory.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
+#include "mechanics/per_coordinate_matrix.h"
 #include "mechanics/pinned_points.h"
 
 namespace enteron::mechanics {
@@ -80,6 +81,7 @@ private:
     std::array<bool, kEffectCount> enabled_{};
     std::array<EffectCounters, kEffectCount> counters_{};
     spline::ScalarBandMatrix mass_;          // M per coordinate, unfactored
+    PerCoordinateMatrix mass_products_;      // M again, for M v
     spline::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
     SystemMatrix constant_system_;
     double constant_system_h_ = -1.0;

@@ -144,20 +144,4 @@ void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemM
     }
 }
 
-void add_per_coordinate_product(const spline::ScalarBandMatrix& b, const double* x, double scale,
-                                double* out) {
-    const double* const xs[1] = {x};
-    const double scales[1] = {scale};
-    double* const outs[1] = {out};
-    b.multiply_add_each<3, 1>(xs, scales, outs, 3);
-}
-
-void add_per_coordinate_products(const spline::ScalarBandMatrix& b, const double* x0, double scale0,
-                                 double* out0, const double* x1, double scale1, double* out1) {
-    const double* const xs[2] = {x0, x1};
-    const double scales[2] = {scale0, scale1};
-    double* const outs[2] = {out0, out1};
-    b.multiply_add_each<3, 2>(xs, scales, outs, 3);
-}
-
 }  // namespace enteron::mechanics

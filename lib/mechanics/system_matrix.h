@@ -57,19 +57,26 @@ inline void axial_times(const double u[3], double a, double b, const double x[3]
 
 // out[first + k] += w_k f for the four points of a spline point: a force f at that point
 // as generalised forces (3n vector).
+// The weights and f are copied first: the compiler may then assume that no store to `out`
+// changes them (it reloaded both after every store, a third of a contact's cost).
 inline void add_point_force(const spline::SegmentWeights& weights, const double f[3], double* out) {
+    const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
+    const double g[3] = {f[0], f[1], f[2]};
     double* o = out + 3 * weights.first;
     for (int k = 0; k < 4; ++k)
-        for (int c = 0; c < 3; ++c) o[3 * k + c] += weights.w[k] * f[c];
+        for (int c = 0; c < 3; ++c) o[3 * k + c] += w[k] * g[c];
 }
 
 // add_point_force for two spline points on the same four control points (the two Gauss
 // nodes of a segment): each coordinate of `out` is read and written once.
 inline void add_point_force_pair(const spline::SegmentWeights& weights0, const double f0[3],
                                  const spline::SegmentWeights& weights1, const double f1[3], double* out) {
+    const double w0[4] = {weights0.w[0], weights0.w[1], weights0.w[2], weights0.w[3]};
+    const double w1[4] = {weights1.w[0], weights1.w[1], weights1.w[2], weights1.w[3]};
+    const double g0[3] = {f0[0], f0[1], f0[2]}, g1[3] = {f1[0], f1[1], f1[2]};
     double* o = out + 3 * weights0.first;
     for (int k = 0; k < 4; ++k)
-        for (int c = 0; c < 3; ++c) o[3 * k + c] += weights0.w[k] * f0[c] + weights1.w[k] * f1[c];
+        for (int c = 0; c < 3; ++c) o[3 * k + c] += w0[k] * g0[c] + w1[k] * g1[c];
 }
 
 }  // namespace enteron::mechanics
@@ -79,14 +86,5 @@ namespace enteron::mechanics {
 // Adds scale * (B (x) I3) to the system: a per-coordinate matrix B (n x n, the same for
 // x, y and z) such as the mass, bending or drag matrix.
 void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemMatrix& system);
-
-// out += scale * B x for each coordinate (x and out hold 3n values).
-void add_per_coordinate_product(const spline::ScalarBandMatrix& b, const double* x, double scale,
-                                double* out);
-
-// out0 += scale0 * B x0 and out1 += scale1 * B x1 in one pass over B (two products with the
-// same matrix, such as K q and K v).
-void add_per_coordinate_products(const spline::ScalarBandMatrix& b, const double* x0, double scale0,
-                                 double* out0, const double* x1, double scale1, double* out1);
 
 }  // namespace enteron::mechanics

@@ -22,6 +22,7 @@ namespace enteron::numerics {
 // Two doubles that the compiler keeps in one SIMD register where there is one (GCC/Clang
 // vector extension; elsewhere it lowers to scalar code).
 typedef double Pair __attribute__((vector_size(2 * sizeof(double))));
+typedef double Quad __attribute__((vector_size(4 * sizeof(double))));
 
 template <int P>
 class BandedSpdMatrix {
@@ -115,25 +116,6 @@ public:
         }
     }
 
-    // y_r += scale_r * A x_r for R vectors x_r at once (A read once for all of them), each
-    // with C interleaved right-hand sides (x_r[i * stride + c]). Row i's sum is formed
-    // unscaled and scaled once; away from the first and last P rows the band has its full
-    // length 2P + 1 and the loops have constant trip counts.
-    template <std::size_t C, std::size_t R>
-    void multiply_add_each(const double* const x[R], const double scale[R], double* const y[R],
-                           std::size_t stride) const {
-        const std::size_t p = static_cast<std::size_t>(P);
-        const std::size_t head = std::min(p, n_);
-        const std::size_t tail = n_ > p ? std::max(head, n_ - p) : head;
-        for (std::size_t i = 0; i < n_; ++i) {
-            if (i == head) {  // the interior
-                for (; i < tail; ++i) multiply_add_row<C, R, true>(i, x, scale, y, stride);
-                if (i == n_) break;
-            }
-            multiply_add_row<C, R, false>(i, x, scale, y, stride);
-        }
-    }
-
     // Replaces row and column i by those of the identity (a fixed coordinate).
     void make_identity_row(std::size_t i) {
         double* row = &band_[i * kRowStride];
@@ -176,24 +158,6 @@ public:
     }
 
 private:
-    template <std::size_t C, std::size_t R, bool Interior>
-    void multiply_add_row(std::size_t i, const double* const x[R], const double scale[R], double* const y[R],
-                          std::size_t stride) const {
-        const std::size_t p = static_cast<std::size_t>(P);
-        const std::size_t j0 = Interior ? i - p : (i >= p ? i - p : 0);
-        const std::size_t j1 = Interior ? i + p : std::min(n_ - 1, i + p);
-        const double* row = &band_[i * kRowStride];
-        double s[R][C] = {};
-        for (std::size_t j = j0; j <= j1; ++j) {
-            // row i of the lower band, then column i of it
-            const double a = j <= i ? row[j + p - i] : band_[j * kRowStride + (i + p - j)];
-            for (std::size_t r = 0; r < R; ++r)
-                for (std::size_t c = 0; c < C; ++c) s[r][c] += a * x[r][j * stride + c];
-        }
-        for (std::size_t r = 0; r < R; ++r)
-            for (std::size_t c = 0; c < C; ++c) y[r][i * stride + c] += scale[r] * s[r][c];
-    }
-
     // Column k of the elimination with `below` rows under the pivot (below <= P).
     template <int Below>
     bool eliminate(std::size_t k) {
@@ -241,15 +205,26 @@ private:
             double* row = pivot_entry + t * P;  // row[u]: column k+u, u = 1 .. t
             const double lt = row[0];
             const Pair l = {lt, lt};
+            int u = t - 3;
+            const Quad l4 = {lt, lt, lt, lt};
 #pragma GCC unroll 16
-            for (int u = t - 1; u >= 1; u -= 2) {
+            for (; u >= 1; u -= 4) {
+                const Quad c = {column[u - 1], column[u], column[u + 1], column[u + 2]};
+                Quad x;
+                std::memcpy(&x, row + u, sizeof x);
+                x -= l4 * c;
+                std::memcpy(row + u, &x, sizeof x);
+            }
+            u += 2;  // the last element of what is left
+#pragma GCC unroll 16
+            for (; u >= 1; u -= 2) {
                 const Pair c = {column[u - 1], column[u]};
                 Pair x;
                 std::memcpy(&x, row + u, sizeof x);
                 x -= l * c;
                 std::memcpy(row + u, &x, sizeof x);
             }
-            if (t % 2 == 1) row[1] -= lt * column[0];
+            if (u == 0) row[1] -= lt * column[0];
         }
         return true;
     }
