@@ -8,12 +8,13 @@ namespace enteron::collision {
 
 EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParameters& contact,
                                    const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
-                                   std::pmr::memory_resource* memory)
+                                   std::pmr::memory_resource* memory, SphereLoads* shared_loads)
     : spheres_(spheres),
       contact_(contact),
       obstacles_(memory),
       contacts_(memory),
-      loads_(spheres_.size(), memory) {
+      own_loads_(shared_loads != nullptr ? nullptr : make_owned<SphereLoads>(memory, spheres_, memory)),
+      loads_(shared_loads != nullptr ? *shared_loads : *own_loads_) {
     obstacles_.reserve(obstacles.size());
     for (const Obstacle& obstacle : obstacles) add_obstacle(obstacle);
     spheres_.update(initial.q.data());  // the stability bounds use the spheres' weights
@@ -51,7 +52,7 @@ void EnvironmentForce::find_contacts(const mechanics::State& state) const {
 void EnvironmentForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
     find_contacts(state);
     last_ = {};
-    loads_.clear();
+    if (own_loads_) own_loads_->clear();
     // The velocity of the spheres in contact only (in sphere order: once per sphere); most
     // spheres touch nothing.
     std::size_t have_velocity = spheres_.size();  // the sphere whose velocity v holds
@@ -74,7 +75,7 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* force, co
                                    h * f.friction_damping, block);
         loads_.add(i, f.force, c.normal, block, f.stiffness, v);
     }
-    loads_.apply(spheres_, force, lin);
+    if (own_loads_) own_loads_->apply(force, lin);
 }
 
 double EnvironmentForce::potential_energy(const mechanics::State& state) const {

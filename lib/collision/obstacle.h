@@ -34,23 +34,31 @@ struct ObstacleContact {
 template <class OnContact>
 [[gnu::always_inline]] inline void for_each_contact(const Obstacle& o, const double p[3], double r, OnContact&& on_contact) {
     switch (o.kind) {
-        case ObstacleKind::box_inside:
-            // Each wall is a plane facing inward.
+        case ObstacleKind::box_inside: {
+            // Each wall is a plane facing inward. Most spheres touch none: one test for all
+            // six walls first, without a branch per wall.
+            double low[3], high[3];
+            bool touching = false;
             for (int c = 0; c < 3; ++c) {
-                const double low = (o.center[c] - o.extent[c]) - (p[c] - r);
-                const double high = (p[c] + r) - (o.center[c] + o.extent[c]);
-                if (low > 0.0) {
-                    ObstacleContact contact{low, {0.0, 0.0, 0.0}};
+                low[c] = (o.center[c] - o.extent[c]) - (p[c] - r);
+                high[c] = (p[c] + r) - (o.center[c] + o.extent[c]);
+                touching = touching | (low[c] > 0.0) | (high[c] > 0.0);
+            }
+            if (!touching) return;
+            for (int c = 0; c < 3; ++c) {
+                if (low[c] > 0.0) {
+                    ObstacleContact contact{low[c], {0.0, 0.0, 0.0}};
                     contact.normal[c] = 1.0;
                     on_contact(contact);
                 }
-                if (high > 0.0) {
-                    ObstacleContact contact{high, {0.0, 0.0, 0.0}};
+                if (high[c] > 0.0) {
+                    ObstacleContact contact{high[c], {0.0, 0.0, 0.0}};
                     contact.normal[c] = -1.0;
                     on_contact(contact);
                 }
             }
             return;
+        }
         case ObstacleKind::plane: {
             const double* n = o.extent.data();
             const double distance = (p[0] - o.center[0]) * n[0] + (p[1] - o.center[1]) * n[1] + (p[2] - o.center[2]) * n[2];

@@ -27,7 +27,8 @@ constexpr double kCellRadii = (2.0 + kNearMargin + kMoveLimit) * 1.001;  // a ha
 }  // namespace
 
 SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact,
-                                   const mechanics::State& initial, std::pmr::memory_resource* memory)
+                                   const mechanics::State& initial, std::pmr::memory_resource* memory,
+                                   SphereLoads* shared_loads)
     : spheres_(spheres),
       centers_(3 * spheres_.size(), 0.0, memory),
       positions_(3 * spheres_.size(), 0.0, memory),
@@ -38,7 +39,8 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
       near_pairs_(memory),
       touching_(memory),
       contacts_(memory),
-      loads_(spheres_.size(), memory),
+      own_loads_(shared_loads != nullptr ? nullptr : make_owned<SphereLoads>(memory, spheres_, memory)),
+      loads_(shared_loads != nullptr ? *shared_loads : *own_loads_),
       contact_(contact),
       neighbour_spheres_(static_cast<std::size_t>(std::ceil(kPi * spheres_.radius() / spheres_.rest_spacing() - 1e-9))) {
     // Room for the densest pile: spheres of radius R whose centres lie within 2.5R of one
@@ -219,7 +221,7 @@ void SelfContactForce::for_each_contact(Visit&& visit) const {
 void SelfContactForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
     last_ = {};
     find_contacts(state);
-    loads_.clear();
+    if (own_loads_) own_loads_->clear();
     const double* velocities = contacts_.empty() && contacts_complete_ ? nullptr : spheres_.velocities(state.v.data());
     for_each_contact([&](std::size_t i, std::size_t j, double depth, const double n[3]) {
         const double* va = &velocities[3 * i];
@@ -243,7 +245,7 @@ void SelfContactForce::evaluate(const mechanics::State& state, double* force, co
         loads_.add(i, f.force, n, block, f.stiffness, va);
         loads_.add(j, opposite, n, block, f.stiffness, vb);
     });
-    loads_.apply(spheres_, force, lin);
+    if (own_loads_) own_loads_->apply(force, lin);
 }
 
 double SelfContactForce::potential_energy(const mechanics::State& state) const {

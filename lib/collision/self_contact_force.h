@@ -20,6 +20,7 @@
 #include "collision/contact_model.h"
 #include "collision/spatial_hash.h"
 #include "collision/sphere_loads.h"
+#include "base/memory.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
@@ -27,9 +28,11 @@ namespace enteron::collision {
 
 class SelfContactForce final : public mechanics::Effect {
 public:
-    // `spheres` are shared with the other contact effects and must outlive this one.
+    // `spheres` are shared with the other contact effects and must outlive this one. With
+    // `shared_loads` (the scene's, on the same spheres; it must outlive this effect), the
+    // contact loads go there and Dynamics applies them; without, the effect applies its own.
     SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
-                     std::pmr::memory_resource* memory);
+                     std::pmr::memory_resource* memory, SphereLoads* shared_loads = nullptr);
 
     EffectId id() const override { return EffectId::self_collision; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
@@ -90,7 +93,8 @@ private:
     mutable std::pmr::vector<Contact> contacts_;
     mutable uint64_t contacts_for_ = 0;
     mutable bool contacts_complete_ = false;
-    SphereLoads loads_;
+    Owned<SphereLoads> own_loads_;  // without shared loads
+    SphereLoads& loads_;            // the shared loads or own_loads_
     ContactParameters contact_;
     std::size_t neighbour_spheres_;  // fewer spheres apart than this (pi R at rest): neighbours, never a contact
     bool neighbours(std::size_t i, std::size_t j) const {

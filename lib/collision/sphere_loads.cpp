@@ -6,12 +6,12 @@
 
 namespace enteron::collision {
 
-SphereLoads::SphereLoads(std::size_t spheres, std::pmr::memory_resource* memory)
-    : touched_(spheres, 0, memory), loads_(spheres, Load{}, memory) {}
+SphereLoads::SphereLoads(const CollisionSpheres& spheres, std::pmr::memory_resource* memory)
+    : spheres_(spheres), touched_(spheres.size(), 0, memory), loads_(spheres.size(), Load{}, memory) {}
 
 void SphereLoads::clear() { std::fill(touched_.begin(), touched_.end(), uint8_t{0}); }
 
-void SphereLoads::apply(const CollisionSpheres& spheres, double* force, const mechanics::Linearization* lin) const {
+void SphereLoads::apply(double* force, const mechanics::Linearization* lin) const {
     // In sphere order, so that the spheres of one segment (the same four control points)
     // follow each other: their forces, H v products and blocks are summed first, and each
     // segment reaches the generalised forces and the system once.
@@ -31,7 +31,7 @@ void SphereLoads::apply(const CollisionSpheres& spheres, double* force, const me
     for (std::size_t i = 0; i < touched_.size(); ++i) {
         if (touched_[i] == 0) continue;
         const Load& load = loads_[i];
-        const spline::SegmentWeights& weights = spheres[i].weights;
+        const spline::SegmentWeights& weights = spheres_[i].weights;
         if (weights.first != first) {
             flush();
             first = weights.first;

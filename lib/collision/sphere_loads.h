@@ -2,6 +2,9 @@
 // touches several others and the walls at once: its forces, H v products and linearised
 // blocks are summed first, and each sphere (each segment, for the blocks) then reaches the
 // control points once, instead of one pass over the implicit system's band per contact.
+// The scene gives one set to all its contact effects (self-contact and environment), which
+// Dynamics applies once after they have all added theirs (SharedLoads); an effect made on
+// its own keeps its own set and applies it itself.
 #pragma once
 
 #include <cstddef>
@@ -14,12 +17,13 @@
 
 namespace enteron::collision {
 
-class SphereLoads {
+class SphereLoads final : public mechanics::SharedLoads {
 public:
-    SphereLoads(std::size_t spheres, std::pmr::memory_resource* memory);
+    // `spheres` must outlive the loads.
+    SphereLoads(const CollisionSpheres& spheres, std::pmr::memory_resource* memory);
 
     // Forgets the loads of the last evaluation.
-    void clear();
+    void clear() override;
 
     // A force f (N) on sphere i, without linearisation (the explicit integrators).
     void add_force(std::size_t i, const double f[3]) {
@@ -55,7 +59,7 @@ public:
 
     // Adds the gathered loads to the generalised forces (3n values) and, when lin is not
     // null, to the implicit system and H v.
-    void apply(const CollisionSpheres& spheres, double* force, const mechanics::Linearization* lin) const;
+    void apply(double* force, const mechanics::Linearization* lin) const override;
 
 private:
     struct Load {
@@ -72,6 +76,7 @@ private:
         return loads_[i];
     }
 
+    const CollisionSpheres& spheres_;
     std::pmr::vector<uint8_t> touched_;  // per sphere: 1 once it has a load
     std::pmr::vector<Load> loads_;       // per sphere, meaningful where touched
 };

@@ -25,6 +25,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
     : model_(model),
       memory_(memory),
       effects_(memory),
+      shared_loads_(memory),
       mass_(memory),
       mass_products_(memory),
       mass_factor_(memory),
@@ -49,6 +50,8 @@ void Dynamics::add_pins(Owned<PinnedPoints> pins) {
     enabled_[static_cast<std::size_t>(EffectId::pinned)] = true;
     pinned_ = std::move(pins);
 }
+
+void Dynamics::add_shared_loads(SharedLoads* loads, EffectId owner) { shared_loads_.emplace_back(loads, owner); }
 
 void Dynamics::finalize() {
     mass_factor_.assign(mass_);
@@ -120,7 +123,13 @@ void Dynamics::forces(const State& state, double* force, const Linearization* li
     const bool axial_laws = has_effect(EffectId::stretch) || has_effect(EffectId::damping);
     AxialBlocks* axial = lin != nullptr && axial_laws ? lin->axial : nullptr;
     if (axial != nullptr) axial->clear();
+    for (const auto& [loads, owner] : shared_loads_) loads->clear();
     for (Owned<Effect>& effect : effects_) run(*effect);
+    for (const auto& [loads, owner] : shared_loads_) {
+        const uint64_t start = now_ns();
+        loads->apply(force, lin);
+        counters_[static_cast<std::size_t>(owner)].total_time_ns += now_ns() - start;
+    }
     // The blocks reach the system before the pins make their rows identity. Their time is
     // the stretch's (or the damper's, without stretch): per-effect times stay whole.
     if (axial != nullptr) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <memory_resource>
 #include <vector>
 
@@ -30,6 +31,10 @@ public:
     // and again after adding an effect later.
     void add_effect(Owned<Effect> effect);
     void add_pins(Owned<PinnedPoints> pins);
+    // Loads that effects share (effect.h): forces() clears them before the effects and
+    // applies them after, their time counted as `owner`'s. Not owned: they must outlive
+    // every call to forces().
+    void add_shared_loads(SharedLoads* loads, EffectId owner);
     // The effect with this id, or null.
     Effect* find_effect(EffectId id);
     // Factors the mass matrix (with the pins) and bounds the explicit stable substep.
@@ -78,6 +83,7 @@ private:
     std::pmr::memory_resource* memory_;
     std::pmr::vector<Owned<Effect>> effects_;
     Owned<PinnedPoints> pinned_;
+    std::pmr::vector<std::pair<SharedLoads*, EffectId>> shared_loads_;
     std::array<bool, kEffectCount> enabled_{};
     std::array<EffectCounters, kEffectCount> counters_{};
     spline::ScalarBandMatrix mass_;          // M per coordinate, unfactored

@@ -31,6 +31,17 @@ struct Linearization {
     AxialBlocks* axial = nullptr;
 };
 
+// Loads that several effects gather during one evaluation and that reach the generalised
+// forces (and, with a linearisation, the implicit system) once, after every effect has added
+// its part: the contact effects' loads per collision sphere. Dynamics clears them before
+// the effects run and applies them after.
+class SharedLoads {
+public:
+    virtual ~SharedLoads() = default;
+    virtual void clear() = 0;
+    virtual void apply(double* force, const Linearization* lin) const = 0;
+};
+
 // Contacts an effect made in its last evaluation (for ent_stats).
 struct ContactSummary {
     uint32_t count = 0;

@@ -88,6 +88,7 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
+      self_collision_(static_cast<bool>(config.self_collision)),
       total_mass_(config.intestine.linear_density * config.intestine.length),
       publisher_(3 * model_.control_points, memory) {
     const IntestineConfig& intestine = config.intestine;
@@ -118,8 +119,9 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     if (!config.environment.empty()) add_environment(config.environment);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision)
-        dynamics_.add_effect(
-            make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state_, memory));
+        dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact,
+                                                                     state_, memory,
+                                                                     &contact_loads(EffectId::self_collision)));
 
     const auto kind = static_cast<mechanics::IntegratorKind>(static_cast<int32_t>(solver_.integrator));
     integrator_ = make_integrator(kind, 3 * n, memory);
@@ -203,9 +205,21 @@ double Scene::sphere_spacing() const {
     return collision_.sphere_spacing > 0.0 ? collision_.sphere_spacing : 0.5 * radius_;
 }
 
+collision::SphereLoads& Scene::contact_loads(EffectId owner) {
+    if (!contact_loads_) {
+        contact_loads_ = make_owned<collision::SphereLoads>(memory_, collision_spheres(), memory_);
+        dynamics_.add_shared_loads(contact_loads_.get(), owner);
+    }
+    return *contact_loads_;
+}
+
 void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
+    // The time of the shared loads is the self-contact's when the scene has it (which is
+    // made after the environment), else the environment's.
+    const EffectId owner = self_collision_ ? EffectId::self_collision : EffectId::environment;
     dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact,
-                                                                 obstacles, state_, memory_));
+                                                                 obstacles, state_, memory_,
+                                                                 &contact_loads(owner)));
     obstacles_ += obstacles.size();
 }
 

@@ -11,6 +11,7 @@
 #include "base/logger.h"
 #include "base/memory.h"
 #include "collision/collision_spheres.h"
+#include "collision/sphere_loads.h"
 #include "collision/tool.h"
 #include "mechanics/dynamics.h"
 #include "mechanics/integrator.h"
@@ -70,6 +71,10 @@ private:
     double sphere_spacing() const;
     // The shared collision spheres, made on first use (a scene without contacts has none).
     collision::CollisionSpheres& collision_spheres();
+    // The contact loads that the self-contact and the environment share (sphere_loads.h),
+    // made with the first of them and registered with the dynamics, their time counted as
+    // `owner`'s.
+    collision::SphereLoads& contact_loads(EffectId owner);
     // Starts the environment effect with these obstacles.
     void add_environment(const std::vector<collision::Obstacle>& obstacles);
     // Adds a tool, creating the tools effect with the first; no refinalize.
@@ -86,6 +91,7 @@ private:
     // The collision spheres the contact effects share; made with the first of them (before
     // dynamics_, which holds those effects, so that it outlives them).
     Owned<collision::CollisionSpheres> spheres_;
+    Owned<collision::SphereLoads> contact_loads_;  // made with the first of them, like spheres_
     mechanics::Dynamics dynamics_;
     Owned<mechanics::Integrator> integrator_;
     mechanics::State state_;
@@ -94,6 +100,7 @@ private:
     double rest_length_;
     double radius_;
     CollisionConfig collision_;
+    bool self_collision_;  // the scene has the self-contact effect
     std::size_t obstacles_ = 0;
     collision::ToolsForce* tools_ = nullptr;  // owned by dynamics_; null until the first tool
     double total_mass_;
