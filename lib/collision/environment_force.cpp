@@ -44,7 +44,14 @@ void EnvironmentForce::find_contacts(const mechanics::State& state) const {
     for (std::size_t i = 0; i < spheres_.size(); ++i)
         for (const Obstacle& obstacle : obstacles_)
             for_each_contact(obstacle, spheres_[i].center, r, [&](const ObstacleContact& c) {
-                contacts_.push_back(Contact{static_cast<uint32_t>(i), c});
+                // Field by field: a whole-struct copy read the contact just written with
+                // wider loads than its stores, which stalls (store-to-load forwarding fails).
+                Contact& contact = contacts_.emplace_back();
+                contact.sphere = static_cast<uint32_t>(i);
+                contact.contact.depth = c.depth;
+                contact.contact.normal[0] = c.normal[0];
+                contact.contact.normal[1] = c.normal[1];
+                contact.contact.normal[2] = c.normal[2];
             });
     contacts_for_ = spheres_.placement();
 }

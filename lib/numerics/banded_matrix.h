@@ -278,28 +278,62 @@ private:
             }
             for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
         }
-        for (std::size_t i = head; i < n_; ++i) {
-            const double* li = &band_[i * kRowStride];
-            const double* xj = x + (i - p) * stride;
-            double s[C];
-            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
-            for (int j = 0; j < P; ++j)
-                for (std::size_t c = 0; c < C; ++c) s[c] -= li[j] * xj[j * stride + c];
-            for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
+        if (C == 1 && head > 0) {
+            // One right-hand side: the value just computed stays in a register for the next
+            // row (reloading it from its store put a store-to-load delay on the chain).
+            double last = x[(head - 1) * stride];
+            for (std::size_t i = head; i < n_; ++i) {
+                const double* li = &band_[i * kRowStride];
+                const double* xj = x + (i - p) * stride;
+                double s = x[i * stride];
+                for (int j = 0; j + 1 < P; ++j) s -= li[j] * xj[j * stride];
+                s -= li[P - 1] * last;
+                x[i * stride] = s;
+                last = s;
+            }
+        } else {
+            for (std::size_t i = head; i < n_; ++i) {
+                const double* li = &band_[i * kRowStride];
+                const double* xj = x + (i - p) * stride;
+                double s[C];
+                for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
+                for (int j = 0; j < P; ++j)
+                    for (std::size_t c = 0; c < C; ++c) s[c] -= li[j] * xj[j * stride + c];
+                for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
+            }
         }
         for (std::size_t i = 0; i < n_; ++i)
             for (std::size_t c = 0; c < C; ++c) x[i * stride + c] *= inverse_diagonal_[i];
-        // Backward: x_i = y_i / d_i - sum_{k>i} L(k, i) x_k, the farthest k first.
-        for (std::size_t i = n_; i-- > 0;) {
-            const std::size_t last = std::min(n_ - 1, i + p);
-            double s[C];
-            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
-            for (std::size_t k = last; k > i; --k) {
-                const double l = band_[k * kRowStride + (i + p - k)];
-                for (std::size_t c = 0; c < C; ++c) s[c] -= l * x[k * stride + c];
+        // Backward: x_i = y_i / d_i - sum_{k>i} L(k, i) x_k, the farthest k first. With one
+        // right-hand side, the rows with a full band keep x_{i+1} in a register, as above.
+        std::size_t i = n_;
+        if (C == 1 && n_ > p + 1) {
+            for (; i > n_ - p; --i) backward_row<C>(x, stride, i - 1);
+            double next = x[i * stride];
+            for (; i-- > 0;) {
+                double s = x[i * stride];
+                for (std::size_t k = i + p; k > i + 1; --k) s -= band_[k * kRowStride + (i + p - k)] * x[k * stride];
+                s -= band_[(i + 1) * kRowStride + (p - 1)] * next;
+                x[i * stride] = s;
+                next = s;
             }
-            for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
+            return;
         }
+        for (; i-- > 0;) backward_row<C>(x, stride, i);
+    }
+
+    // Row i of the backward sweep (solve_columns), the farthest k first.
+    template <std::size_t C>
+    void backward_row(double* x, std::size_t stride, std::size_t i) const {
+        const std::size_t p = static_cast<std::size_t>(P);
+        const std::size_t last = std::min(n_ - 1, i + p);
+        double s[C];
+        for (std::size_t c = 0; c < C; ++c) s[c] = x[i * stride + c];
+        for (std::size_t k = last; k > i; --k) {
+            const double l = band_[k * kRowStride + (i + p - k)];
+            for (std::size_t c = 0; c < C; ++c) s[c] -= l * x[k * stride + c];
+        }
+        for (std::size_t c = 0; c < C; ++c) x[i * stride + c] = s[c];
     }
 
     std::size_t n_ = 0;
