@@ -18,14 +18,17 @@ void SphereLoads::apply(double* force, const mechanics::Linearization* lin) cons
     mechanics::SegmentBlock block;
     constexpr std::size_t kNone = ~std::size_t{0};
     std::size_t first = kNone;
-    double force_sum[12] = {}, hv_sum[12] = {};
+    // Per control point of the segment: the force, then H v (zero without a linearisation).
+    double sums[4][6] = {};
     const auto flush = [&] {
         if (first == kNone) return;
         double* f = force + 3 * first;
-        for (int k = 0; k < 12; ++k) f[k] += force_sum[k];
+        for (int k = 0; k < 4; ++k)
+            for (int c = 0; c < 3; ++c) f[3 * k + c] += sums[k][c];
         if (lin == nullptr) return;
         double* hv = lin->stiffness_times_velocity + 3 * first;
-        for (int k = 0; k < 12; ++k) hv[k] += hv_sum[k];
+        for (int k = 0; k < 4; ++k)
+            for (int c = 0; c < 3; ++c) hv[3 * k + c] += sums[k][3 + c];
         block.add_to(*lin->system);
     };
     for (std::size_t i = 0; i < touched_.size(); ++i) {
@@ -35,16 +38,14 @@ void SphereLoads::apply(double* force, const mechanics::Linearization* lin) cons
         if (weights.first != first) {
             flush();
             first = weights.first;
-            for (int k = 0; k < 12; ++k) force_sum[k] = hv_sum[k] = 0.0;
+            for (auto& sum : sums)
+                for (double& v : sum) v = 0.0;
             if (lin != nullptr) block.reset(first);
         }
         const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
         for (int k = 0; k < 4; ++k)
-            for (int c = 0; c < 3; ++c) force_sum[3 * k + c] += w[k] * load.force[c];
-        if (lin == nullptr) continue;
-        for (int k = 0; k < 4; ++k)
-            for (int c = 0; c < 3; ++c) hv_sum[3 * k + c] += w[k] * load.stiffness_times_velocity[c];
-        block.add(weights, load.block);
+            for (int e = 0; e < 6; ++e) sums[k][e] += w[k] * load.force_and_hv[e];
+        if (lin != nullptr) block.add(weights, load.block);
     }
     flush();
 }

@@ -28,7 +28,7 @@ public:
     // A force f (N) on sphere i, without linearisation (the explicit integrators).
     void add_force(std::size_t i, const double f[3]) {
         Load& load = at(i);
-        for (int c = 0; c < 3; ++c) load.force[c] += f[c];
+        for (int c = 0; c < 3; ++c) load.force_and_hv[c] += f[c];
     }
 
     // The system block of a contact along the unit normal n, axial n n^T + transverse I
@@ -51,8 +51,8 @@ public:
         Load& load = at(i);
         const double hv = stiffness * (n[0] * v[0] + n[1] * v[1] + n[2] * v[2]);
         for (int c = 0; c < 3; ++c) {
-            load.force[c] += f[c];
-            load.stiffness_times_velocity[c] += hv * n[c];
+            load.force_and_hv[c] += f[c];
+            load.force_and_hv[3 + c] += hv * n[c];
         }
         for (int e = 0; e < 6; ++e) load.block[e] += block[e];
     }
@@ -63,9 +63,8 @@ public:
 
 private:
     struct Load {
-        double force[3];
-        double stiffness_times_velocity[3];
-        double block[6];  // lower triangle: xx, yx, yy, zx, zy, zz
+        double force_and_hv[6];  // the force (N), then H v, x y z each: one run of six for apply
+        double block[6];         // lower triangle: xx, yx, yy, zx, zy, zz
     };
     // Sphere i's load, zeroed when first touched since clear().
     Load& at(std::size_t i) {

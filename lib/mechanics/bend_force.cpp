@@ -5,7 +5,7 @@
 namespace enteron::mechanics {
 
 BendForce::BendForce(const AxisModel& model, double bend_stiffness, std::pmr::memory_resource* memory)
-    : stiffness_(memory), stiffness_products_(memory) {
+    : stiffness_(memory), stiffness_products_(memory), scratch_(3 * model.control_points, 0.0, memory) {
     stiffness_.resize(model.control_points);
     const double l0 = model.rest_segment_length;
     spline::add_gram_matrix(model.control_points, spline::Derivative::second,
@@ -26,17 +26,11 @@ void BendForce::add_constant_linearization(double h, SystemMatrix& system) const
 }
 
 double BendForce::potential_energy(const State& state) const {
+    // 1/2 q^T K_b q per coordinate, from the product K_b q.
+    stiffness_products_.multiply(state.q.data(), scratch_.data());
     double energy = 0.0;
-    const std::size_t n = stiffness_.size();
-    const double* q = state.q.data();
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t j0 = i >= 3 ? i - 3 : 0;
-        for (std::size_t j = j0; j <= i; ++j) {
-            const double dot = q[3 * i] * q[3 * j] + q[3 * i + 1] * q[3 * j + 1] + q[3 * i + 2] * q[3 * j + 2];
-            energy += (i == j ? 0.5 : 1.0) * stiffness_.lower(i, j) * dot;
-        }
-    }
-    return energy;
+    for (std::size_t k = 0; k < scratch_.size(); ++k) energy += state.q[k] * scratch_[k];
+    return 0.5 * energy;
 }
 
 void BendForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory_resource>
+#include <vector>
 
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
@@ -26,6 +27,7 @@ public:
 private:
     spline::ScalarBandMatrix stiffness_;  // K_b
     PerCoordinateMatrix stiffness_products_;  // K_b again, for K_b q and K_b v
+    mutable std::pmr::vector<double> scratch_;  // K_b q for the energy
 };
 
 }  // namespace enteron::mechanics
