@@ -6,8 +6,9 @@
 // built on its headers use -ffp-contract=off, so the wider one fuses no multiply-add that
 // the baseline rounds twice, and neither reorders a sum (ctest dispatch.same_bits checks a
 // whole trajectory against a baseline-only build). A plain function elsewhere: another
-// compiler, GCC before 12 (no "arch=" clones), another architecture or C library, or a
-// build with ENTERON_CPU_DISPATCH=OFF (which defines ENTERON_HOT_KERNEL empty).
+// compiler, GCC before 12 (no "arch=" clones), another architecture or C library, a build
+// with ENTERON_CPU_DISPATCH=OFF or with sanitizers (both define ENTERON_HOT_KERNEL empty:
+// the loader runs the version-picking resolvers before a sanitizer's runtime has started).
 #pragma once
 
 #include <cstddef>  // defines __GLIBC__ where glibc is the C library
