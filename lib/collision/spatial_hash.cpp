@@ -1,7 +1,6 @@
 #include "collision/spatial_hash.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 namespace enteron::collision {
@@ -53,13 +52,12 @@ void SpatialHash::build(const double* points, std::size_t count, std::size_t str
 void SpatialHash::move(std::size_t i, const double p[3]) {
     const std::array<int64_t, 3> cell = cell_of(p);
     if (cell == point_cell_[i]) return;
-    // Unlink from the old bucket: its list is a few points long (and holds i: filed points only).
+    // Unlink from the old bucket (its list is a few points long); a point that was never
+    // filed is only linked.
     int32_t* link_to_i = &head_[point_bucket_[i]];
-    while (*link_to_i != static_cast<int32_t>(i)) {
-        assert(*link_to_i != kEnd && "SpatialHash::move: point not filed");
+    while (*link_to_i != kEnd && *link_to_i != static_cast<int32_t>(i))
         link_to_i = &next_[static_cast<std::size_t>(*link_to_i)];
-    }
-    *link_to_i = next_[i];
+    if (*link_to_i != kEnd) *link_to_i = next_[i];
     point_cell_[i] = cell;
     link(i);
 }

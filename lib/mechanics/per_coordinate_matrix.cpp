@@ -10,7 +10,7 @@ constexpr int kP = spline::ScalarBandMatrix::kHalfBandwidth;
 
 // The rows away from the ends: one loop over k with the seven diagonals unrolled. The
 // pointers are restrict (the outputs never overlap the inputs), so that it vectorises with
-// no run-time overlap check; x0 and x1 point margin entries before the vectors.
+// no run-time overlap check. Entry k takes x[k + 3 (d - 3)], d = 0 .. 6.
 template <int R, bool Accumulate>
 [[gnu::always_inline]] inline void interior(const double* __restrict e, std::size_t m, std::size_t begin,
                                             std::size_t end, const double* __restrict x0, double scale0,
@@ -21,8 +21,9 @@ template <int R, bool Accumulate>
 #pragma GCC unroll 7
         for (int d = 0; d <= 2 * kP; ++d) {
             const double entry = e[d * m + k];
-            s0 += entry * x0[k + 3 * d];
-            if (R == 2) s1 += entry * x1[k + 3 * d];
+            const std::size_t j = k + 3 * static_cast<std::size_t>(d) - 3 * kP;  // k >= 3 kP here
+            s0 += entry * x0[j];
+            if (R == 2) s1 += entry * x1[j];
         }
         y0[k] = (Accumulate ? y0[k] : 0.0) + scale0 * s0;
         if (R == 2) y1[k] = (Accumulate ? y1[k] : 0.0) + scale1 * s1;
@@ -53,8 +54,8 @@ template <int R, bool Accumulate>
         return;
     }
     for (std::size_t k = 0; k < margin; ++k) edge(k);
-    interior<R, Accumulate>(diagonals, m, margin, m - margin, x[0] - margin, scale[0], y[0],
-                            R == 2 ? x[R - 1] - margin : nullptr, scale[R - 1], R == 2 ? y[R - 1] : nullptr);
+    interior<R, Accumulate>(diagonals, m, margin, m - margin, x[0], scale[0], y[0], R == 2 ? x[R - 1] : nullptr,
+                            scale[R - 1], R == 2 ? y[R - 1] : nullptr);
     for (std::size_t k = m - margin; k < m; ++k) edge(k);
 }
 

@@ -24,6 +24,8 @@ public:
 
     std::size_t coordinates() const { return coordinates_; }
 
+    // The products below take 3n values in each vector; an output must not overlap any
+    // input or the other output.
     // y = (B (x) I3) x.
     void multiply(const double* x, double* y) const;
     // y += scale (B (x) I3) x.

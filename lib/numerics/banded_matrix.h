@@ -183,10 +183,10 @@ private:
     }
 
     // Column k with all P rows below it. The update of row k+t touches its last t entries
-    // (columns k+1 .. k+t, the diagonal last), taken in pairs from the diagonal end: those
-    // pairs sit at the same even offsets of the row for every column k, so each pair loads
-    // what the previous column stored as one pair (no store forwarding across two stores)
-    // and two lanes share each multiply and subtraction.
+    // (columns k+1 .. k+t, the diagonal last), taken in groups of four from the diagonal
+    // end, then a pair, then one: the groups sit at the same offsets from the diagonal for
+    // every column k, so each group loads what the previous column stored as one group (no
+    // store forwarding across two stores), and the lanes share each multiply and subtraction.
     bool eliminate_interior(std::size_t k) {
         double* pivot_entry = &band_[k * kRowStride + P];
         const double pivot = pivot_entry[0];

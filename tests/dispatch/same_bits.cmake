@@ -1,5 +1,9 @@
 # ctest dispatch.same_bits: runs PROGRAM on this build's library and, through
 # LD_LIBRARY_PATH, on the baseline-only build in BASELINE; the hashes must be equal.
+# Without a library in BASELINE the loader would quietly take this build's again.
+if(NOT EXISTS "${BASELINE}/libenteron.so.0")
+  message(FATAL_ERROR "no baseline library: ${BASELINE}/libenteron.so.0 does not exist")
+endif()
 foreach(which this baseline)
   if(which STREQUAL "this")
     execute_process(COMMAND "${PROGRAM}" OUTPUT_VARIABLE out_${which} RESULT_VARIABLE rc)

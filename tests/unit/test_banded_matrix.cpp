@@ -113,7 +113,7 @@ void check_solve_matches_dense(std::size_t n, std::uint64_t seed) {
 
 TEST(BandedSpdMatrix, SolveMatchesDenseSolveHalfBandwidth3) {
     check_solve_matches_dense<3>(4, 21);
-    check_solve_matches_dense<3>(5, 26);  // the first size whose solve keeps a value in a register
+    check_solve_matches_dense<3>(5, 26);  // the first size whose backward sweep keeps a value in a register
     check_solve_matches_dense<3>(40, 22);
 }
 
