@@ -53,4 +53,15 @@ inline ContactForce contact_force(const ContactParameters& p, double depth, cons
     return out;
 }
 
+// A contact's part of the implicit system for a substep h, h^2 H + h C, as
+// axial n n^T + transverse I: axial = h^2 k + h c - h c_t, transverse = h c_t.
+struct ContactLinearization {
+    double axial;
+    double transverse;
+};
+
+inline ContactLinearization contact_linearization(const ContactForce& f, double h) {
+    return {h * h * f.stiffness + h * f.damping - h * f.friction_damping, h * f.friction_damping};
+}
+
 }  // namespace enteron::collision

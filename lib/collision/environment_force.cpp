@@ -75,11 +75,8 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* force, co
             loads_.add_force(i, f.force);
             continue;
         }
-        // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I.
-        const double h = lin->h;
         double block[6];
-        SphereLoads::contact_block(c.normal, h * h * f.stiffness + h * f.damping - h * f.friction_damping,
-                                   h * f.friction_damping, block);
+        SphereLoads::contact_block(c.normal, contact_linearization(f, lin->h), block);
         loads_.add(i, f.force, c.normal, block, f.stiffness, v);
     }
     if (own_loads_) own_loads_->apply(force, lin);

@@ -237,11 +237,8 @@ void SelfContactForce::evaluate(const mechanics::State& state, double* force, co
             return;
         }
         // Each sphere's own share of the linearisation; the cross terms stay explicit.
-        const double h = lin->h;
-        const double axial = h * h * f.stiffness + h * f.damping - h * f.friction_damping;
-        const double transverse = h * f.friction_damping;
         double block[6];
-        SphereLoads::contact_block(n, axial, transverse, block);
+        SphereLoads::contact_block(n, contact_linearization(f, lin->h), block);
         loads_.add(i, f.force, n, block, f.stiffness, va);
         loads_.add(j, opposite, n, block, f.stiffness, vb);
     });

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "collision/collision_spheres.h"
+#include "collision/contact_model.h"
 #include "mechanics/effect.h"
 
 namespace enteron::collision {
@@ -32,9 +33,10 @@ public:
     }
 
     // The system block of a contact along the unit normal n, axial n n^T + transverse I
-    // (h^2 H + h C of the contact), as a lower triangle: xx, yx, yy, zx, zy, zz. A pair's
-    // two spheres share it.
-    static void contact_block(const double n[3], double axial, double transverse, double block[6]) {
+    // (contact_linearization), as a lower triangle: xx, yx, yy, zx, zy, zz. A pair's two
+    // spheres share it.
+    static void contact_block(const double n[3], const ContactLinearization& l, double block[6]) {
+        const double axial = l.axial, transverse = l.transverse;
         block[0] = axial * n[0] * n[0] + transverse;
         block[1] = axial * n[1] * n[0];
         block[2] = axial * n[1] * n[1] + transverse;

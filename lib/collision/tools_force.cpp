@@ -247,10 +247,9 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             if (lin == nullptr) continue;
             const double h = lin->h;
             const ContactForce& cf = hit.force;
-            // h C + h^2 H = (h^2 k + h c - h c_t) n n^T + h c_t I, scaled with the force.
-            add_axial_block(*lin->system, sphere.weights, hit.normal,
-                            h * h * cf.stiffness + h * cf.damping - h * cf.friction_damping,
-                            h * cf.friction_damping, scale);
+            // Scaled with the force.
+            const ContactLinearization l = contact_linearization(cf, h);
+            add_axial_block(*lin->system, sphere.weights, hit.normal, l.axial, l.transverse, scale);
             double v[3];
             spline::evaluate(state.v.data(), sphere.weights, v);
             const double vn = v[0] * hit.normal[0] + v[1] * hit.normal[1] + v[2] * hit.normal[2];

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mechanics/axial_blocks.h"
+
 namespace enteron::mechanics {
 
 namespace {
@@ -16,8 +18,7 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
       constant_(memory),
       constant_products_(memory),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory)),
-      own_blocks_(model.control_points, memory) {
+                                        kNodesPerSegment, memory)) {
     const std::size_t n = model.control_points;
     const double l0 = model.rest_segment_length;
     constant_.resize(n);
@@ -35,13 +36,13 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
     const double tiny = 1e-12 * l0, tiny2 = tiny * tiny;
     // With d = dP/dt and u = d / |d|: the force -c w (u . rate / l0) u is a d (d . x) / |d|^2
     // form, so no square root is needed for it. The block (c / l0) u u^T goes to the axial
-    // blocks (axial_blocks.h), which usually have the tangent from the stretch already.
+    // blocks (axial_blocks.h), which usually have the tangent from the stretch already; a
+    // linearisation without them (one law linearised alone) takes each block at once.
     // The two nodes of a segment share their four control points: their forces are added
     // together, and both divisions come before any store (they overlap).
     static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
     static_assert(kNodesPerSegment == AxialBlocks::kNodesPerSegment, "the axial blocks are at these nodes");
-    AxialBlocks* blocks = lin == nullptr ? nullptr : lin->axial != nullptr ? lin->axial : &own_blocks_;
-    if (blocks == &own_blocks_) own_blocks_.clear();
+    AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
     const std::size_t count = nodes_.size();
     for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
@@ -59,17 +60,20 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
             const double scale =
                 node[m].weight * c_per_l0 * (d[m][0] * rate[0] + d[m][1] * rate[1] + d[m][2] * rate[2]) * inv2[m];
             for (int k = 0; k < 3; ++k) f[m][k] = -scale * d[m][k];
-            if (blocks == nullptr) continue;
+            if (lin == nullptr) continue;
             double u[3] = {0.0, 0.0, 0.0};
-            if (!blocks->has_tangent(first + m)) {
+            if (blocks == nullptr || !blocks->has_tangent(first + m)) {
                 const double inverse_length = 1.0 / std::sqrt(length2[m]);
                 for (int k = 0; k < 3; ++k) u[k] = d[m][k] * inverse_length;
             }
-            blocks->add(first + m, u, lin->h * node[m].weight * c_per_l0, 0.0);
+            const double a = lin->h * node[m].weight * c_per_l0;
+            if (blocks != nullptr)
+                blocks->add(first + m, u, a, 0.0);
+            else
+                add_axial_block(*lin->system, node[m].weights, u, a, 0.0, 1.0);
         }
         add_point_force_pair(node[0].weights, f[0], node[1].weights, f[1], force);
     }
-    if (blocks == &own_blocks_) own_blocks_.add_to(*lin->system);
 }
 
 void DampingForce::add_constant_linearization(double h, SystemMatrix& system) const {

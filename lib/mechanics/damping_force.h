@@ -9,7 +9,6 @@
 #include <memory_resource>
 #include <vector>
 
-#include "mechanics/axial_blocks.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 #include "mechanics/per_coordinate_matrix.h"
@@ -39,9 +38,6 @@ private:
     spline::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
     PerCoordinateMatrix constant_products_;  // the same, for its product with v
     std::pmr::vector<spline::QuadratureNode> nodes_;
-    // The axial damper's blocks when the linearisation brings no shared ones (the implicit
-    // integrator always does; a caller that linearises one effect alone may not).
-    AxialBlocks own_blocks_;
 };
 
 }  // namespace enteron::mechanics

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mechanics/axial_blocks.h"
+
 namespace enteron::mechanics {
 
 namespace {
@@ -19,8 +21,7 @@ StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
     : model_(model),
       stiffness_(stretch_stiffness),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory)),
-      own_blocks_(model.control_points, memory) {}
+                                        kNodesPerSegment, memory)) {}
 
 void StretchForce::evaluate(const State& state, double* force, const Linearization* lin) {
     const double* q = state.q.data();
@@ -33,11 +34,11 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     // The nodes of one segment share their four control points: their forces are added
     // together (one read and write per coordinate). The square roots and divisions of both
     // nodes come before any store, so they overlap. The stiffness blocks go to the axial
-    // blocks (axial_blocks.h), which add them to the system after this pass.
+    // blocks (axial_blocks.h), which add them to the system after this pass; a
+    // linearisation without them (one law linearised alone) takes each block at once.
     static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
     static_assert(kNodesPerSegment == AxialBlocks::kNodesPerSegment, "the axial blocks are at these nodes");
-    AxialBlocks* blocks = lin == nullptr ? nullptr : lin->axial != nullptr ? lin->axial : &own_blocks_;
-    if (blocks == &own_blocks_) own_blocks_.clear();
+    AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
     const std::size_t count = nodes_.size();
     for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
@@ -56,20 +57,23 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
             const double tension = ea * strain;  // N
             const double scale = node[m].weight * tension;
             for (int c = 0; c < 3; ++c) f[m][c] = -scale * u[c];
-            if (blocks != nullptr) {
+            if (lin != nullptr) {
                 const double transverse = ea * std::max(strain, 0.0) * inv[m];
                 const double axial = ea * inverse_l0 - transverse;
                 double rate[3];
                 tangent(state.v.data(), node[m].weights, rate);
                 axial_times(u, node[m].weight * axial, node[m].weight * transverse, rate, hr[m]);
-                blocks->add(first + m, u, h2 * node[m].weight * axial, h2 * node[m].weight * transverse);
+                const double a = h2 * node[m].weight * axial, b = h2 * node[m].weight * transverse;
+                if (blocks != nullptr)
+                    blocks->add(first + m, u, a, b);
+                else
+                    add_axial_block(*lin->system, node[m].weights, u, a, b, 1.0);
             }
         }
         add_point_force_pair(node[0].weights, f[0], node[1].weights, f[1], force);
         if (lin != nullptr)
             add_point_force_pair(node[0].weights, hr[0], node[1].weights, hr[1], lin->stiffness_times_velocity);
     }
-    if (blocks == &own_blocks_) own_blocks_.add_to(*lin->system);
 }
 
 double StretchForce::potential_energy(const State& state) const {

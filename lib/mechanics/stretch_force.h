@@ -12,7 +12,6 @@
 #include <memory_resource>
 #include <vector>
 
-#include "mechanics/axial_blocks.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 #include "spline/segment_quadrature.h"
@@ -32,9 +31,6 @@ private:
     AxisModel model_;
     double stiffness_;  // EA, N
     std::pmr::vector<spline::QuadratureNode> nodes_;
-    // The stiffness blocks when the linearisation brings no shared ones (the implicit
-    // integrator always does; a caller that linearises one effect alone may not).
-    AxialBlocks own_blocks_;
 };
 
 }  // namespace enteron::mechanics

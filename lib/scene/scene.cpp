@@ -88,7 +88,6 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
-      self_collision_(static_cast<bool>(config.self_collision)),
       total_mass_(config.intestine.linear_density * config.intestine.length),
       publisher_(3 * model_.control_points, memory) {
     const IntestineConfig& intestine = config.intestine;
@@ -116,6 +115,9 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     }
     if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), memory));
+    // The self-contact's time takes the shared contact loads', even though the environment
+    // is made first.
+    if (config.self_collision) contact_loads(EffectId::self_collision);
     if (!config.environment.empty()) add_environment(config.environment);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision)
@@ -214,12 +216,9 @@ collision::SphereLoads& Scene::contact_loads(EffectId owner) {
 }
 
 void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
-    // The time of the shared loads is the self-contact's when the scene has it (which is
-    // made after the environment), else the environment's.
-    const EffectId owner = self_collision_ ? EffectId::self_collision : EffectId::environment;
     dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact,
                                                                  obstacles, state_, memory_,
-                                                                 &contact_loads(owner)));
+                                                                 &contact_loads(EffectId::environment)));
     obstacles_ += obstacles.size();
 }
 

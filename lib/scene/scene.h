@@ -72,8 +72,8 @@ private:
     // The shared collision spheres, made on first use (a scene without contacts has none).
     collision::CollisionSpheres& collision_spheres();
     // The contact loads that the self-contact and the environment share (sphere_loads.h),
-    // made with the first of them and registered with the dynamics, their time counted as
-    // `owner`'s.
+    // made on first use and registered with the dynamics, their time counted as the
+    // `owner` of that first use.
     collision::SphereLoads& contact_loads(EffectId owner);
     // Starts the environment effect with these obstacles.
     void add_environment(const std::vector<collision::Obstacle>& obstacles);
@@ -100,7 +100,6 @@ private:
     double rest_length_;
     double radius_;
     CollisionConfig collision_;
-    bool self_collision_;  // the scene has the self-contact effect
     std::size_t obstacles_ = 0;
     collision::ToolsForce* tools_ = nullptr;  // owned by dynamics_; null until the first tool
     double total_mass_;
