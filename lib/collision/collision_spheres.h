@@ -13,6 +13,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
 #include "spline/catmull_rom.h"
 #include "spline/gram_matrix.h"
 
@@ -20,7 +21,7 @@ namespace enteron::collision {
 
 struct Sphere {
     spline::SegmentWeights weights;  // of the centre, on four control points
-    double center[3];                // m
+    Vec3 center = Vec3::Zero();      // m
     double arc_length;               // from the first end, m
 };
 

@@ -184,7 +184,7 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
             const Sphere& sphere = spheres_[i];
             double s, d[3], dist2;
-            if (!shaft.touches(sphere.center, &s, d, &dist2)) continue;
+            if (!shaft.touches(sphere.center.data(), &s, d, &dist2)) continue;
             const double dist = std::sqrt(dist2);
             Hit hit;
             hit.sphere = i;
@@ -198,12 +198,13 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             spline::evaluate(state.v.data(), sphere.weights, v);
             double v_rel[3];
             for (int c = 0; c < 3; ++c) v_rel[c] = v[c] - ((1.0 - s) * tip_v[c] + s * tail_v[c]);
-            hit.force = contact_force(contact_, hit.depth, hit.normal, v_rel);
+            hit.force = contact_force(contact_, hit.depth, Vec3(hit.normal[0], hit.normal[1], hit.normal[2]),
+                                      Vec3(v_rel[0], v_rel[1], v_rel[2]));
             for (int c = 0; c < 3; ++c) {
                 hit.point[c] = tip[c] + s * axis[c] + tool.settings.radius * hit.normal[c];
                 total[c] += hit.force.force[c];
             }
-            total_magnitude += norm3(hit.force.force);
+            total_magnitude += hit.force.force.norm();
             hits_.push_back(hit);
             last_.count += 1;
             last_.max_penetration = std::max(last_.max_penetration, hit.depth);
@@ -249,7 +250,8 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             const ContactForce& cf = hit.force;
             // Scaled with the force.
             const ContactLinearization l = contact_linearization(cf, h);
-            add_axial_block(*lin->system, sphere.weights, hit.normal, l.axial, l.transverse, scale);
+            add_axial_block(*lin->system, sphere.weights, Vec3(hit.normal[0], hit.normal[1], hit.normal[2]), l.axial,
+                            l.transverse, scale);
             double v[3];
             spline::evaluate(state.v.data(), sphere.weights, v);
             const double vn = v[0] * hit.normal[0] + v[1] * hit.normal[1] + v[2] * hit.normal[2];
@@ -264,7 +266,9 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             if (lin != nullptr && spring.taut) {
                 const double h = lin->h;
                 // h C + h^2 H with C = c I and H = a n n^T + b I (grasp_spring).
-                add_axial_block(*lin->system, tool.grasp_point, spring.direction, h * h * spring.axial_stiffness,
+                add_axial_block(*lin->system, tool.grasp_point,
+                                Vec3(spring.direction[0], spring.direction[1], spring.direction[2]),
+                                h * h * spring.axial_stiffness,
                                 h * tool.settings.grasp_damping + h * h * spring.isotropic_stiffness, scale);
                 double hv[3];
                 for (int c = 0; c < 3; ++c) hv[c] = scale * spring.stiffness_times_velocity[c];
@@ -286,7 +290,7 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
         double stored = 0.0, total_magnitude = 0.0;
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
             double s, d[3], dist2;
-            if (!shaft.touches(spheres_[i].center, &s, d, &dist2)) continue;
+            if (!shaft.touches(spheres_[i].center.data(), &s, d, &dist2)) continue;
             const double depth = shaft.reach - std::sqrt(dist2);
             if (!(depth > 0.0)) continue;
             stored += 0.5 * contact_.stiffness * depth * depth;

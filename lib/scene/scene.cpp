@@ -123,7 +123,7 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
     if (config.self_collision)
         dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact,
                                                                      state_, memory,
-                                                                     &contact_loads(EffectId::self_collision)));
+                                                                     contact_loads(EffectId::self_collision)));
 
     const auto kind = static_cast<mechanics::IntegratorKind>(static_cast<int32_t>(solver_.integrator));
     integrator_ = make_integrator(kind, 3 * n, memory);
@@ -218,7 +218,7 @@ collision::SphereLoads& Scene::contact_loads(EffectId owner) {
 void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
     dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact,
                                                                  obstacles, state_, memory_,
-                                                                 &contact_loads(EffectId::environment)));
+                                                                 contact_loads(EffectId::environment)));
     obstacles_ += obstacles.size();
 }
 

@@ -9,13 +9,12 @@
 #include <optional>
 #include <vector>
 
+#include "base/geometry.h"
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
 #include "collision/tool.h"
 
 namespace enteron::scene {
-
-using Vec3 = std::array<double, 3>;
 
 enum class ShapeKind : int32_t { line = 0, serpentine = 1, helix = 2, points = 3 };
 enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2 };

@@ -12,11 +12,14 @@
 #include "collision/contact_model.h"
 #include "collision/environment_force.h"
 #include "collision/obstacle.h"
+#include "collision/sphere_loads.h"
 #include "mechanics/state.h"
 #include "spline/catmull_rom.h"
 
 namespace {
 
+using enteron::point_at;
+using enteron::Vec3;
 using enteron::collision::CollisionSpheres;
 using enteron::collision::contact_force;
 using enteron::collision::ContactForce;
@@ -26,19 +29,16 @@ using enteron::collision::for_each_contact;
 using enteron::collision::Obstacle;
 using enteron::collision::ObstacleContact;
 using enteron::collision::ObstacleKind;
+using enteron::collision::SphereLoads;
 using enteron::mechanics::AxisModel;
 using enteron::mechanics::ContactSummary;
 using enteron::mechanics::State;
 namespace spline = enteron::spline;
 
-constexpr double kPi = 3.14159265358979323846;
+using enteron::kPi;
 constexpr double kRadius = 0.0125;
 
-double distance(const double* a, const double* b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-double norm(const double* a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double distance(const Vec3& a, const Vec3& b) { return (a - b).norm(); }
 
 // Control points along a planar spiral-ish curve (curvature varies along it): the point at
 // arc parameter u sits on a circle of radius rho(u) = rho0 (1 + 0.5 u / length) swept at a
@@ -64,13 +64,11 @@ double spline_length(const std::vector<double>& q, std::size_t segments = 0) {
     if (segments == 0) segments = n - 1;
     double length = 0.0;
     for (std::size_t s = 0; s < segments; ++s) {
-        double previous[3];
-        spline::evaluate(q.data(), spline::segment_weights(n, s, 0.0, spline::Derivative::value), previous);
+        Vec3 previous = spline::evaluate(q.data(), spline::segment_weights(n, s, 0.0, spline::Derivative::value));
         for (int k = 1; k <= 400; ++k) {
-            double p[3];
-            spline::evaluate(q.data(), spline::segment_weights(n, s, k / 400.0, spline::Derivative::value), p);
+            const Vec3 p = spline::evaluate(q.data(), spline::segment_weights(n, s, k / 400.0, spline::Derivative::value));
             length += distance(p, previous);
-            std::copy(p, p + 3, previous);
+            previous = p;
         }
     }
     return length;
@@ -112,8 +110,8 @@ TEST(CollisionSpheres, EvenlySpacedInArcLengthOnACurvedAxis) {
     EXPECT_LT(spacing_spread(spheres, &mean), 1.01);
     EXPECT_NEAR(mean * double(spheres.size() - 1), length, 0.01 * length);
     // The ends of the axis carry the first and the last sphere.
-    EXPECT_LT(distance(spheres[0].center, &q[0]), 1e-12);
-    EXPECT_LT(distance(spheres[spheres.size() - 1].center, &q[3 * (n - 1)]), 1e-12);
+    EXPECT_LT(distance(spheres[0].center, point_at(q.data(), 0)), 1e-12);
+    EXPECT_LT(distance(spheres[spheres.size() - 1].center, point_at(q.data(), n - 1)), 1e-12);
     // Arc lengths increase evenly from 0 to the length.
     EXPECT_EQ(spheres[0].arc_length, 0.0);
     EXPECT_NEAR(spheres[spheres.size() - 1].arc_length, length, 1e-3 * length);
@@ -143,7 +141,7 @@ TEST(CollisionSpheres, StillEvenWhenOneHalfOfTheAxisIsStretched) {
     std::size_t nearest = 0;
     double best = 1e300;
     for (std::size_t j = 0; j < count; ++j) {
-        const double d = distance(spheres[j].center, &stretched[3 * middle]);
+        const double d = distance(spheres[j].center, point_at(stretched.data(), middle));
         if (d < best) best = d, nearest = j;
     }
     EXPECT_NEAR(double(nearest), fraction * double(count - 1), 1.0);
@@ -152,20 +150,17 @@ TEST(CollisionSpheres, StillEvenWhenOneHalfOfTheAxisIsStretched) {
 
 // Distance from p to the spline, through a polyline of 2000 chords per segment (its own
 // chord error is below 1e-9 m here).
-double distance_to_spline(const std::vector<double>& q, const double* p) {
+double distance_to_spline(const std::vector<double>& q, const Vec3& p) {
     const std::size_t n = q.size() / 3;
     double best = 1e300;
     for (std::size_t s = 0; s + 1 < n; ++s) {
-        double a[3];
-        spline::evaluate(q.data(), spline::segment_weights(n, s, 0.0, spline::Derivative::value), a);
+        Vec3 a = spline::evaluate(q.data(), spline::segment_weights(n, s, 0.0, spline::Derivative::value));
         for (int k = 1; k <= 2000; ++k) {
-            double b[3];
-            spline::evaluate(q.data(), spline::segment_weights(n, s, k / 2000.0, spline::Derivative::value), b);
-            double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-            const double t = std::clamp(dot(ab, ap) / dot(ab, ab), 0.0, 1.0);
-            const double c[3] = {a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]};
-            best = std::min(best, distance(c, p));
-            std::copy(b, b + 3, a);
+            const Vec3 b = spline::evaluate(q.data(), spline::segment_weights(n, s, k / 2000.0, spline::Derivative::value));
+            const Vec3 ab = b - a;
+            const double t = std::clamp(ab.dot(p - a) / ab.squaredNorm(), 0.0, 1.0);
+            best = std::min(best, distance(a + t * ab, p));
+            a = b;
         }
     }
     return best;
@@ -182,9 +177,8 @@ TEST(CollisionSpheres, CentresLieOnTheSpline) {
     double max_second = 0.0;
     for (std::size_t s = 0; s + 1 < n; ++s)
         for (double t : {0.0, 1.0}) {  // P'' is linear in t: largest at an end
-            double second[3];
-            spline::evaluate(q.data(), spline::segment_weights(n, s, t, spline::Derivative::second), second);
-            max_second = std::max(max_second, norm(second));
+            const Vec3 second = spline::evaluate(q.data(), spline::segment_weights(n, s, t, spline::Derivative::second));
+            max_second = std::max(max_second, second.norm());
         }
     const double bound = max_second / (16.0 * 8.0);
     ASSERT_LT(bound, 0.02 * kRadius) << "the test curve should be smooth";
@@ -193,9 +187,7 @@ TEST(CollisionSpheres, CentresLieOnTheSpline) {
     for (std::size_t j = 0; j < spheres.size(); ++j) {
         worst = std::max(worst, distance_to_spline(q, spheres[j].center));
         // The weights that carry the sphere's force give back its centre.
-        double from_weights[3];
-        spline::evaluate(q.data(), spheres[j].weights, from_weights);
-        EXPECT_LT(distance(from_weights, spheres[j].center), 1e-12) << "sphere " << j;
+        EXPECT_LT(distance(spline::evaluate(q.data(), spheres[j].weights), spheres[j].center), 1e-12) << "sphere " << j;
         double weight_sum = 0.0;
         for (double w : spheres[j].weights.w) weight_sum += w;
         EXPECT_NEAR(weight_sum, 1.0, 1e-12) << "sphere " << j;
@@ -214,8 +206,7 @@ TEST(CollisionSpheres, VelocitiesFollowTheVelocitiesAndThePlacement) {
     auto expect_velocities = [&](const char* when) {
         const double* got = spheres.velocities(v.data());
         for (std::size_t j = 0; j < spheres.size(); ++j) {
-            double expected[3];
-            spline::evaluate(v.data(), spheres[j].weights, expected);
+            const Vec3 expected = spline::evaluate(v.data(), spheres[j].weights);
             for (int c = 0; c < 3; ++c) ASSERT_EQ(got[3 * j + c], expected[c]) << when << ", sphere " << j;
         }
     };
@@ -230,7 +221,7 @@ TEST(CollisionSpheres, VelocitiesFollowTheVelocitiesAndThePlacement) {
 
 // ---- obstacles -------------------------------------------------------------------------
 
-std::vector<ObstacleContact> contacts_of(const Obstacle& o, const double* p, double r) {
+std::vector<ObstacleContact> contacts_of(const Obstacle& o, const Vec3& p, double r) {
     std::vector<ObstacleContact> out;
     for_each_contact(o, p, r, [&](const ObstacleContact& c) { out.push_back(c); });
     return out;
@@ -254,24 +245,24 @@ TEST(Obstacle, BoxInsideWallsAndCorner) {
     const Obstacle o = box(1.0, 2.0, 3.0, 0.1, 0.2, 0.3);
     const double r = 0.01;
     // Well inside: nothing. Touching a wall exactly: nothing (depth 0).
-    const double inside[3] = {1.0, 2.0, 3.0};
+    const Vec3 inside(1.0, 2.0, 3.0);
     EXPECT_TRUE(contacts_of(o, inside, r).empty());
-    const double touching[3] = {1.09, 2.0, 3.0};
+    const Vec3 touching(1.09, 2.0, 3.0);
     EXPECT_TRUE(contacts_of(o, touching, r).empty());
     // One wall, the low z one: the sphere reaches 0.004 below the floor.
-    const double floor[3] = {1.0, 2.0, 3.0 - 0.3 + 0.006};
+    const Vec3 floor(1.0, 2.0, 3.0 - 0.3 + 0.006);
     auto c = contacts_of(o, floor, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.004, 1e-12);
     expect_normal(c[0], 0, 0, 1);
     // A centre beyond the wall is deeper than R, pushed back the same way.
-    const double beyond[3] = {1.0 - 0.1 - 0.002, 2.0, 3.0};
+    const Vec3 beyond(1.0 - 0.1 - 0.002, 2.0, 3.0);
     c = contacts_of(o, beyond, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.012, 1e-12);
     expect_normal(c[0], 1, 0, 0);
     // A corner (high x, low y, high z): three contacts, one per wall, each with its depth.
-    const double corner[3] = {1.0 + 0.096, 2.0 - 0.197, 3.0 + 0.292};
+    const Vec3 corner(1.0 + 0.096, 2.0 - 0.197, 3.0 + 0.292);
     c = contacts_of(o, corner, r);
     ASSERT_EQ(c.size(), 3u);
     std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.depth < b.depth; });
@@ -290,21 +281,21 @@ TEST(Obstacle, Plane) {
     o.extent = {0.0, 0.6, 0.8};  // unit, as the environment stores it
     const double r = 0.01;
     // A point 0.004 from the plane on the normal's side, moved along the plane too.
-    const double along[3] = {0.5, 0.8, -0.6};  // in the plane: along . n = 0
-    const double near[3] = {1.0 + along[0] + 0.004 * 0.0, 2.0 + along[1] + 0.004 * 0.6,
-                            3.0 + along[2] + 0.004 * 0.8};
+    const Vec3 along(0.5, 0.8, -0.6);  // in the plane: along . n = 0
+    const Vec3 near(1.0 + along[0] + 0.004 * 0.0, 2.0 + along[1] + 0.004 * 0.6,
+                            3.0 + along[2] + 0.004 * 0.8);
     auto c = contacts_of(o, near, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.006, 1e-12);
     expect_normal(c[0], 0, 0.6, 0.8);
     // Behind the plane: deeper than R, still pushed toward the normal's side.
-    const double behind[3] = {1.0, 2.0 - 0.003 * 0.6, 3.0 - 0.003 * 0.8};
+    const Vec3 behind(1.0, 2.0 - 0.003 * 0.6, 3.0 - 0.003 * 0.8);
     c = contacts_of(o, behind, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.013, 1e-12);
     expect_normal(c[0], 0, 0.6, 0.8);
     // Farther than R on the free side: nothing.
-    const double away[3] = {1.0, 2.0 + 0.011 * 0.6, 3.0 + 0.011 * 0.8};
+    const Vec3 away(1.0, 2.0 + 0.011 * 0.6, 3.0 + 0.011 * 0.8);
     EXPECT_TRUE(contacts_of(o, away, r).empty());
 }
 
@@ -315,12 +306,12 @@ TEST(Obstacle, Sphere) {
     o.radius = 0.05;
     const double r = 0.01;
     // 0.056 from the centre along (2, -1, 2) / 3: depth 0.05 + 0.01 - 0.056 = 0.004.
-    const double p[3] = {0.1 + 0.056 * 2 / 3.0, 0.2 - 0.056 / 3.0, 0.3 + 0.056 * 2 / 3.0};
+    const Vec3 p(0.1 + 0.056 * 2 / 3.0, 0.2 - 0.056 / 3.0, 0.3 + 0.056 * 2 / 3.0);
     auto c = contacts_of(o, p, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.004, 1e-12);
     expect_normal(c[0], 2 / 3.0, -1 / 3.0, 2 / 3.0);
-    const double apart[3] = {0.1, 0.2, 0.3 + 0.0601};
+    const Vec3 apart(0.1, 0.2, 0.3 + 0.0601);
     EXPECT_TRUE(contacts_of(o, apart, r).empty());
 }
 
@@ -332,34 +323,34 @@ TEST(Obstacle, CapsuleInteriorEndsAndAxis) {
     o.radius = 0.03;
     const double r = 0.01;
     // Beside the middle of the axis, 0.035 away along (0.6, 0, -0.8): depth 0.005.
-    const double side[3] = {0.035 * 0.6, 0.13, -0.035 * 0.8};
+    const Vec3 side(0.035 * 0.6, 0.13, -0.035 * 0.8);
     auto c = contacts_of(o, side, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.005, 1e-12);
     expect_normal(c[0], 0.6, 0.0, -0.8);
     // Beyond the end cap: measured from the end point, along (0, 0.8, 0.6).
-    const double past_end[3] = {0.0, 0.2 + 0.032 * 0.8, 0.032 * 0.6};
+    const Vec3 past_end(0.0, 0.2 + 0.032 * 0.8, 0.032 * 0.6);
     c = contacts_of(o, past_end, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.008, 1e-12);
     expect_normal(c[0], 0.0, 0.8, 0.6);
     // Before the start cap, straight along the axis.
-    const double before_start[3] = {0.0, -0.037, 0.0};
+    const Vec3 before_start(0.0, -0.037, 0.0);
     c = contacts_of(o, before_start, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.003, 1e-12);
     expect_normal(c[0], 0.0, -1.0, 0.0);
     // Beside the axis but farther than radius + r: nothing; near the end, off the cap: nothing.
-    const double apart[3] = {0.0401, 0.1, 0.0};
+    const Vec3 apart(0.0401, 0.1, 0.0);
     EXPECT_TRUE(contacts_of(o, apart, r).empty());
-    const double off_cap[3] = {0.03, 0.2 + 0.03, 0.0};  // 0.0424 from the end point
+    const Vec3 off_cap(0.03, 0.2 + 0.03, 0.0);  // 0.0424 from the end point
     EXPECT_TRUE(contacts_of(o, off_cap, r).empty());
     // A centre on the axis: full depth, and some unit normal, never NaN.
-    const double on_axis[3] = {0.0, 0.07, 0.0};
+    const Vec3 on_axis(0.0, 0.07, 0.0);
     c = contacts_of(o, on_axis, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.04, 1e-12);
-    EXPECT_NEAR(norm(c[0].normal), 1.0, 1e-12);
+    EXPECT_NEAR(c[0].normal.norm(), 1.0, 1e-12);
     // The same at the centre of a sphere obstacle.
     Obstacle s;
     s.kind = ObstacleKind::sphere;
@@ -368,17 +359,17 @@ TEST(Obstacle, CapsuleInteriorEndsAndAxis) {
     c = contacts_of(s, on_axis, r);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_NEAR(c[0].depth, 0.04, 1e-12);
-    EXPECT_NEAR(norm(c[0].normal), 1.0, 1e-12);
+    EXPECT_NEAR(c[0].normal.norm(), 1.0, 1e-12);
 }
 
 // ---- the contact law -------------------------------------------------------------------
 
 // A unit normal not along any axis, and velocities made of normal and tangential parts.
-const double kNormal[3] = {2 / 7.0, 3 / 7.0, 6 / 7.0};
-const double kTangent[3] = {3 / 7.0, -6 / 7.0, 2 / 7.0};  // unit, orthogonal to kNormal
+const Vec3 kNormal(2 / 7.0, 3 / 7.0, 6 / 7.0);
+const Vec3 kTangent(3 / 7.0, -6 / 7.0, 2 / 7.0);  // unit, orthogonal to kNormal
 
-void velocity(double normal_speed, double tangential_speed, double v[3]) {
-    for (int c = 0; c < 3; ++c) v[c] = normal_speed * kNormal[c] + tangential_speed * kTangent[c];
+Vec3 velocity(double normal_speed, double tangential_speed) {
+    return normal_speed * kNormal + tangential_speed * kTangent;
 }
 
 TEST(ContactForce, NeverPulls) {
@@ -387,13 +378,12 @@ TEST(ContactForce, NeverPulls) {
     // Separating fast: a damper on the whole normal speed would give 500 * 0.001 - 0.5 * 10
     // = -4.5 N, a pull; the law keeps the spring alone.
     for (double vn : {0.0, 0.1, 1.0, 10.0, 1e3}) {
-        double v[3];
-        velocity(vn, 0.05, v);
+        Vec3 v = velocity(vn, 0.05);
         const ContactForce f = contact_force(p, depth, kNormal, v);
         EXPECT_GE(f.normal_force, 0.0) << vn;
-        EXPECT_GE(dot(f.force, kNormal), 0.0) << vn;
+        EXPECT_GE(f.force.dot(kNormal), 0.0) << vn;
         EXPECT_NEAR(f.normal_force, p.stiffness * depth, 1e-12) << vn;
-        EXPECT_NEAR(dot(f.force, kNormal), f.normal_force, 1e-12) << vn;
+        EXPECT_NEAR(f.force.dot(kNormal), f.normal_force, 1e-12) << vn;
         EXPECT_EQ(f.damping, 0.0) << vn;
     }
 }
@@ -401,13 +391,12 @@ TEST(ContactForce, NeverPulls) {
 TEST(ContactForce, DampsOnlyWhileApproaching) {
     const ContactParameters p;
     const double depth = 0.002;
-    double v[3];
-    velocity(-0.4, 0.0, v);  // approaching at 0.4 m/s
+    Vec3 v = velocity(-0.4, 0.0);  // approaching at 0.4 m/s
     ContactForce f = contact_force(p, depth, kNormal, v);
     EXPECT_NEAR(f.normal_force, p.stiffness * depth + p.damping * 0.4, 1e-12);
     EXPECT_EQ(f.damping, p.damping);
     EXPECT_EQ(f.stiffness, p.stiffness);
-    velocity(+0.4, 0.0, v);  // separating at the same speed
+    v = velocity(+0.4, 0.0);  // separating at the same speed
     f = contact_force(p, depth, kNormal, v);
     EXPECT_NEAR(f.normal_force, p.stiffness * depth, 1e-12);
     EXPECT_EQ(f.damping, 0.0);
@@ -420,15 +409,13 @@ TEST(ContactForce, FrictionOpposesSlidingAndIsBoundedByCoulomb) {
     const double depth = 0.003;
     for (double vn : {-0.2, 0.0, 0.3})
         for (double vt : {-5.0, -0.3, -0.01, -1e-4, 1e-4, 0.002, 0.01, 0.1, 2.0}) {
-            double v[3];
-            velocity(vn, vt, v);
+            Vec3 v = velocity(vn, vt);
             const ContactForce f = contact_force(p, depth, kNormal, v);
-            double tangential[3];
-            const double fn = dot(f.force, kNormal);
-            for (int c = 0; c < 3; ++c) tangential[c] = f.force[c] - fn * kNormal[c];
-            const double ft = dot(tangential, kTangent);
+            const double fn = f.force.dot(kNormal);
+            const Vec3 tangential = f.force - fn * kNormal;
+            const double ft = tangential.dot(kTangent);
             // Along the sliding direction only, against it, at most mu f_n.
-            EXPECT_NEAR(norm(tangential), std::fabs(ft), 1e-12);
+            EXPECT_NEAR(tangential.norm(), std::fabs(ft), 1e-12);
             EXPECT_LT(ft * vt, 0.0) << vn << " " << vt;
             EXPECT_LE(std::fabs(ft), p.friction * f.normal_force * (1.0 + 1e-12)) << vn << " " << vt;
             // Fast sliding: nearly the full Coulomb force; slow: viscous, about mu f_n vt / slip.
@@ -442,10 +429,9 @@ TEST(ContactForce, FrictionOpposesSlidingAndIsBoundedByCoulomb) {
         }
     // Without friction there is no tangential force at all.
     p.friction = 0.0;
-    double v[3];
-    velocity(-0.1, 1.0, v);
+    Vec3 v = velocity(-0.1, 1.0);
     const ContactForce f = contact_force(p, depth, kNormal, v);
-    EXPECT_NEAR(dot(f.force, kTangent), 0.0, 1e-15);
+    EXPECT_NEAR(f.force.dot(kTangent), 0.0, 1e-15);
 }
 
 // ---- the environment effect ------------------------------------------------------------
@@ -469,9 +455,16 @@ TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForce
     plane.extent = {0.0, 0.0, 3.0};  // not unit: the effect normalises it
     const ContactParameters contact;
     CollisionSpheres axis_spheres(model.control_points, length, 0.5 * kRadius, kRadius, std::pmr::new_delete_resource());
-    EnvironmentForce effect(axis_spheres, contact, {plane}, state, std::pmr::new_delete_resource());
+    SphereLoads loads(axis_spheres, std::pmr::new_delete_resource());
+    EnvironmentForce effect(axis_spheres, contact, {plane}, state, std::pmr::new_delete_resource(), loads);
+    // What Dynamics does with the loads the contact effects share.
+    const auto evaluate = [&](std::vector<double>& force) {
+        loads.clear();
+        effect.evaluate(state, force.data(), nullptr);
+        loads.apply(force.data(), nullptr);
+    };
     std::vector<double> force(3 * n, 0.0);
-    effect.evaluate(state, force.data(), nullptr);
+    evaluate(force);
     ContactSummary summary;
     effect.add_contacts(summary);
     const std::size_t spheres = 65;  // 0.4 / 0.00625 + 1
@@ -489,7 +482,7 @@ TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForce
     // Lifted clear of the plane: no contact, no force, no energy.
     for (std::size_t i = 0; i < n; ++i) state.q[3 * i + 2] = kRadius + 1e-6;
     std::fill(force.begin(), force.end(), 0.0);
-    effect.evaluate(state, force.data(), nullptr);
+    evaluate(force);
     ContactSummary none;
     effect.add_contacts(none);
     EXPECT_EQ(none.count, 0u);
@@ -502,7 +495,7 @@ TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForce
     Obstacle floor_above = plane;
     floor_above.center = {0.0, 0.0, 2e-6};
     effect.add_obstacle(floor_above);
-    effect.evaluate(state, force.data(), nullptr);
+    evaluate(force);
     ContactSummary after;
     effect.add_contacts(after);
     EXPECT_EQ(after.count, spheres);

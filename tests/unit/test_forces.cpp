@@ -190,7 +190,7 @@ TEST(BendForce, LinearizationIsTheJacobian) {
 }
 
 TEST(GravityForce, ForceIsMinusTheGradientAndSumsToTheWeight) {
-    const std::array<double, 3> g{0.5, -1.0, -9.81};
+    const enteron::Vec3 g(0.5, -1.0, -9.81);
     mech::GravityForce gravity(model(), g, std::pmr::get_default_resource());
     const mech::State s = stretched_state(35);
     expect_force_is_minus_gradient(gravity, s, 1e-8);

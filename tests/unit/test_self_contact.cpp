@@ -32,6 +32,14 @@ using enteron::mechanics::AxisModel;
 using enteron::mechanics::ContactSummary;
 using enteron::mechanics::State;
 
+// What Dynamics does for a contact effect: clears the loads it shares, evaluates, applies them.
+void evaluate_with_loads(enteron::mechanics::Effect& effect, SphereLoads& loads, const State& state, double* force,
+                         const enteron::mechanics::Linearization* lin) {
+    loads.clear();
+    effect.evaluate(state, force, lin);
+    loads.apply(force, lin);
+}
+
 TEST(SpatialHash, CandidatePairsCoverBruteForceAndRepeatNone) {
     std::mt19937 random(7);
     for (int trial = 0; trial < 20; ++trial) {
@@ -76,7 +84,7 @@ TEST(SpatialHash, PointsRefiledOneByOneFindTheSamePairsAsARebuild) {
     for (int round = 0; round < 10; ++round) {
         for (std::size_t i = round % 3; i < count; i += 2) {  // some move a little, some across cells
             for (int c = 0; c < 3; ++c) points[3 * i + c] += (i % 5 == 0 ? 4.0 : 1.0) * step(random);
-            moved.move(i, &points[3 * i]);
+            moved.move(i, enteron::point_at(points.data(), i));
         }
         SpatialHash rebuilt(count, cell, std::pmr::new_delete_resource());
         rebuilt.build(points.data(), count, 3);
@@ -126,9 +134,10 @@ struct Axis {
     // Contacts and generalised force of the self-contact effect on this axis.
     ContactSummary contacts(std::vector<double>* force = nullptr) const {
         CollisionSpheres spheres = make_spheres();
-        SelfContactForce effect(spheres, ContactParameters{}, state, std::pmr::new_delete_resource());
+        SphereLoads loads(spheres, std::pmr::new_delete_resource());
+        SelfContactForce effect(spheres, ContactParameters{}, state, std::pmr::new_delete_resource(), loads);
         std::vector<double> f(state.q.size(), 0.0);
-        effect.evaluate(state, f.data(), nullptr);
+        evaluate_with_loads(effect, loads, state, f.data(), nullptr);
         if (force != nullptr) *force = f;
         ContactSummary summary;
         effect.add_contacts(summary);
@@ -239,9 +248,9 @@ std::vector<double> crumpled_points(std::mt19937& random, double half_box) {
 }
 
 // The effect that lived through the moves gives the contacts and forces of a new one.
-void expect_same_as_fresh(SelfContactForce& kept, const Axis& axis, int move) {
+void expect_same_as_fresh(SelfContactForce& kept, SphereLoads& loads, const Axis& axis, int move) {
     std::vector<double> f_kept(axis.state.q.size(), 0.0), f_fresh;
-    kept.evaluate(axis.state, f_kept.data(), nullptr);
+    evaluate_with_loads(kept, loads, axis.state, f_kept.data(), nullptr);
     ContactSummary with_kept;
     kept.add_contacts(with_kept);
     const ContactSummary fresh = axis.contacts(&f_fresh);
@@ -258,10 +267,12 @@ struct Crumpled {
         : random(seed),
           axis(crumpled_points(random, half_box)),
           spheres(axis.make_spheres()),
-          kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource()) {}
+          loads(spheres, std::pmr::new_delete_resource()),
+          kept(spheres, ContactParameters{}, axis.state, std::pmr::new_delete_resource(), loads) {}
     std::mt19937 random;
     Axis axis;
     CollisionSpheres spheres;
+    SphereLoads loads;
     SelfContactForce kept;
 };
 
@@ -270,12 +281,12 @@ TEST(SelfContact, TheKeptListOfNearPairsFindsWhatAFreshSearchFinds) {
     // that lives through the moves (and searches its grid again only when a sphere has
     // moved R / 6) must give the same contacts and forces as a new effect each time.
     Crumpled crumpled(11, 0.08);
-    auto& [random, axis, spheres, kept] = crumpled;
+    auto& [random, axis, spheres, loads, kept] = crumpled;
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     const int moves = 60;
     for (int move = 0; move < moves; ++move) {
         for (double& q : axis.state.q) q += 0.00015 * unit(random);  // up to 0.15 mm a move
-        expect_same_as_fresh(kept, axis, move);
+        expect_same_as_fresh(kept, loads, axis, move);
         if (HasFatalFailure()) return;
     }
     // 60 moves of up to 0.15 mm per coordinate (which also change the length, and so slide
@@ -290,19 +301,19 @@ TEST(SelfContact, AStateThatIsNotFiniteLeavesNoContactBehind) {
     // NaN from there on) is evaluated and then rolled back: the spheres must search again at the finite state,
     // with the contacts and forces of a fresh search, however the NaN state was filed.
     Crumpled crumpled(17, 0.1);
-    auto& [random, axis, spheres, kept] = crumpled;
-    expect_same_as_fresh(kept, axis, 0);
+    auto& [random, axis, spheres, loads, kept] = crumpled;
+    expect_same_as_fresh(kept, loads, axis, 0);
     const State finite = axis.state;
     State blown = finite;
     blown.q[3 * 50] = std::numeric_limits<double>::quiet_NaN();
     kept.potential_energy(blown);
     std::vector<double> f(blown.q.size(), 0.0);
-    kept.evaluate(blown, f.data(), nullptr);
+    evaluate_with_loads(kept, loads, blown, f.data(), nullptr);
     axis.state = finite;
-    expect_same_as_fresh(kept, axis, 1);
+    expect_same_as_fresh(kept, loads, axis, 1);
     // And after a small move from there.
     for (double& q : axis.state.q) q += 1e-4;
-    expect_same_as_fresh(kept, axis, 2);
+    expect_same_as_fresh(kept, loads, axis, 2);
 }
 
 TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
@@ -314,7 +325,7 @@ TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
     // their own, the rest keep their pairs, and the contacts and forces must equal a fresh
     // search at every move.
     Crumpled crumpled(5, 0.1);
-    auto& [random, axis, spheres, kept] = crumpled;
+    auto& [random, axis, spheres, loads, kept] = crumpled;
     const double angle = 0.02;  // rad a move, about z through control point 83
     const double pivot[2] = {axis.state.q[3 * 83], axis.state.q[3 * 83 + 1]};
     const int moves = 40;
@@ -324,7 +335,7 @@ TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
             axis.state.q[3 * i] = pivot[0] + std::cos(angle) * x - std::sin(angle) * y;
             axis.state.q[3 * i + 1] = pivot[1] + std::sin(angle) * x + std::cos(angle) * y;
         }
-        expect_same_as_fresh(kept, axis, move);
+        expect_same_as_fresh(kept, loads, axis, move);
         if (HasFatalFailure()) return;
     }
     std::cout << "[ near pairs ] " << kept.moved_sphere_searches() << " searches of moved spheres, "
@@ -365,14 +376,15 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
         return r;
     };
 
-    // Each effect with its own loads, applied in its evaluate.
+    // Each effect with loads of its own, applied after it.
     CollisionSpheres spheres_apart = axis.make_spheres();
-    EnvironmentForce floor_apart(spheres_apart, contact, obstacles, axis.state, memory);
-    SelfContactForce self_apart(spheres_apart, contact, axis.state, memory);
+    SphereLoads floor_loads(spheres_apart, memory), self_loads(spheres_apart, memory);
+    EnvironmentForce floor_apart(spheres_apart, contact, obstacles, axis.state, memory, floor_loads);
+    SelfContactForce self_apart(spheres_apart, contact, axis.state, memory, self_loads);
     Result apart = fresh();
     mech::Linearization lin_apart{&apart.system, h, apart.hv.data()};
-    floor_apart.evaluate(axis.state, apart.force.data(), &lin_apart);
-    self_apart.evaluate(axis.state, apart.force.data(), &lin_apart);
+    evaluate_with_loads(floor_apart, floor_loads, axis.state, apart.force.data(), &lin_apart);
+    evaluate_with_loads(self_apart, self_loads, axis.state, apart.force.data(), &lin_apart);
     ContactSummary contacts;
     floor_apart.add_contacts(contacts);
     self_apart.add_contacts(contacts);
@@ -381,8 +393,8 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
     // Both into one set of loads: nothing reaches the forces until the loads are applied.
     CollisionSpheres spheres_shared = axis.make_spheres();
     SphereLoads loads(spheres_shared, memory);
-    EnvironmentForce floor_shared(spheres_shared, contact, obstacles, axis.state, memory, &loads);
-    SelfContactForce self_shared(spheres_shared, contact, axis.state, memory, &loads);
+    EnvironmentForce floor_shared(spheres_shared, contact, obstacles, axis.state, memory, loads);
+    SelfContactForce self_shared(spheres_shared, contact, axis.state, memory, loads);
     Result shared = fresh();
     mech::Linearization lin_shared{&shared.system, h, shared.hv.data()};
     loads.clear();
@@ -396,9 +408,9 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
     SphereLoads dynamics_loads(spheres_dynamics, memory);
     mech::Dynamics dynamics(axis.model, memory);
     dynamics.add_effect(enteron::make_owned<EnvironmentForce>(memory, spheres_dynamics, contact, obstacles,
-                                                              axis.state, memory, &dynamics_loads));
+                                                              axis.state, memory, dynamics_loads));
     dynamics.add_effect(enteron::make_owned<SelfContactForce>(memory, spheres_dynamics, contact, axis.state, memory,
-                                                              &dynamics_loads));
+                                                              dynamics_loads));
     dynamics.add_shared_loads(&dynamics_loads, enteron::EffectId::self_collision);
     dynamics.finalize();
     Result through = fresh();

@@ -25,6 +25,8 @@
 namespace {
 
 using namespace enteron::skinning;
+using enteron::normalized_or;
+using enteron::Vec3;
 using skin_test::kPi;
 
 constexpr double R = 0.0125;
@@ -96,8 +98,8 @@ TEST(SegmentKernel, MatchesNumericalIntegralOf1OverR3) {
     for (int i = 0; i < n; ++i) {
         const double t = (i + 0.5) / n;
         const Vec3 x = a + t * (b - a);
-        const double r = norm(p - x);
-        sum += norm(b - a) / n / (r * r * r);
+        const double r = (p - x).norm();
+        sum += (b - a).norm() / n / (r * r * r);
     }
     EXPECT_NEAR(segment_field(p, a, b), sum, 1e-8 * sum);
     // Additive: two halves make the whole.
@@ -115,16 +117,16 @@ TEST(RotationMinimizingFrames, StayOrthonormalAndDoNotTwistOnAPlanarCurve) {
     }
     for (std::size_t i = 0; i < x.size(); ++i) {
         const Vec3 d = x[std::min(i + 1, x.size() - 1)] - x[i == 0 ? 0 : i - 1];
-        t.push_back(normalized(d, Vec3{1, 0, 0}));
+        t.push_back(normalized_or(d, Vec3{1, 0, 0}));
     }
     RotationMinimizingFrames frames;
     frames.build(x.data(), t.data(), x.size());
     // The first normal is arbitrary; rotate the test to its plane component.
-    const double z0 = frames.normal(0).z;
+    const double z0 = frames.normal(0).z();
     for (std::size_t i = 0; i < x.size(); ++i) {
-        EXPECT_NEAR(dot(frames.normal(i), t[i]), 0.0, 1e-12);
-        EXPECT_NEAR(norm(frames.normal(i)), 1.0, 1e-12);
-        EXPECT_NEAR(frames.normal(i).z, z0, 1e-9) << "twist at sample " << i;
+        EXPECT_NEAR(frames.normal(i).dot(t[i]), 0.0, 1e-12);
+        EXPECT_NEAR(frames.normal(i).norm(), 1.0, 1e-12);
+        EXPECT_NEAR(frames.normal(i).z(), z0, 1e-9) << "twist at sample " << i;
     }
 }
 
@@ -141,7 +143,7 @@ TEST(MarchingCubesTable, EverySingleCornerCaseFacesAwayFromTheInsideCorner) {
             p[k] = 0.5 * (a + b);
         }
         const Vec3 corner{double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1)};
-        EXPECT_LT(dot(cross(p[1] - p[0], p[2] - p[0]), corner - p[0]), 0.0) << "case " << (1 << c);
+        EXPECT_LT((p[1] - p[0]).cross(p[2] - p[0]).dot(corner - p[0]), 0.0) << "case " << (1 << c);
     }
     // Complementary cases have the same number of crossing edges.
     for (int mask = 0; mask < 256; ++mask)
