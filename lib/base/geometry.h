@@ -5,7 +5,8 @@
 // Private to the library: Eigen appears in no public header and no exported symbol.
 // Two rules keep the bits of the hand-written loops this replaced (the library builds with
 // -ffp-contract=off, so Eigen's expressions round like the loops did):
-//  - a.dot(b) and a.squaredNorm() sum x, y, z in that order, like the loops;
+//  - a.dot(b) and a.squaredNorm() sum x, y, z in that order, like the loops (Eigen's SSE2
+//    path, (x + y) + z; its scalar path would sum x + (y + z));
 //  - a.normalized() divides each coordinate by the norm, where most of our laws multiply
 //    by the inverse norm: write `d * (1.0 / length)` where the law says so.
 #pragma once

@@ -26,9 +26,9 @@ inline double segment_field(Vec3 p, Vec3 a, Vec3 b) {
     const double xa = -w.dot(e);  // abscissa of a from the foot H (b is at xa + length)
     const Vec3 off_line = w + xa * e;
     // P on the line itself (never on a surface of radius R > 0): keep the field finite.
-    const double h2 = std::max(off_line.squaredNorm(), 1e-12 * length2);
+    const double h_squared = std::max(off_line.squaredNorm(), 1e-12 * length2);
     const double xb = xa + length;
-    return (xb / std::sqrt(h2 + xb * xb) - xa / std::sqrt(h2 + xa * xa)) / h2;
+    return (xb / std::sqrt(h_squared + xb * xb) - xa / std::sqrt(h_squared + xa * xa)) / h_squared;
 }
 
 }  // namespace enteron::skinning
