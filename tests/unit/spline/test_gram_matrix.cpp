@@ -4,11 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <random>
 #include <vector>
 
-#include "spline_reference.h"
+#include "spline/spline_reference.h"
 
 namespace {
 

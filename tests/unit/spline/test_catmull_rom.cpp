@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "spline_reference.h"
+#include "spline/spline_reference.h"
 
 namespace {
 
