@@ -10,10 +10,11 @@ void ToolMailbox::post_pose(const ToolPose& pose) {
         // A slot that another post is writing, or that holds a later post, is not ours.
         if (seen % 2 == 1 || seen / 2 > ticket) continue;
         if (!slot.sequence.compare_exchange_strong(seen, 2 * ticket - 1, std::memory_order_relaxed)) continue;
-        // The claim is visible before any value changes (seqlock writer).
-        std::atomic_thread_fence(std::memory_order_release);
-        for (std::size_t c = 0; c < 3; ++c) slot.values[c].store(pose.position[c], std::memory_order_relaxed);
-        for (std::size_t c = 0; c < 4; ++c) slot.values[3 + c].store(pose.orientation[c], std::memory_order_relaxed);
+        // Release stores (free on x86): a reader that sees any of these values also sees the
+        // claim when it reads the sequence again, and retries (a seqlock without fences,
+        // which ThreadSanitizer can follow).
+        for (std::size_t c = 0; c < 3; ++c) slot.values[c].store(pose.position[c], std::memory_order_release);
+        for (std::size_t c = 0; c < 4; ++c) slot.values[3 + c].store(pose.orientation[c], std::memory_order_release);
         slot.sequence.store(2 * ticket, std::memory_order_release);
         return;
     }
@@ -36,10 +37,9 @@ bool ToolMailbox::take_pose(ToolPose& pose) {
         }
         if (newest == nullptr) return false;
         ToolPose copy;
-        for (std::size_t c = 0; c < 3; ++c) copy.position[c] = newest->values[c].load(std::memory_order_relaxed);
+        for (std::size_t c = 0; c < 3; ++c) copy.position[c] = newest->values[c].load(std::memory_order_acquire);
         for (std::size_t c = 0; c < 4; ++c)
-            copy.orientation[c] = newest->values[3 + c].load(std::memory_order_relaxed);
-        std::atomic_thread_fence(std::memory_order_acquire);
+            copy.orientation[c] = newest->values[3 + c].load(std::memory_order_acquire);
         if (newest->sequence.load(std::memory_order_relaxed) != newest_sequence) continue;  // overwritten
         taken_ = newest_sequence / 2;
         pose = copy;

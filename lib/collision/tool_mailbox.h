@@ -6,7 +6,8 @@
 // Posting is wait-free, also from several threads at once: a post takes a ticket (one
 // atomic increment) and writes its pose into a slot of a small ring under a per-slot
 // sequence number (a seqlock whose writer claims the slot by compare-and-swap, so that two
-// posts never write one slot together). The last post wins, in the order the posts took
+// posts never write one slot together; its values are atomics stored with release and
+// loaded with acquire, so it needs no fence). The last post wins, in the order the posts took
 // their tickets: the stepping thread takes the newest complete post and ignores an older
 // one that completes later. With fewer than kSlots posts in flight at once (one haptic
 // thread and a script, say), a post always finds a slot; a post that finds every slot busy

@@ -7,6 +7,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -22,6 +23,13 @@ inline std::string format_number(double value) {
     char text[32];
     const auto result = std::to_chars(text, text + sizeof text, value);
     return std::string(text, result.ptr);
+}
+
+// A measured quantity in a message, to three significant digits ("0.979", "512").
+inline std::string format_rounded(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
 }
 
 template <typename Integer, typename = std::enable_if_t<std::is_integral_v<Integer>>>

@@ -121,8 +121,8 @@ void check_clearance(const collision::Obstacle& o, const std::string& name, Erro
     const double escape = (deepest + clearance.radius) * clearance.escape_rate;
     throw Error(code, name + " (" + obstacle_kind_name(o.kind) + ") has control points " + index_ranges(stuck) +
                           " (" + std::to_string(stuck.size()) + " of " + std::to_string(count) + ") " + where +
-                          ", up to " + format_number(deepest) + " m beyond its surface: its contacts would throw them "
-                          "out at up to " + format_number(escape) + " m/s, past the guard's max_speed (" +
+                          ", up to " + format_rounded(deepest) + " m beyond its surface: its contacts would throw them "
+                          "out at up to " + format_rounded(escape) + " m/s, past the guard's max_speed (" +
                           format_number(clearance.max_speed) + " m/s), so the scene cannot start. Move the obstacle "
                           "or the bowel's shape so that the bowel starts " +
                           (organ ? "outside every organ" : "within the cavity"));
