@@ -252,15 +252,15 @@ std::string Scene::unstable_message(double dt, std::size_t substeps) {
                 std::snprintf(what, sizeof what, "non-finite: control point %zu's position or velocity became NaN or "
                               "infinite", point);
             else
-                std::snprintf(what, sizeof what, "non-finite: the energy became %g J", finding.value);
+                std::snprintf(what, sizeof what, "non-finite: the energy became %.3g J", finding.value);
             break;
         case GuardCheck::speed:
-            std::snprintf(what, sizeof what, "speed: control point %zu moved at %g m/s, %.3g times max_speed (%g m/s)",
+            std::snprintf(what, sizeof what, "speed: control point %zu moved at %.3g m/s, %.3g times max_speed (%g m/s)",
                           point, finding.value, finding.value / finding.limit, finding.limit);
             break;
         case GuardCheck::energy:
             std::snprintf(what, sizeof what,
-                          "energy: the bowel gained %g J in the step, %g J more than the %g J allowed (fastest: "
+                          "energy: the bowel gained %.3g J in the step, %.3g J more than the %.3g J allowed (fastest: "
                           "control point %zu)", finding.value, finding.value - finding.limit, finding.limit, point);
             break;
         case GuardCheck::passed: std::snprintf(what, sizeof what, "none"); break;
@@ -269,13 +269,13 @@ std::string Scene::unstable_message(double dt, std::size_t substeps) {
     const Dynamics::Culprit gain = finding.check == GuardCheck::energy ? dynamics_.largest_energy_gain(backup_, state_)
                                                                          : Dynamics::Culprit{};
     if (gain.found) {
-        std::snprintf(culprit, sizeof culprit, "; the largest gain was in %s's potential energy (%+g J)",
+        std::snprintf(culprit, sizeof culprit, "; the largest gain was in %s's potential energy (%+.3g J)",
                       effect_name(gain.effect), gain.amount);
     } else if (finding.check != GuardCheck::solver) {
         const Dynamics::Culprit force = dynamics_.strongest_force_at(backup_, point);
         if (force.found)
             std::snprintf(culprit, sizeof culprit,
-                          "; the largest force on control point %zu at the start of the step was %s's (%g N)", point,
+                          "; the largest force on control point %zu at the start of the step was %s's (%.3g N)", point,
                           effect_name(force.effect), force.amount);
     }
     char message[700];
