@@ -29,8 +29,8 @@ using enteron::collision::ToolMailbox;
 }
 
 // The mailbox of a tool id, or NOT_FOUND naming it. Any thread.
-ToolMailbox& mailbox_of(const SceneHandle& handle, int32_t tool) {
-    const enteron::collision::ToolChannels& channels = handle.scene->tool_channels();
+ToolMailbox& mailbox_of(SceneHandle& handle, int32_t tool) {
+    enteron::collision::ToolChannels& channels = handle.scene->tool_channels();
     ToolMailbox* mailbox = tool >= 0 ? channels.mailbox(static_cast<std::size_t>(tool)) : nullptr;
     if (mailbox == nullptr) unknown_tool(tool, channels.size());
     return *mailbox;
@@ -100,7 +100,7 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
 ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const double position_m[3],
                                      const double orientation_wxyz[4]) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        SceneHandle& handle = live_handle(scene);
         require(position_m, "position_m");
         require(orientation_wxyz, "orientation_wxyz");
         ToolMailbox& mailbox = mailbox_of(handle, tool);

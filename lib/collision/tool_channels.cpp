@@ -8,7 +8,7 @@ ToolChannels::ToolChannels(std::pmr::memory_resource* memory)
     table_.store(tables_.back().get(), std::memory_order_release);
 }
 
-ToolMailbox* ToolChannels::mailbox(std::size_t index) const {
+ToolMailbox* ToolChannels::mailbox(std::size_t index) {
     const Table& table = *table_.load(std::memory_order_acquire);
     return index < table.size() ? table[index] : nullptr;
 }

@@ -29,7 +29,7 @@ public:
     // Any thread: the number of tools, and the mailbox of tool `index` (null if there is
     // no such tool).
     std::size_t size() const { return table_.load(std::memory_order_acquire)->size(); }
-    ToolMailbox* mailbox(std::size_t index) const;
+    ToolMailbox* mailbox(std::size_t index);
 
     // The driving thread only. add() makes the channels of one more tool (allocates) and
     // returns its index; outputs() are the tools' outputs, by index.

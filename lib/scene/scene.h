@@ -56,7 +56,7 @@ public:
     std::size_t add_tool(const collision::ToolConfig& tool);
     // The tools' mailboxes: any thread posts poses, grasps and releases here; the next step
     // takes them (tool_channels.h).
-    const collision::ToolChannels& tool_channels() const { return tool_channels_; }
+    collision::ToolChannels& tool_channels() { return tool_channels_; }
 
     // How deep beyond an obstacle's surface the bowel may be and still start (validate.h),
     // for an obstacle added later.
