@@ -8,9 +8,9 @@
 
 The arrays of mesh() are copies of the skin's buffers (the C API's view is valid only
 until the next update or destroy): read-only, and valid for as long as they live, after
-the skin's next update(), its close() or its scene's close(). Copying costs about a
-memcpy of the mesh (a millisecond for the 6 m bowel's convolution skin or less); call
-mesh() once per update.
+the skin's next update(), its close() or its scene's close(). Copying costs a memcpy of
+the mesh (27 us measured for the default convolution skin of the 6 m bowel, 15474
+vertices, against milliseconds for its update); call mesh() once per update.
 """
 import ctypes
 import dataclasses
