@@ -26,6 +26,28 @@ struct ObstacleContact {
     Vec3 normal;   // unit, out of the obstacle
 };
 
+// The point of a sphere obstacle's centre, or of a capsule's axis segment, closest to p.
+inline Vec3 closest_core_point(const Obstacle& o, const Vec3& p) {
+    if (o.kind != ObstacleKind::capsule) return o.center;
+    const Vec3 axis = o.extent - o.center;
+    const double axis2 = axis.squaredNorm();
+    const double t = axis2 > 0.0 ? std::min(1.0, std::max(0.0, axis.dot(p - o.center) / axis2)) : 0.0;
+    return o.center + t * axis;
+}
+
+// How far the point p lies beyond the obstacle's surface, m (<= 0: on the bowel's side):
+// outside the box_inside, behind the plane (its normal need not be unit), inside the sphere
+// or capsule.
+inline double beyond_surface(const Obstacle& o, const Vec3& p) {
+    switch (o.kind) {
+        case ObstacleKind::box_inside: return ((p - o.center).cwiseAbs() - o.extent).maxCoeff();
+        case ObstacleKind::plane: return -(p - o.center).dot(o.extent) / o.extent.norm();
+        case ObstacleKind::sphere:
+        case ObstacleKind::capsule: return o.radius - (p - closest_core_point(o, p)).norm();
+    }
+    return 0.0;
+}
+
 // Calls on_contact(const ObstacleContact&) for each contact of a sphere (centre p,
 // radius r) with the obstacle: up to three for a box corner, at most one otherwise.
 // Always inlined: the environment calls it for every sphere and obstacle, and the call
@@ -53,15 +75,7 @@ template <class OnContact>
         }
         case ObstacleKind::sphere:
         case ObstacleKind::capsule: {
-            // Closest point of the sphere's centre or the capsule's axis segment.
-            Vec3 closest = o.center;
-            if (o.kind == ObstacleKind::capsule) {
-                const Vec3 axis = o.extent - o.center;
-                const double axis2 = axis.squaredNorm();
-                const double t = axis2 > 0.0 ? std::min(1.0, std::max(0.0, axis.dot(p - o.center) / axis2)) : 0.0;
-                closest += t * axis;
-            }
-            const Vec3 d = p - closest;
+            const Vec3 d = p - closest_core_point(o, p);
             const double distance = d.norm();
             const double depth = o.radius + r - distance;
             if (!(depth > 0.0)) return;

@@ -19,6 +19,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
 #include "collision/collision_spheres.h"
 #include "collision/contact_model.h"
 #include "collision/tool.h"
@@ -73,13 +74,16 @@ private:
     struct Hit {
         std::size_t sphere;
         ContactForce force;  // on the bowel
-        double normal[3];
+        Vec3 normal;
         double depth;
-        double point[3];  // contact point on the tool's surface
+        Vec3 point;  // contact point on the tool's surface
     };
-    // Tip, back end of the shaft, and their velocities at time t.
-    void segment_at(const Tool& tool, double t, double tip[3], double tail[3], double tip_v[3],
-                    double tail_v[3]) const;
+    // A tool's shaft at one instant: its tip and back end, and their velocities.
+    struct Segment {
+        Vec3 tip, tail;                    // m
+        Vec3 tip_velocity, tail_velocity;  // m/s
+    };
+    Segment segment_at(const Tool& tool, double t) const;
     double fraction_of_step(double t) const;
     // Grasps the axis point nearest the tip within reach, if any.
     void grasp(Tool& tool, const mechanics::State& state);

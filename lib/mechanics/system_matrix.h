@@ -64,11 +64,6 @@ inline void add_point_force(const spline::SegmentWeights& weights, const Vec3& f
         for (int c = 0; c < 3; ++c) o[3 * k + c] += w[k] * g[c];
 }
 
-// The same for f given as three doubles (the tools' code until it speaks Vec3).
-inline void add_point_force(const spline::SegmentWeights& weights, const double f[3], double* out) {
-    add_point_force(weights, Vec3(f[0], f[1], f[2]), out);
-}
-
 // add_point_force for two spline points on the same four control points (the two Gauss
 // nodes of a segment): each coordinate of `out` is read and written once.
 inline void add_point_force_pair(const spline::SegmentWeights& weights0, const Vec3& f0,

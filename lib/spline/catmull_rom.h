@@ -103,9 +103,4 @@ inline Vec3 evaluate(const double* points_xyz, const SegmentWeights& weights) {
     return out;
 }
 
-// The same into out[3] (the tools' code until it speaks Vec3).
-inline void evaluate(const double* points_xyz, const SegmentWeights& weights, double out[3]) {
-    Eigen::Map<Vec3>{out} = evaluate(points_xyz, weights);
-}
-
 }  // namespace enteron::spline

@@ -294,7 +294,7 @@ TEST(JsonLoader, ToolsGiveEveryValue) {
     EXPECT_EQ(t.settings.grasp_margin, 0.003);
     EXPECT_EQ(t.settings.grasp_stiffness, 150.0);
     EXPECT_EQ(t.settings.grasp_damping, 1.5);
-    EXPECT_EQ(t.pose.position, (std::array<double, 3>{0.1, 0.2, 0.3}));
+    EXPECT_EQ(t.pose.position, (Vec3{0.1, 0.2, 0.3}));
     EXPECT_EQ(t.pose.orientation, (std::array<double, 4>{0.0, 1.0, 0.0, 0.0}));
     const collision::ToolConfig defaults;
     EXPECT_EQ(c.tools[1].settings.max_force, defaults.settings.max_force);
