@@ -243,7 +243,9 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
         // The spring energy as far as the bound lets the contacts push (evaluate's scale).
         energy += total_magnitude > tool.settings.max_force ? stored * tool.settings.max_force / total_magnitude
                                                             : stored;
-        if (tool.grasping) {
+        // A grasp that slipped in this step holds no spring at its end: the guard must not
+        // count the energy of the spring it let go of, however far the jump stretched it.
+        if (tool.grasping && !tool.slipped) {
             const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
             const double stretch = std::max(0.0, (segment.tip - p).norm() - (tool.settings.radius + r));
             energy += 0.5 * tool.settings.grasp_stiffness * stretch * stretch;

@@ -1,7 +1,8 @@
 // The tools effect (lib/collision/tools_force.h) on its own: the force of a tool on the
 // bowel and the wrench it reports are action and reaction, within max_force however deep
 // the tool presses, with the torque of the contact points about the tip; and a grasp
-// pulled past max_force slips: it adds no force and is let go when the step is accepted.
+// pulled past max_force slips: it adds no force and no energy, and is let go when the step
+// is accepted.
 #include "collision/tools_force.h"
 
 #include <gtest/gtest.h>
@@ -108,7 +109,7 @@ TEST(ToolsForce, TheWrenchIsMinusTheForceOnTheBowelAndNeverExceedsMaxForce) {
     }
 }
 
-TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForce) {
+TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
     Bench bench;
     // A vertical tool (the identity pose) whose tip touches the bowel's middle from above.
     ToolConfig tool;
@@ -132,6 +133,8 @@ TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForce) {
     // The grasp slipped: no force on the bowel (the tool is far above it) and no energy
     // stored in a spring that no longer holds, so the guard sees none appear.
     EXPECT_EQ(net_force(force).norm(), 0.0);
+    // Nor any energy: the spring it let go of stores none that the guard could count.
+    EXPECT_EQ(bench.tools.potential_energy(at_end), 0.0);
     bench.tools.end_step(true);
     EXPECT_FALSE(bench.channels.outputs()[0].grasping);
 }
