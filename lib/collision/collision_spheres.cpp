@@ -108,7 +108,7 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
     }
 }
 
-void CollisionSpheres::add_weight_products(double scale, spline::ScalarBandMatrix& bound) const {
+void CollisionSpheres::add_weight_products(double scale, numerics::ScalarBandMatrix& bound) const {
     for (const Sphere& sphere : spheres_) {
         const spline::SegmentWeights& sw = sphere.weights;
         for (int j = 0; j < 4; ++j)

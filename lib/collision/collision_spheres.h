@@ -51,7 +51,7 @@ public:
 
     // bound += scale * sum over spheres of w w^T (per coordinate): the stiffness bound of
     // a law of stiffness `scale` acting on every sphere at once.
-    void add_weight_products(double scale, spline::ScalarBandMatrix& bound) const;
+    void add_weight_products(double scale, numerics::ScalarBandMatrix& bound) const;
 
 private:
     static constexpr std::size_t kSamplesPerSegment = 4;  // polyline intervals per segment

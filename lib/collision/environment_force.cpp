@@ -87,11 +87,11 @@ double EnvironmentForce::max_contacts_per_sphere() const {
     return contacts;
 }
 
-void EnvironmentForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void EnvironmentForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     spheres_.add_weight_products(contact_.stiffness * max_contacts_per_sphere(), bound);
 }
 
-void EnvironmentForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void EnvironmentForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     const double friction = friction_damping_bound(contact_, spheres_.radius());
     spheres_.add_weight_products((contact_.damping + friction) * max_contacts_per_sphere(), bound);
 }

@@ -26,11 +26,11 @@ public:
                      const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
                      std::pmr::memory_resource* memory, SphereLoads& loads);
 
-    EffectId id() const override { return EffectId::environment; }
+    mechanics::EffectId id() const override { return mechanics::EffectId::environment; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
     double potential_energy(const mechanics::State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override { summary_add(summary); }
 
     // Adds an obstacle (validated; a plane's normal is normalised here). The caller

@@ -233,12 +233,12 @@ double SelfContactForce::potential_energy(const mechanics::State& state) const {
     return energy;
 }
 
-void SelfContactForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void SelfContactForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // A pair's stiffness k (w_a - w_b)(w_a - w_b)^T is at most 2k (w_a w_a^T + w_b w_b^T).
     spheres_.add_weight_products(2.0 * contact_.stiffness * kMaxContactsPerSphere, bound);
 }
 
-void SelfContactForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void SelfContactForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     const double friction = friction_damping_bound(contact_, spheres_.radius());
     spheres_.add_weight_products(2.0 * (contact_.damping + friction) * kMaxContactsPerSphere, bound);
 }

@@ -34,11 +34,11 @@ public:
     SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
                      std::pmr::memory_resource* memory, SphereLoads& loads);
 
-    EffectId id() const override { return EffectId::self_collision; }
+    mechanics::EffectId id() const override { return mechanics::EffectId::self_collision; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
     double potential_energy(const mechanics::State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
 
     // How many times the grid was searched: for every sphere (the list of near pairs

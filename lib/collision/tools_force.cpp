@@ -270,13 +270,13 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
     if (found) tool.grasping = true;
 }
 
-void ToolsForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void ToolsForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     double grasp = 0.0;
     for (const Tool& tool : tools_) grasp += tool.settings.grasp_stiffness;
     spheres_.add_weight_products(contact_.stiffness * double(tools_.size()) + grasp, bound);
 }
 
-void ToolsForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void ToolsForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     double grasp = 0.0;
     for (const Tool& tool : tools_) grasp += tool.settings.grasp_damping;
     const double friction = friction_damping_bound(contact_, spheres_.radius());

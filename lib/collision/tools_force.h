@@ -36,11 +36,11 @@ public:
     ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
                ToolChannels& channels, std::pmr::memory_resource* memory);
 
-    EffectId id() const override { return EffectId::tools; }
+    mechanics::EffectId id() const override { return mechanics::EffectId::tools; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
     double potential_energy(const mechanics::State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
     double external_work_bound() const override;
 

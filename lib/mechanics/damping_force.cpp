@@ -77,7 +77,7 @@ void DampingForce::add_constant_linearization(double h, SystemMatrix& system) co
     add_per_coordinate(constant_, h, system);
 }
 
-void DampingForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void DampingForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     bound.add_scaled(constant_, 1.0);
     spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
                             coefficients_.stretch / model_.rest_segment_length, bound);

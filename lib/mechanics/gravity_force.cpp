@@ -6,7 +6,7 @@ GravityForce::GravityForce(const AxisModel& model, const Vec3& gravity,
                            std::pmr::memory_resource* memory)
     : gravity_(gravity), lumped_mass_(memory) {
     const std::size_t n = model.control_points;
-    spline::ScalarBandMatrix mass(memory);
+    numerics::ScalarBandMatrix mass(memory);
     mass.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value,
                             model.linear_density * model.rest_segment_length, mass);

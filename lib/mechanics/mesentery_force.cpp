@@ -55,7 +55,7 @@ double MesenteryForce::potential_energy(const State& state) const {
     return energy;
 }
 
-void MesenteryForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void MesenteryForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // H <= k I for every spring, so per coordinate k w w^T bounds it.
     for (const Spring& spring : springs_) {
         const spline::SegmentWeights& sw = spring.weights;

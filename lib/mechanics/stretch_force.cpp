@@ -80,7 +80,7 @@ double StretchForce::potential_energy(const State& state) const {
     return energy;
 }
 
-void StretchForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void StretchForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // At a node H <= EA/l0 I: the transverse factor eps/|P'| = eps / (l0 (1 + eps)) stays
     // below 1/l0. Per coordinate that is EA/l0 times the first-derivative Gram matrix.
     spline::add_gram_matrix(model_.control_points, spline::Derivative::first,

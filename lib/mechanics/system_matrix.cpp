@@ -135,7 +135,7 @@ ENTERON_HOT_KERNEL void SegmentBlock::add_to(SystemMatrix& system) const {
 
 namespace enteron::mechanics {
 
-void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemMatrix& system) {
+void add_per_coordinate(const numerics::ScalarBandMatrix& b, double scale, SystemMatrix& system) {
     for (std::size_t i = 0; i < b.size(); ++i) {
         const std::size_t j0 = i >= 3 ? i - 3 : 0;
         for (std::size_t j = j0; j <= i; ++j) {

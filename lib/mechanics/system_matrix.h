@@ -82,6 +82,6 @@ namespace enteron::mechanics {
 
 // Adds scale * (B (x) I3) to the system: a per-coordinate matrix B (n x n, the same for
 // x, y and z) such as the mass, bending or drag matrix.
-void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemMatrix& system);
+void add_per_coordinate(const numerics::ScalarBandMatrix& b, double scale, SystemMatrix& system);
 
 }  // namespace enteron::mechanics

@@ -89,7 +89,7 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
                                                               axis.state, memory, dynamics_loads));
     dynamics.add_effect(enteron::make_owned<SelfContactForce>(memory, spheres_dynamics, contact, axis.state, memory,
                                                               dynamics_loads));
-    dynamics.add_shared_loads(&dynamics_loads, enteron::EffectId::self_collision);
+    dynamics.add_shared_loads(&dynamics_loads, enteron::mechanics::EffectId::self_collision);
     dynamics.finalize();
     Result through = fresh();
     mech::Linearization lin_through{&through.system, h, through.hv.data()};
@@ -116,8 +116,8 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
                 EXPECT_NEAR(other->system.at(k, j), apart.system.at(k, j), 1e-12 * system_scale) << k << ", " << j;
         }
     // The loads' time counts as the self-contact's.
-    EXPECT_EQ(dynamics.counters(enteron::EffectId::self_collision).calls, 2u);
-    EXPECT_GT(dynamics.counters(enteron::EffectId::self_collision).total_time_ns, 0u);
+    EXPECT_EQ(dynamics.counters(enteron::mechanics::EffectId::self_collision).calls, 2u);
+    EXPECT_GT(dynamics.counters(enteron::mechanics::EffectId::self_collision).total_time_ns, 0u);
 }
 
 }  // namespace
