@@ -1,4 +1,4 @@
-// The library's geometry vocabulary: Eigen's fixed-size vectors and matrices for the
+// The library's geometry vocabulary: Eigen's fixed-size vectors for the
 // per-contact and per-node maths, and maps that view our own packed x y z arrays (the
 // state vectors, sphere centres) as 3-vectors without copying. One Vec3 for every layer.
 //
@@ -19,7 +19,6 @@ namespace enteron {
 
 using Vec3 = Eigen::Vector3d;
 using Vec4 = Eigen::Vector4d;
-using Mat3 = Eigen::Matrix3d;
 
 inline constexpr double kPi = 3.14159265358979323846;
 
