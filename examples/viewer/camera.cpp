@@ -44,17 +44,21 @@ Eigen::Vector3d Camera::forward() const { return (target_ - eye()).normalized();
 Eigen::Vector3d Camera::right() const { return forward().cross(Eigen::Vector3d::UnitZ()).normalized(); }
 Eigen::Vector3d Camera::up() const { return right().cross(forward()); }
 
-Eigen::Matrix4f Camera::view() const {
-    const Eigen::Vector3d f = forward(), r = right(), u = up(), e = eye();
+Eigen::Matrix4f look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up_hint) {
+    const Eigen::Vector3d f = (target - eye).normalized();
+    const Eigen::Vector3d r = f.cross(up_hint).normalized();
+    const Eigen::Vector3d u = r.cross(f);
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
     m.block<1, 3>(0, 0) = r.transpose();
     m.block<1, 3>(1, 0) = u.transpose();
     m.block<1, 3>(2, 0) = -f.transpose();
-    m(0, 3) = -r.dot(e);
-    m(1, 3) = -u.dot(e);
-    m(2, 3) = f.dot(e);
+    m(0, 3) = -r.dot(eye);
+    m(1, 3) = -u.dot(eye);
+    m(2, 3) = f.dot(eye);
     return m.cast<float>();
 }
+
+Eigen::Matrix4f Camera::view() const { return look_at(eye(), target_, Eigen::Vector3d::UnitZ()); }
 
 Eigen::Matrix4f Camera::projection(double aspect) const {
     // Near and far follow the distance, so depth precision follows the zoom.
@@ -78,18 +82,6 @@ Ray Camera::ray(double x_px, double y_px, int width_px, int height_px) const {
     ray.origin = eye();
     ray.direction = (forward() + x * half_height * aspect * right() + y * half_height * up()).normalized();
     return ray;
-}
-
-bool Camera::project(const Eigen::Vector3d& point, int width_px, int height_px, Eigen::Vector2d& pixel) const {
-    const Eigen::Vector3d d = point - eye();
-    const double depth = d.dot(forward());
-    if (depth <= 0.0) return false;
-    const double aspect = static_cast<double>(width_px) / std::max(1, height_px);
-    const double half_height = std::tan(0.5 * fov_y_rad_);
-    const double x = d.dot(right()) / (depth * half_height * aspect);
-    const double y = d.dot(up()) / (depth * half_height);
-    pixel = Eigen::Vector2d(0.5 * (x + 1.0) * width_px, 0.5 * (1.0 - y) * height_px);
-    return true;
 }
 
 }  // namespace viewer

@@ -13,6 +13,10 @@ struct Ray {
     Eigen::Vector3d direction;  // unit
 };
 
+// The view matrix of an eye looking at target, up_hint roughly up (OpenGL's convention:
+// the eye looks down its -z).
+Eigen::Matrix4f look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up_hint);
+
 class Camera {
 public:
     // Looks at center from the front (-y) and above, far enough to see a cube of size_m.
@@ -33,8 +37,6 @@ public:
     Eigen::Matrix4f projection(double aspect) const;
     // The line of sight through pixel (x, y) of a w x h viewport, (0, 0) at the top left.
     Ray ray(double x_px, double y_px, int width_px, int height_px) const;
-    // The pixel (top-left origin) where a point appears; false if it is behind the eye.
-    bool project(const Eigen::Vector3d& point, int width_px, int height_px, Eigen::Vector2d& pixel) const;
 
 private:
     Eigen::Vector3d target_ = Eigen::Vector3d::Zero();

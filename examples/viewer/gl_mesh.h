@@ -49,7 +49,6 @@ public:
 
     void draw(GLenum mode = GL_TRIANGLES) const;
     void draw_instanced(GLenum mode = GL_TRIANGLES) const;
-    bool empty() const { return vertex_count_ == 0; }
 
 private:
     static void set_constant_attributes();

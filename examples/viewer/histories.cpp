@@ -79,9 +79,10 @@ void Histories::add_step(const StepSample& step) {
 void Histories::add(const FrameState& frame) {
     for (const StepSample& step : frame.new_steps) add_step(step);
     if (!recent_steps_us_.empty()) {
-        std::vector<float> sorted = recent_steps_us_;
-        std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
-        step_median_us = sorted[sorted.size() / 2];
+        sorted_steps_us_.assign(recent_steps_us_.begin(), recent_steps_us_.end());
+        const auto middle = sorted_steps_us_.begin() + static_cast<long>(sorted_steps_us_.size() / 2);
+        std::nth_element(sorted_steps_us_.begin(), middle, sorted_steps_us_.end());
+        step_median_us = *middle;
         step_max_us = *std::max_element(recent_steps_us_.begin(), recent_steps_us_.end());
     }
 

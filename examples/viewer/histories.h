@@ -71,6 +71,7 @@ private:
     void close_plot_point();
 
     std::vector<float> recent_steps_us_;        // the last second of step times
+    std::vector<float> sorted_steps_us_;        // a copy for the median
     std::size_t recent_next_ = 0;
     float bucket_max_[kMaxTools] = {};
     float bucket_force_[3] = {};                // the active tool's force at its largest

@@ -49,7 +49,7 @@ LocalSession::~LocalSession() { stop(); }
 bool LocalSession::start(std::string& error) {
     const ent_status status = ent_scene_create_json(json_.data(), json_.size(), &scene_);
     if (status != ENT_OK) {
-        error = name_ + ": " + ent_last_error() + " (" + ent_status_string(status) + ")";
+        error = name_ + ": " + ent_last_error() + " (" + status_name(status) + ")";
         return false;
     }
     if (!read_scene_layout(json_, layout_, error)) {

@@ -31,10 +31,10 @@ public:
 
     std::string name() const override { return name_; }
     const SceneLayout& layout() const override { return layout_; }
-    const std::string& scene_json() const override { return json_; }
     void read(const FrameRequest& request, FrameState& frame) override;
     void send(const ToolCommands& commands) override { physics_->commands().publish(commands); }
     void set_paused(bool paused) override { physics_->set_paused(paused); }
+    bool paused() const override { return physics_->paused(); }
     void step_once() override { physics_->step_once(); }
     void set_rate(double rate) override { physics_->set_rate(rate); }
     double rate() const override { return physics_->rate(); }

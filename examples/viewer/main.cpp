@@ -27,7 +27,7 @@ const char kUsage[] =
     "  --frames DIR        write every frame as DIR/frame_00001.png, ...\n"
     "  --video FILE        encode the frames with ffmpeg: FILE.mp4 or FILE.gif\n"
     "  --screenshot FILE   write the last frame as a PNG\n"
-    "  --size WxH          window or image size in pixels (default 1280x720)\n"
+    "  --size WxH          window or image size in pixels (default 1600x900; headless 1280x720)\n"
     "  --script FILE|demo  scripted mouse, keys, tool path and screenshots (docs/viewer.md);\n"
     "                      demo: the demo's tool path (the default for --headless on the demo scene)\n"
     "  --skin METHOD       tube, point_skeleton or convolution (default convolution)\n"
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     }
     ViewerSettings settings;
     RunOptions options;
-    bool headless = false, ui_given = false;
+    bool headless = false, ui_given = false, size_given = false;
     std::string script_name;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
                 else if (value == "none") settings.ui = UiMode::none;
                 else return usage_error("--ui wants full, hud or none, got " + value);
             }
+            if (arg == "--size") size_given = true;
             if (arg == "--size" && (std::sscanf(value.c_str(), "%dx%d", &options.width, &options.height) != 2 ||
                                     options.width < 64 || options.height < 64 || options.width > 8192 ||
                                     options.height > 8192))
@@ -116,7 +117,12 @@ int main(int argc, char** argv) {
         }
     }
     if (headless && options.seconds <= 0.0) return usage_error("--headless needs --seconds");
+    const std::string& video = options.video_path;
+    if (!video.empty() && !(video.size() > 4 && (video.compare(video.size() - 4, 4, ".mp4") == 0 ||
+                                                 video.compare(video.size() - 4, 4, ".gif") == 0)))
+        return usage_error("--video wants a .mp4 or .gif file, got " + video);
     if (headless && !ui_given) settings.ui = UiMode::hud;
+    if (headless && !size_given) options.width = 1280, options.height = 720;
     // The demo scene, headless, plays the demo's tool path unless told otherwise.
     if (script_name.empty() && headless && settings.scene_path.empty()) script_name = "demo";
     if (!script_name.empty()) {
@@ -124,7 +130,9 @@ int main(int argc, char** argv) {
         if (!options.script.load(script_name, error)) return usage_error(error);
         settings.session.tool0_path = options.script.tool_path();
     }
-    if (headless) settings.session.gate_s = options.start_s + 1.0 / options.fps;  // frame 1's time
+    // The simulation waits for the picture: headless, for frame 1's time; in a window, at
+    // t = 0 until the window shows its first frame (Viewer::start_clock).
+    settings.session.gate_s = headless ? options.start_s + 1.0 / options.fps : 0.0;
 
     Viewer viewer(settings);
     std::string error;

@@ -56,6 +56,7 @@ void PhysicsThread::run() {
     double anchor_time_s = time_s_;
     double anchor_rate = rate_.load();
     bool anchor_paused = paused_.load();
+    bool anchor_capture = std::isfinite(gate_s_.load());
     while (!stop_.load(std::memory_order_relaxed)) {
         ToolCommands fresh;
         if (commands_.take(fresh)) latest_commands_ = fresh;
@@ -65,14 +66,16 @@ void PhysicsThread::run() {
         const bool paused = paused_.load();
         const auto now = Clock::now();
         // Real time: the simulation may be at anchor_time + rate x (wall time since anchor).
-        // A change of rate or a pause moves the anchor to now, so neither makes a jump.
-        if (rate != anchor_rate || paused != anchor_paused || paused) {
+        // A change of rate, a pause or the end of a gate moves the anchor to now, so none of
+        // them makes a jump.
+        const bool capture = std::isfinite(gate);
+        if (rate != anchor_rate || paused != anchor_paused || paused || capture != anchor_capture) {
             anchor_wall = now;
             anchor_time_s = time_s_;
             anchor_rate = rate;
             anchor_paused = paused;
+            anchor_capture = capture;
         }
-        const bool capture = std::isfinite(gate);
         const double allowed_s = capture ? gate : anchor_time_s + rate * seconds_between(anchor_wall, now);
         const double tolerance_s = 1e-9 * dt;
         int steps = 0;

@@ -40,20 +40,6 @@ Eigen::Matrix4f segment_transform(const Eigen::Vector3d& a, const Eigen::Vector3
     return affine(frame * Eigen::Vector3d(radius, radius, length).asDiagonal(), a);
 }
 
-Eigen::Matrix4f look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up_hint) {
-    const Eigen::Vector3d f = (target - eye).normalized();
-    const Eigen::Vector3d r = f.cross(up_hint).normalized();
-    const Eigen::Vector3d u = r.cross(f);
-    Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-    m.block<1, 3>(0, 0) = r.transpose();
-    m.block<1, 3>(1, 0) = u.transpose();
-    m.block<1, 3>(2, 0) = -f.transpose();
-    m(0, 3) = -r.dot(eye);
-    m(1, 3) = -u.dot(eye);
-    m(2, 3) = f.dot(eye);
-    return m.cast<float>();
-}
-
 Eigen::Matrix4f orthographic(double half_size, double near_m, double far_m) {
     Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
     m(0, 0) = 1.0 / half_size;
@@ -394,12 +380,12 @@ void Renderer::draw_tools(const SceneView& view, bool colour_pass) {
         }
         if (!colour_pass || !view.toggles.force_arrows) continue;
         // The force on the tool (what a haptic device would render), from the tip: green
-        // when small, red at the tool's max_force.
+        // when small, yellow at the tool's max_force (colours the pink bowel does not have).
         const Eigen::Vector3d force = point(tool.force_N);
         const float load = static_cast<float>(std::min(1.0, force.norm() / std::max(shape.max_force_N, 1e-9)));
-        const Material arrow = make(linear(std::min(1.0f, 2.0f * load), std::min(1.0f, 2.0f - 2.0f * load), 0.15f),
-                                    0.3f, 30.0f, 0.0f);
-        draw_arrow(tip, view.force_scale_m_per_N * force, 0.45 * shape.radius_m, arrow);
+        const Material arrow = make(linear(0.25f + 0.75f * load, 0.90f - 0.05f * load, 0.30f - 0.20f * load), 0.3f,
+                                    30.0f, 0.0f);
+        draw_arrow(tip, view.force_scale_m_per_N * force, 0.6 * shape.radius_m, arrow);
     }
 }
 

@@ -45,7 +45,6 @@ struct SceneView {
     const SceneLayout* layout = nullptr;
     const FrameState* frame = nullptr;
     const ToolCommands* targets = nullptr;  // where the mouse wants the tools
-    std::uint32_t active_tool = 0;
     DrawToggles toggles;
     double force_scale_m_per_N = 0.02;     // arrow length per newton
 };

@@ -23,7 +23,7 @@ struct RunOptions {
     double seconds = 0.0;          // simulated seconds to run (0: until the window closes)
     double start_s = 0.0;          // headless: simulated first, not captured
     double fps = 30.0;             // headless: frames per simulated second
-    int width = 1280, height = 720;
+    int width = 1600, height = 900; // the window's; --headless makes 1280 x 720 unless told
     std::string frames_dir;        // every frame as a PNG
     std::string video_path;        // .mp4 or .gif
     std::string screenshot_path;   // the last frame as a PNG

@@ -9,6 +9,7 @@
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,7 +43,9 @@ public:
         if (display_ == EGL_NO_DISPLAY) display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
         EGLint major = 0, minor = 0;
         if (display_ == EGL_NO_DISPLAY || eglInitialize(display_, &major, &minor) != EGL_TRUE) {
-            error = "EGL has no display here (eglInitialize failed, error 0x" + hex(eglGetError()) + ")";
+            error = "EGL has no display here (eglInitialize failed, EGL error 0x" + hex(eglGetError()) +
+                    "); Mesa's software renderer for EGL is in libegl-mesa0, or run the viewer in a window, under "
+                    "xvfb-run if there is no display";
             display_ = EGL_NO_DISPLAY;
             return false;
         }
@@ -101,6 +104,16 @@ int capture(Viewer& viewer, RunOptions& options) {
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(static_cast<float>(options.width), static_cast<float>(options.height));
     io.DeltaTime = static_cast<float>(1.0 / options.fps);
+    // The text keeps its share of the picture (fonts are made for 720 lines), down to a size
+    // still legible.
+    io.FontGlobalScale = std::clamp(static_cast<float>(options.height) / 720.0f, 0.75f, 2.0f);
+
+    // Dear ImGui sizes a new auto-sized window on its first frame and shows it from the
+    // second: that first frame is made here, not captured.
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    viewer.build_ui();
+    ImGui::EndFrame();
 
     const auto start = Clock::now();
     const long frames = std::max(1L, std::lround(options.seconds * options.fps));

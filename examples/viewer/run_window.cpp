@@ -129,9 +129,10 @@ int run_frames(GLFWwindow* window, Viewer& viewer, RunOptions& options) {
             continue;
         }
         viewer.set_window_size(window_width, window_height);
+        viewer.update();
+        // The script's events up to this frame's time; its screenshots show this frame.
         std::vector<std::string> screenshots;
         options.script.play(viewer.frame().time_s, viewer, screenshots);
-        viewer.update();
         if (!canvas.resize(width, height, samples, error)) {
             std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
             status = kExitNoRenderer;
@@ -150,10 +151,14 @@ int run_frames(GLFWwindow* window, Viewer& viewer, RunOptions& options) {
         }
         canvas.present(width, height);
         glfwSwapBuffers(window);
+        viewer.start_clock();
         const auto next = last_frame + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / kMaxFramesPerSecond));
         std::this_thread::sleep_until(next);
         last_frame = Clock::now();
-        if (options.seconds > 0.0 && viewer.frame().time_s >= end_s - 1e-9) break;
+        // --seconds counts simulated time; with no scene to run, wall time.
+        const double wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+        if (options.seconds > 0.0 && viewer.session() != nullptr && viewer.frame().time_s >= end_s - 1e-9) break;
+        if (options.seconds > 0.0 && viewer.session() == nullptr && wall_s >= options.seconds) break;
     }
     if (status == kExitOk && !outputs.finish(error)) {
         std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());

@@ -13,6 +13,8 @@
 //                                        through its tool lines instead of the mouse,
 //                                        played on the physics thread like a device
 //
+// Times are simulated seconds, so a script plays the same at any frame rate; a pause stops
+// its clock too, so a script that pauses resumes at the same time ("3 key space" twice).
 // "demo" instead of a file name is the demo's tool path (examples/demo_scene.h).
 #pragma once
 

@@ -18,6 +18,23 @@
 
 namespace viewer {
 
+// The ENT_ERROR_* name of a status, as enteron.h spells it.
+inline const char* status_name(ent_status status) {
+    switch (status) {
+        case ENT_OK: return "ENT_OK";
+        case ENT_ERROR_INVALID_ARGUMENT: return "ENT_ERROR_INVALID_ARGUMENT";
+        case ENT_ERROR_VERSION: return "ENT_ERROR_VERSION";
+        case ENT_ERROR_PARSE: return "ENT_ERROR_PARSE";
+        case ENT_ERROR_INVALID_SCENE: return "ENT_ERROR_INVALID_SCENE";
+        case ENT_ERROR_UNSTABLE: return "ENT_ERROR_UNSTABLE";
+        case ENT_ERROR_OUT_OF_MEMORY: return "ENT_ERROR_OUT_OF_MEMORY";
+        case ENT_ERROR_NOT_FOUND: return "ENT_ERROR_NOT_FOUND";
+        case ENT_ERROR_BUFFER_TOO_SMALL: return "ENT_ERROR_BUFFER_TOO_SMALL";
+        case ENT_ERROR_INTERNAL: return "ENT_ERROR_INTERNAL";
+        default: return "ENT_ERROR_?";
+    }
+}
+
 // A failed library call, as the status line shows it.
 struct Problem {
     std::uint64_t count = 0;     // failures so far (a change means a new one)
@@ -59,7 +76,6 @@ public:
 
     virtual std::string name() const = 0;            // for the title bar and the status line
     virtual const SceneLayout& layout() const = 0;
-    virtual const std::string& scene_json() const = 0;
 
     // Render thread, once a frame: the newest state and a fresh mesh.
     virtual void read(const FrameRequest& request, FrameState& frame) = 0;
@@ -68,6 +84,7 @@ public:
 
     // Controls of the simulation itself (a remote session would not have them all).
     virtual void set_paused(bool paused) = 0;
+    virtual bool paused() const = 0;
     virtual void step_once() = 0;
     virtual void set_rate(double real_time_factor) = 0;
     virtual double rate() const = 0;

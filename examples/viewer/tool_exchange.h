@@ -7,7 +7,7 @@
 // max_speed (a mouse click must not teleport a 30 cm shaft through the bowel), sets the
 // pose, grasps or releases on a change of the grasp level, steps, and reads the wrench
 // back. When ent_tool_set_pose, ent_tool_grasp and the wrench become callable from any
-// thread (issue 16), the render thread can make those calls itself and ToolFollower moves
+// thread (issue 16), the render thread can make those calls itself and follow() moves
 // to its side; the rest of the viewer does not change.
 #pragma once
 

@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <limits>
 #include <cstdio>
 
 #include "demo_scene.h"
@@ -44,6 +45,7 @@ bool Viewer::open(const std::string& json, const std::string& name, const std::s
     std::unique_ptr<Session> session = LocalSession::open(json, name, settings_.session, error);
     if (!session) {
         load_error_ = error;
+        json_edit_ = json;  // to mend it in the Scene panel
         return false;
     }
     frame_ = FrameState();  // its mesh view points into the old skin
@@ -54,7 +56,14 @@ bool Viewer::open(const std::string& json, const std::string& name, const std::s
     tools_.reset(session_->layout());
     histories_.clear();
     camera_framed_ = false;
+    clock_started_ = false;
     return true;
+}
+
+void Viewer::start_clock() {
+    if (!session_ || clock_started_) return;
+    session_->set_gate(std::numeric_limits<double>::infinity());
+    clock_started_ = true;
 }
 
 void Viewer::open_file(const std::string& path) {
@@ -92,7 +101,8 @@ std::string Viewer::take_screenshot_request() {
 
 void Viewer::frame_camera() {
     if (!session_) return;
-    // The cavity if there is one, else the bowel as it is now.
+    // The cavity's lower two thirds if there is a cavity (the bowel lies on its floor), else
+    // the bowel as it is now.
     const SceneLayout& layout = session_->layout();
     Eigen::Vector3d low = Eigen::Vector3d::Constant(1e30), high = Eigen::Vector3d::Constant(-1e30);
     auto include = [&low, &high](const Eigen::Vector3d& p) {
@@ -101,8 +111,9 @@ void Viewer::frame_camera() {
     };
     if (layout.scene_size_m > 0.0) {
         const Eigen::Vector3d centre(layout.scene_center_m[0], layout.scene_center_m[1], layout.scene_center_m[2]);
-        include(centre - Eigen::Vector3d::Constant(0.5 * layout.scene_size_m));
-        include(centre + Eigen::Vector3d::Constant(0.5 * layout.scene_size_m));
+        const double half = 0.5 * layout.scene_size_m;
+        include(centre - Eigen::Vector3d::Constant(half));
+        include(centre + Eigen::Vector3d(half, half, half / 3.0));
     } else {
         const ent_mesh_view& mesh = frame_.mesh;
         for (std::uint32_t i = 0; i < mesh.vertex_count; ++i)
@@ -124,8 +135,8 @@ void Viewer::update() {
     session_->read(request, frame_);
     if (frame_.problem.count != failures_before) {  // shown on the status line; the terminal gets it too
         const Problem& p = frame_.problem;
-        std::fprintf(stderr, "enteron-viewer: %s failed at t = %.3f s: %s: %s\n", p.call.c_str(), p.time_s,
-                     ent_status_string(p.status), p.message.c_str());
+        std::fprintf(stderr, "enteron-viewer: %s from %s at t = %.3f s: %s\n", status_name(p.status), p.call.c_str(),
+                     p.time_s, p.message.c_str());
     }
     // A tool on a scripted path is where the path put it: no target of the mouse's to show.
     if (!settings_.session.tool0_path.empty() && frame_.tool_count > 0) tools_.commands().target[0] = frame_.tools[0].pose;
@@ -146,7 +157,6 @@ void Viewer::render(int framebuffer_width, int framebuffer_height) {
     view.layout = &session_->layout();
     view.frame = &frame_;
     view.targets = &tools_.commands();
-    view.active_tool = tools_.active();
     view.toggles = toggles_;
     view.force_scale_m_per_N = force_scale_m_per_N_;
     renderer_->draw(view, camera_, framebuffer_width, framebuffer_height);
@@ -204,16 +214,14 @@ void Viewer::reset() {
     frame_ = FrameState();
     tools_.reset(session_->layout());
     histories_.clear();
+    clock_started_ = false;  // it starts again held at its opening gate
     notify("reset");
 }
 
-void Viewer::set_skin_method(std::int32_t method) {
-    if (!session_) return;
-    ent_skin_desc desc = session_->skin();
-    desc.method = method;
+void Viewer::set_skin(const ent_skin_desc& desc) {
     std::string error;
-    if (!session_->set_skin(desc, error)) {
-        notify(error);
+    if (!session_ || !session_->set_skin(desc, error)) {
+        if (!error.empty()) notify(error);
         return;
     }
     frame_.mesh = ent_mesh_view{};  // pointed into the old skin
@@ -239,16 +247,22 @@ void Viewer::key(int key, int mods) {
         case GLFW_KEY_F: toggles_.force_arrows = !toggles_.force_arrows; break;
         case GLFW_KEY_K: toggles_.skin = !toggles_.skin; break;
         case GLFW_KEY_L: toggles_.shadows = !toggles_.shadows; break;
-        case GLFW_KEY_1: set_skin_method(ENT_SKIN_TUBE); break;
-        case GLFW_KEY_2: set_skin_method(ENT_SKIN_POINT_SKELETON); break;
-        case GLFW_KEY_3: set_skin_method(ENT_SKIN_CONVOLUTION); break;
+        case GLFW_KEY_1:
+        case GLFW_KEY_2:
+        case GLFW_KEY_3:  // tube, point_skeleton, convolution: the same resolution, another method
+            if (session_) {
+                ent_skin_desc desc = session_->skin();
+                desc.method = key == GLFW_KEY_1 ? ENT_SKIN_TUBE : key == GLFW_KEY_2 ? ENT_SKIN_POINT_SKELETON : ENT_SKIN_CONVOLUTION;
+                set_skin(desc);
+            }
+            break;
         case GLFW_KEY_G: tools_.toggle_grasp(); break;
         case GLFW_KEY_TAB: tools_.set_active(tools_.count() == 0 ? 0 : (tools_.active() + 1) % tools_.count()); break;
         default: break;
     }
     if (!session_) return;
     switch (key) {
-        case GLFW_KEY_SPACE: session_->set_paused(!frame_.paused); break;
+        case GLFW_KEY_SPACE: session_->set_paused(!session_->paused()); break;
         case GLFW_KEY_RIGHT:  // one step, pausing first
             session_->set_paused(true);
             session_->step_once();

@@ -54,17 +54,16 @@ public:
     void render(int framebuffer_width, int framebuffer_height);
     // The panels (between ImGui::NewFrame and ImGui::Render).
     void build_ui();
+    // A window calls this once its first frame of a scene is on screen: a scene opened held
+    // at t = 0 (ViewerSettings.session.gate_s = 0) then starts, so that the simulation
+    // starts with the picture and not with the slower start of the window.
+    void start_clock();
 
     Session* session() { return session_.get(); }
     const Session* session() const { return session_.get(); }
     const FrameState& frame() const { return frame_; }
     const Histories& histories() const { return histories_; }
-    const Camera& camera() const { return camera_; }
-    const ToolControl& tools() const { return tools_; }
-    const std::string& load_error() const { return load_error_; }
     bool quit_requested() const { return quit_; }
-    void set_ui(UiMode mode) { settings_.ui = mode; }
-    UiMode ui() const { return settings_.ui; }
     // A screenshot the user asked for (key P): the path, once, then "".
     std::string take_screenshot_request();
     // A line for the status bar that goes away by itself.
@@ -73,7 +72,7 @@ public:
 private:
     bool open(const std::string& json, const std::string& name, const std::string& path, std::string& error);
     void reset();
-    void set_skin_method(std::int32_t method);
+    void set_skin(const ent_skin_desc& desc);
     void frame_camera();
     void build_panels();
     void build_hud();
@@ -87,6 +86,7 @@ private:
     std::string json_edit_;           // the scene panel's editor
     Camera camera_;
     bool camera_framed_ = false;
+    bool clock_started_ = false;
     ToolControl tools_;
     DrawToggles toggles_;
     double force_scale_m_per_N_ = 0.02;

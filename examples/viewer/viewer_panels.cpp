@@ -1,5 +1,6 @@
-// The viewer's panels (Dear ImGui): simulation controls, the tool and its force plot, the
-// statistics, the skin, what is shown, the scene's text, the help, and the status line.
+// The viewer's panels (Dear ImGui): on the left the simulation's controls, the tool and its
+// force plot, what is shown and the scene's text; on the right the statistics and the
+// skin; the help; the status line along the bottom.
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -17,23 +18,6 @@ namespace viewer {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The ENT_ERROR_* name of a status, as enteron.h spells it.
-const char* status_name(ent_status status) {
-    switch (status) {
-        case ENT_OK: return "ENT_OK";
-        case ENT_ERROR_INVALID_ARGUMENT: return "ENT_ERROR_INVALID_ARGUMENT";
-        case ENT_ERROR_VERSION: return "ENT_ERROR_VERSION";
-        case ENT_ERROR_PARSE: return "ENT_ERROR_PARSE";
-        case ENT_ERROR_INVALID_SCENE: return "ENT_ERROR_INVALID_SCENE";
-        case ENT_ERROR_UNSTABLE: return "ENT_ERROR_UNSTABLE";
-        case ENT_ERROR_OUT_OF_MEMORY: return "ENT_ERROR_OUT_OF_MEMORY";
-        case ENT_ERROR_NOT_FOUND: return "ENT_ERROR_NOT_FOUND";
-        case ENT_ERROR_BUFFER_TOO_SMALL: return "ENT_ERROR_BUFFER_TOO_SMALL";
-        case ENT_ERROR_INTERNAL: return "ENT_ERROR_INTERNAL";
-        default: return "ENT_ERROR_?";
-    }
-}
 
 const char* const kSkinNames[] = {"tube", "point_skeleton", "convolution"};
 
@@ -70,7 +54,7 @@ void Viewer::build_panels() {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(380, static_cast<float>(window_height_) - 52.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.82f);
-    ImGui::Begin("Enteron viewer");
+    ImGui::Begin("Enteron viewer");  // on the left: what the user drives
     ImGui::PushItemWidth(ImGui::GetFontSize() * -9.0f);  // room for the labels on the right
     if (!session_) {
         ImGui::TextColored(kErrorColour, "No scene.");
@@ -81,7 +65,7 @@ void Viewer::build_panels() {
     if (session_ && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::TextWrapped("%s", session_->name().c_str());
         ImGui::Text("t = %.3f s   %s", frame_.time_s, frame_.paused ? "paused" : "running");
-        if (ImGui::Button(frame_.paused ? "Run (Space)" : "Pause (Space)")) session_->set_paused(!frame_.paused);
+        if (ImGui::Button(frame_.paused ? "Run (Space)" : "Pause (Space)")) session_->set_paused(!session_->paused());
         ImGui::SameLine();
         if (ImGui::Button("Step (Right)")) {
             session_->set_paused(true);
@@ -155,7 +139,49 @@ void Viewer::build_panels() {
             force_scale_m_per_N_ = 0.01 * scale_cm;
     }
 
-    if (session_ && ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Checkbox("skin (K)", &toggles_.skin);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("wireframe (W)", &toggles_.wireframe);
+        ImGui::Checkbox("axis (A)", &toggles_.axis);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("control points (C)", &toggles_.control_points);
+        ImGui::Checkbox("collision spheres (S)", &toggles_.spheres);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("mesentery (M)", &toggles_.mesentery);
+        ImGui::Checkbox("obstacles (O)", &toggles_.obstacles);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("force arrows (F)", &toggles_.force_arrows);
+        ImGui::Checkbox("shadows (L)", &toggles_.shadows);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("tools", &toggles_.tools);
+    }
+
+    if (ImGui::CollapsingHeader("Scene", session_ ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::TextWrapped("Every other parameter is fixed when the scene is made: edit the description and "
+                           "apply to start it again (docs/scene-json.md).");
+        if (!scene_path_.empty() && ImGui::Button("Reload the file (Ctrl+L)")) open_file(scene_path_);
+        ImGui::InputTextMultiline("##json", &json_edit_, ImVec2(-1.0f, 260.0f));
+        if (ImGui::Button("Apply")) {
+            std::string error;
+            if (open(json_edit_, session_ ? session_->name() + " (edited)" : "edited scene", scene_path_, error))
+                notify("scene applied");
+        }
+        if (!load_error_.empty()) ImGui::TextColored(kErrorColour, "%s", load_error_.c_str());
+    }
+    if (ImGui::Button("Help (F1)")) show_help_ = !show_help_;
+    ImGui::PopItemWidth();
+    ImGui::End();
+
+    // On the right: what the simulation and the skin cost and how good they are.
+    if (!session_) return;
+    const float width = 370.0f;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(window_width_) - width - 8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(window_height_) - 52.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.82f);
+    ImGui::Begin("Statistics");
+    ImGui::PushItemWidth(ImGui::GetFontSize() * -9.0f);
+    if (ImGui::CollapsingHeader("Simulation cost", ImGuiTreeNodeFlags_DefaultOpen)) {
         const ent_stats& s = frame_.stats;
         ImGui::Text("steps %llu, substeps %llu, rollbacks %llu", static_cast<unsigned long long>(s.steps),
                     static_cast<unsigned long long>(s.substeps), static_cast<unsigned long long>(s.rollbacks));
@@ -185,7 +211,7 @@ void Viewer::build_panels() {
         }
     }
 
-    if (session_ && ImGui::CollapsingHeader("Skin")) {
+    if (ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
         ent_skin_desc desc = session_->skin();
         bool changed = false;
         for (int m = 0; m < 3; ++m) {
@@ -210,15 +236,7 @@ void Viewer::build_panels() {
             changed |= drag_double("chord error (R)", &desc.ring_chord_error_radii, 0.005, 0.0, 1.0, "%.3f");
         desc.segments = static_cast<std::uint32_t>(segments);
         desc.cap_rings = static_cast<std::uint32_t>(cap_rings);
-        if (changed) {
-            std::string error;
-            if (session_->set_skin(desc, error)) {
-                frame_.mesh = ent_mesh_view{};
-                metrics_valid_ = false;
-            } else {
-                notify(error);
-            }
-        }
+        if (changed) set_skin(desc);
         ImGui::Text("%u triangles, %u vertices, update %.2f ms", frame_.mesh.triangle_count, frame_.mesh.vertex_count,
                     histories_.skin_update_ms);
         // The metrics cost more than an update: once a second, while this panel is open.
@@ -240,37 +258,6 @@ void Viewer::build_panels() {
         }
     }
 
-    if (ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Checkbox("skin (K)", &toggles_.skin);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("wireframe (W)", &toggles_.wireframe);
-        ImGui::Checkbox("axis (A)", &toggles_.axis);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("control points (C)", &toggles_.control_points);
-        ImGui::Checkbox("collision spheres (S)", &toggles_.spheres);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("mesentery (M)", &toggles_.mesentery);
-        ImGui::Checkbox("obstacles (O)", &toggles_.obstacles);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("force arrows (F)", &toggles_.force_arrows);
-        ImGui::Checkbox("shadows (L)", &toggles_.shadows);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("tools", &toggles_.tools);
-    }
-
-    if (ImGui::CollapsingHeader("Scene")) {
-        ImGui::TextWrapped("Every other parameter is fixed when the scene is made: edit the description and "
-                           "apply to start it again (docs/scene-json.md).");
-        if (!scene_path_.empty() && ImGui::Button("Reload the file (Ctrl+L)")) open_file(scene_path_);
-        ImGui::InputTextMultiline("##json", &json_edit_, ImVec2(-1.0f, 260.0f));
-        if (ImGui::Button("Apply")) {
-            std::string error;
-            if (open(json_edit_, session_ ? session_->name() + " (edited)" : "edited scene", scene_path_, error))
-                notify("scene applied");
-        }
-        if (!load_error_.empty()) ImGui::TextColored(kErrorColour, "%s", load_error_.c_str());
-    }
-    if (ImGui::Button("Help (F1)")) show_help_ = !show_help_;
     ImGui::PopItemWidth();
     ImGui::End();
 }
