@@ -213,7 +213,7 @@ ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_
  * Everything needed to create a scene from C. Fill it with ent_scene_desc_default, change
  * what you need, then call ent_scene_create. No reference to it (or to the arrays it points
  * to) is kept after the call. The JSON description (ent_scene_create_json) offers the same
- * settings; the README documents both, key by key.
+ * settings; docs/scene-json.md documents both, key by key.
  */
 typedef struct ent_scene_desc {
     uint32_t struct_size; /**< sizeof(ent_scene_desc); set by ent_scene_desc_default. */
@@ -310,8 +310,9 @@ typedef struct ent_scene ent_scene;
 ENT_API ent_status ent_scene_create(const ent_scene_desc* desc, ent_scene** out_scene);
 
 /**
- * Creates a scene from a JSON description (format v1, documented key by key in the
- * README). Effects are opt-in: a key that is absent is an effect that does not run.
+ * Creates a scene from a JSON description (format v1, documented key by key in
+ * docs/scene-json.md). Effects are opt-in: a key that is absent is an effect that does not
+ * run.
  * @param json UTF-8 text, not necessarily NUL-terminated; @param length its bytes.
  * @return ENT_OK; ENT_ERROR_PARSE (not JSON: the message gives the byte offset);
  *         ENT_ERROR_INVALID_SCENE (unknown key, wrong type or bad value: the message names
