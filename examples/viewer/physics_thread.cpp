@@ -77,7 +77,7 @@ void PhysicsThread::run() {
             anchor_capture = capture;
         }
         const double allowed_s = capture ? gate : anchor_time_s + rate * seconds_between(anchor_wall, now);
-        const double tolerance_s = 1e-9 * dt;
+        const double tolerance_s = 1e-6 * dt;  // the sum of many dt is not exactly a multiple of dt
         int steps = 0;
         if (!paused) {
             while (time_s_ + dt <= allowed_s + tolerance_s && steps < kMaxStepsPerTick &&

@@ -55,6 +55,10 @@ bool FrameOutputs::open(const RunOptions& options, int width, int height, std::s
 bool FrameOutputs::add(const Canvas& canvas, const std::vector<std::string>& screenshots, std::string& error) {
     ++frames_;
     if (!wanted() && screenshots.empty()) return true;
+    if (canvas.width() != width_ || canvas.height() != height_) {
+        error = "the window changed size while its frames were being recorded";
+        return false;
+    }
     canvas.read_rgb(rgb_);
     if (!options_.frames_dir.empty()) {
         char name[32];

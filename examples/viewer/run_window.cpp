@@ -109,11 +109,10 @@ int run_frames(GLFWwindow* window, Viewer& viewer, RunOptions& options) {
     std::string error;
     Canvas canvas;
     FrameOutputs outputs;
-    if (!viewer.init_renderer(error) || !outputs.open(options, options.width, options.height, error)) {
-        std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
-        status = error.find("ffmpeg") != std::string::npos || error.find("--video") != std::string::npos
-                     ? kExitFailed
-                     : kExitNoRenderer;
+    bool outputs_open = false;  // at the first frame, at the framebuffer's size
+    if (!viewer.init_renderer(error)) {
+        std::fprintf(stderr, "enteron-viewer: no renderer: %s\n", error.c_str());
+        status = kExitNoRenderer;
     }
     const int samples = default_samples();
     const auto start = Clock::now();
@@ -145,6 +144,12 @@ int run_frames(GLFWwindow* window, Viewer& viewer, RunOptions& options) {
             screenshots.push_back(asked);
             viewer.notify("screenshot: " + asked);
         }
+        if (!outputs_open && !outputs.open(options, canvas.width(), canvas.height(), error)) {
+            std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
+            status = kExitFailed;
+            break;
+        }
+        outputs_open = true;
         if (!outputs.add(canvas, screenshots, error)) {
             std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
             status = kExitFailed;

@@ -5,8 +5,8 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
-#include <limits>
 #include <cstdio>
+#include <limits>
 
 #include "demo_scene.h"
 
