@@ -219,26 +219,26 @@ void Renderer::upload_frame(const SceneView& view) {
     const ent_mesh_view& mesh = view.frame->mesh;
     bowel_->upload(mesh.positions_xyz_m, mesh.normals_xyz, mesh.axis_u, mesh.vertex_count, mesh.indices,
                    3 * mesh.triangle_count);
-    bounds_min_ = Eigen::Vector3d::Constant(1e30);
-    bounds_max_ = Eigen::Vector3d::Constant(-1e30);
-    for (std::uint32_t i = 0; i < mesh.vertex_count; ++i) {
-        const Eigen::Vector3d p(mesh.positions_xyz_m[3 * i], mesh.positions_xyz_m[3 * i + 1],
-                                mesh.positions_xyz_m[3 * i + 2]);
-        bounds_min_ = bounds_min_.cwiseMin(p);
-        bounds_max_ = bounds_max_.cwiseMax(p);
-    }
+    bounds_ = mesh_bounds(mesh);
     const SceneLayout& layout = *view.layout;
     if (layout.scene_size_m > 0.0) {
         const Eigen::Vector3d centre = point(layout.scene_center_m);
-        bounds_min_ = bounds_min_.cwiseMin(centre - Eigen::Vector3d::Constant(0.5 * layout.scene_size_m));
-        bounds_max_ = bounds_max_.cwiseMax(centre + Eigen::Vector3d::Constant(0.5 * layout.scene_size_m));
+        bounds_.extend(centre - Eigen::Vector3d::Constant(0.5 * layout.scene_size_m));
+        bounds_.extend(centre + Eigen::Vector3d::Constant(0.5 * layout.scene_size_m));
     }
-    if (bounds_min_.x() > bounds_max_.x()) bounds_min_ = bounds_max_ = Eigen::Vector3d::Zero();
+    if (bounds_.isEmpty()) bounds_.extend(Eigen::Vector3d::Zero());
+}
+
+Eigen::AlignedBox3d mesh_bounds(const ent_mesh_view& mesh) {
+    Eigen::AlignedBox3d box;  // empty
+    for (std::uint32_t i = 0; i < mesh.vertex_count; ++i)
+        box.extend(Eigen::Vector3f(mesh.positions_xyz_m + 3 * i).cast<double>());
+    return box;
 }
 
 void Renderer::prepare_shadow_map(const SceneView& view) {
-    const Eigen::Vector3d centre = 0.5 * (bounds_min_ + bounds_max_);
-    const double radius = std::max(0.5 * (bounds_max_ - bounds_min_).norm(), 1e-3);
+    const Eigen::Vector3d centre = bounds_.center();
+    const double radius = std::max(0.5 * bounds_.diagonal().norm(), 1e-3);
     const Eigen::Vector3d toward_light = key_direction_.cast<double>();
     light_view_projection_ = orthographic(radius, 0.0, 4.0 * radius) *
                              look_at(centre + 2.0 * radius * toward_light, centre, Eigen::Vector3d::UnitY());

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <memory>
 #include <string>
@@ -29,6 +30,9 @@ struct DrawToggles {
     bool force_arrows = true;
     bool shadows = true;
 };
+
+// The box around a skin's vertices (empty for an empty mesh).
+Eigen::AlignedBox3d mesh_bounds(const ent_mesh_view& mesh);
 
 // How a surface looks (linear colour, lit by the shader in shaders.h).
 struct Material {
@@ -78,7 +82,7 @@ private:
     const GlProgram* active_ = nullptr;      // surface_ (colour pass) or depth_ (shadow pass)
     Eigen::Matrix4f view_projection_, light_view_projection_;
     Eigen::Vector3f eye_, key_direction_;
-    Eigen::Vector3d bounds_min_, bounds_max_;  // of what is drawn, for the shadow map
+    Eigen::AlignedBox3d bounds_;              // of what is drawn, for the shadow map
     std::vector<float> scratch_;              // instance and line data
 };
 

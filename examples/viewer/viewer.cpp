@@ -104,24 +104,17 @@ void Viewer::frame_camera() {
     // The cavity's lower two thirds if there is a cavity (the bowel lies on its floor), else
     // the bowel as it is now.
     const SceneLayout& layout = session_->layout();
-    Eigen::Vector3d low = Eigen::Vector3d::Constant(1e30), high = Eigen::Vector3d::Constant(-1e30);
-    auto include = [&low, &high](const Eigen::Vector3d& p) {
-        low = low.cwiseMin(p);
-        high = high.cwiseMax(p);
-    };
+    Eigen::AlignedBox3d box;
     if (layout.scene_size_m > 0.0) {
         const Eigen::Vector3d centre(layout.scene_center_m[0], layout.scene_center_m[1], layout.scene_center_m[2]);
         const double half = 0.5 * layout.scene_size_m;
-        include(centre - Eigen::Vector3d::Constant(half));
-        include(centre + Eigen::Vector3d(half, half, half / 3.0));
+        box.extend(centre - Eigen::Vector3d::Constant(half));
+        box.extend(centre + Eigen::Vector3d(half, half, half / 3.0));
     } else {
-        const ent_mesh_view& mesh = frame_.mesh;
-        for (std::uint32_t i = 0; i < mesh.vertex_count; ++i)
-            include(Eigen::Vector3d(mesh.positions_xyz_m[3 * i], mesh.positions_xyz_m[3 * i + 1],
-                                    mesh.positions_xyz_m[3 * i + 2]));
+        box = mesh_bounds(frame_.mesh);
     }
-    if (low.x() > high.x()) return;  // nothing yet: frame it on the next frame
-    camera_.frame(0.5 * (low + high), (high - low).maxCoeff());
+    if (box.isEmpty()) return;  // nothing yet: frame it on the next frame
+    camera_.frame(box.center(), box.sizes().maxCoeff());
     camera_framed_ = true;
 }
 
