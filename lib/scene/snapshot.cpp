@@ -1,5 +1,7 @@
 #include "scene/snapshot.h"
 
+#include <thread>
+
 namespace enteron::scene {
 
 SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory)
@@ -23,6 +25,21 @@ Snapshot* SnapshotPublisher::begin_write() {
 void SnapshotPublisher::publish(Snapshot* slot) {
     std::lock_guard<std::mutex> lock(mutex_);
     latest_ = static_cast<std::size_t>(slot - slots_.data());
+}
+
+void SnapshotPublisher::reserve_tools(std::size_t count) {
+    for (std::size_t slot = 0; slot < kSlots; ++slot) {
+        for (;;) {
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                if (readers_[slot] == 0) {
+                    slots_[slot].tools.reserve(count);
+                    break;
+                }
+            }
+            std::this_thread::yield();  // a reader is copying: microseconds
+        }
+    }
 }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {
