@@ -75,6 +75,7 @@ bool LocalSession::start(std::string& error) {
     settings.gate_s = options_.gate_s;
     report_ = PhysicsReport();
     physics_failures_seen_ = 0;
+    std::fill(std::begin(jaws_closed_), std::end(jaws_closed_), false);
     physics_ = std::make_unique<PhysicsThread>(settings);
     return true;
 }
@@ -104,6 +105,19 @@ void LocalSession::record(const char* call, ent_status status) {
     problem_.call = call;
     problem_.message = ent_last_error();
     problem_.time_s = report_.time_s;
+}
+
+void LocalSession::send(const ToolCommands& commands) {
+    // The targets go to the physics thread, which moves the tools toward them at 1 kHz
+    // (tool_exchange.h); a change of the jaws is posted from here: the next step takes it.
+    physics_->commands().publish(commands);
+    for (std::uint32_t i = 0; i < commands.count && i < kMaxTools; ++i) {
+        if (commands.grasp[i] == jaws_closed_[i]) continue;
+        jaws_closed_[i] = commands.grasp[i];
+        const auto tool = static_cast<std::int32_t>(i);
+        const ent_status status = jaws_closed_[i] ? ent_tool_grasp(scene_, tool) : ent_tool_release(scene_, tool);
+        if (status != ENT_OK) record(jaws_closed_[i] ? "ent_tool_grasp" : "ent_tool_release", status);
+    }
 }
 
 void LocalSession::read(const FrameRequest& request, FrameState& frame) {

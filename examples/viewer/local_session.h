@@ -1,4 +1,4 @@
-// A scene simulated in this process: the library, a physics thread that alone drives the
+// A scene simulated in this process: the library, a physics thread that alone steps the
 // scene, and a skin that the render thread alone updates from the published snapshot.
 // The render thread makes every call of this class.
 #pragma once
@@ -32,7 +32,7 @@ public:
     std::string name() const override { return name_; }
     const SceneLayout& layout() const override { return layout_; }
     void read(const FrameRequest& request, FrameState& frame) override;
-    void send(const ToolCommands& commands) override { physics_->commands().publish(commands); }
+    void send(const ToolCommands& commands) override;
     void set_paused(bool paused) override { physics_->set_paused(paused); }
     bool paused() const override { return physics_->paused(); }
     void step_once() override { physics_->step_once(); }
@@ -61,6 +61,7 @@ private:
     std::unique_ptr<PhysicsThread> physics_;
     PhysicsReport report_;                     // the newest the physics thread published
     std::uint64_t physics_failures_seen_ = 0;  // of report_.failures, already in problem_
+    bool jaws_closed_[kMaxTools] = {};         // the grasp level last posted
     Problem problem_;                          // the newest failure, of either thread
 };
 

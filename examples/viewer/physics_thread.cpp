@@ -1,5 +1,6 @@
 #include "physics_thread.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -131,8 +132,8 @@ void PhysicsThread::apply_tools(double time_after_s, double dt_s) {
         ToolPose pose;
         if (i == 0 && !settings_.tool0_path.empty()) {
             // A recorded path is played as it is (its speed is the recording's).
-            pose.orientation_wxyz[0] = latest_commands_.target[0].orientation_wxyz[0];
-            for (int c = 1; c < 4; ++c) pose.orientation_wxyz[c] = latest_commands_.target[0].orientation_wxyz[c];
+            const double* orientation = latest_commands_.target[0].orientation_wxyz;
+            std::copy(orientation, orientation + 4, pose.orientation_wxyz);
             path_at(settings_.tool0_path.data(), settings_.tool0_path.size() / 4, time_after_s, pose.position_m);
         } else {
             pose = follow(report_.tools[i].pose, latest_commands_.target[i], dt_s,
@@ -145,31 +146,19 @@ void PhysicsThread::apply_tools(double time_after_s, double dt_s) {
             continue;
         }
         report_.tools[i].pose = pose;
-        const bool grasp = latest_commands_.grasp[i];
-        if (grasp != grasp_level_[i]) {
-            grasp_level_[i] = grasp;
-            const ent_status changed = grasp ? ent_tool_grasp(settings_.scene, id) : ent_tool_release(settings_.scene, id);
-            if (changed != ENT_OK) fail(grasp ? "ent_tool_grasp" : "ent_tool_release", changed);
-        }
     }
 }
 
 void PhysicsThread::read_tools(StepSample& sample) {
     for (std::uint32_t i = 0; i < settings_.tool_count; ++i) {
-        ToolReadback& tool = report_.tools[i];
-        const auto id = static_cast<std::int32_t>(i);
-        std::int32_t grasping = 0;
-        ent_status status = ent_tool_wrench(settings_.scene, id, tool.force_N, tool.torque_Nm);
+        ent_tool_feedback& feedback = report_.tools[i].feedback;
+        feedback.struct_size = sizeof feedback;
+        const ent_status status = ent_tool_read_feedback(settings_.scene, static_cast<std::int32_t>(i), &feedback);
         if (status != ENT_OK) {
-            fail("ent_tool_wrench", status);
+            fail("ent_tool_read_feedback", status);
             continue;
         }
-        status = ent_tool_state(settings_.scene, id, &grasping);
-        if (status != ENT_OK) fail("ent_tool_state", status);
-        // After a slip the level stays closed with nothing held: grasping again takes a
-        // release and a new close, as with real jaws.
-        tool.grasping = grasping != 0;
-        for (int c = 0; c < 3; ++c) sample.force_N[i][c] = static_cast<float>(tool.force_N[c]);
+        for (int c = 0; c < 3; ++c) sample.force_N[i][c] = static_cast<float>(feedback.force_N[c]);
     }
 }
 

@@ -1,11 +1,12 @@
-// The physics thread of a local session: the one thread that drives the scene. It steps at
+// The physics thread of a local session: the one thread that steps the scene. It steps at
 // the scene's pace in real time (scaled by a rate for slow motion), or, for frame-exact
 // captures, as fast as it can up to a gate the render thread moves. It never takes a lock
 // and never waits for the render thread: commands come in and reports go out through
 // LatestValue (newest wins), one StepSample per step goes out through a SampleRing, and the
 // controls are atomics. The render thread reads the scene itself only through the
-// published snapshot (ent_scene_stats, ent_scene_axis, ent_skin_update, ...), which the
-// library makes safe beside ent_scene_step.
+// published snapshot (ent_scene_stats, ent_scene_axis, ent_skin_update, ...) and posts
+// only tool commands (the jaws), both of which the library makes safe beside
+// ent_scene_step.
 #pragma once
 
 #include <enteron/enteron.h>
@@ -92,7 +93,6 @@ private:
     // Read only by the physics thread once it runs.
     PhysicsSettings settings_;
     ToolCommands latest_commands_;
-    bool grasp_level_[kMaxTools] = {};
     PhysicsReport report_;
     double time_s_ = 0.0;
 

@@ -373,15 +373,15 @@ void Renderer::draw_tools(const SceneView& view, bool colour_pass) {
         draw_capsule(tip, end, shape.radius_m, steel_material());
         // The jaws: green while they hold the bowel, amber when closed on nothing.
         const bool closed = view.targets != nullptr && i < view.targets->count && view.targets->grasp[i];
-        if (tool.grasping || closed) {
-            const Material jaws = make(tool.grasping ? linear(0.30f, 0.85f, 0.40f) : linear(1.0f, 0.70f, 0.20f), 0.5f,
+        if (tool.feedback.grasping || closed) {
+            const Material jaws = make(tool.feedback.grasping ? linear(0.30f, 0.85f, 0.40f) : linear(1.0f, 0.70f, 0.20f), 0.5f,
                                        40.0f, 0.0f);
             draw_shape(*sphere_, affine(1.35 * shape.radius_m * Eigen::Matrix3d::Identity(), tip), jaws);
         }
         if (!colour_pass || !view.toggles.force_arrows) continue;
         // The force on the tool (what a haptic device would render), from the tip: green
         // when small, yellow at the tool's max_force (colours the pink bowel does not have).
-        const Eigen::Vector3d force = point(tool.force_N);
+        const Eigen::Vector3d force = point(tool.feedback.force_N);
         const float load = static_cast<float>(std::min(1.0, force.norm() / std::max(shape.max_force_N, 1e-9)));
         const Material arrow = make(linear(0.25f + 0.75f * load, 0.90f - 0.05f * load, 0.30f - 0.20f * load), 0.3f,
                                     30.0f, 0.0f);

@@ -31,6 +31,7 @@ inline const char* status_name(ent_status status) {
         case ENT_ERROR_NOT_FOUND: return "ENT_ERROR_NOT_FOUND";
         case ENT_ERROR_BUFFER_TOO_SMALL: return "ENT_ERROR_BUFFER_TOO_SMALL";
         case ENT_ERROR_INTERNAL: return "ENT_ERROR_INTERNAL";
+        case ENT_ERROR_BUSY: return "ENT_ERROR_BUSY";
         default: return "ENT_ERROR_?";
     }
 }

@@ -1,14 +1,15 @@
-// What the render thread asks of the tools and what they felt: the small exchange between
-// the render thread (the mouse) and the physics thread (the only thread that may drive the
-// scene, see "Threads" in enteron.h).
+// What the render thread asks of the tools and what they felt.
 //
-// The render thread publishes ToolCommands (newest wins, LatestValue); the physics thread
-// takes them at the start of a tick, moves each tool toward its target no faster than
-// max_speed (a mouse click must not teleport a 30 cm shaft through the bowel), sets the
-// pose, grasps or releases on a change of the grasp level, steps, and reads the wrench
-// back. When ent_tool_set_pose, ent_tool_grasp and the wrench become callable from any
-// thread (issue 16), the render thread can make those calls itself and follow() moves
-// to its side; the rest of the viewer does not change.
+// The tool commands of the library (ent_tool_set_pose, ent_tool_grasp, ent_tool_release)
+// may be posted from any thread: the next step takes them. The viewer posts the jaws'
+// changes from the render thread itself (LocalSession::send). The pose it does not: a
+// mouse moves at the frame rate, 60 Hz or less, and a pose posted once a frame would
+// make the tool jump within one 1 ms step and rest for the next fifteen. So the render
+// thread publishes its targets (ToolCommands, newest wins) and the physics thread, like
+// a haptic device's 1 kHz loop, moves each tool toward its target before every step no
+// faster than max_speed (a click must not teleport a 30 cm shaft through the bowel) and
+// posts that pose. After the step it reads what each tool felt, ent_tool_read_feedback,
+// from the published snapshot.
 #pragma once
 
 #include <enteron/enteron.h>
@@ -29,17 +30,15 @@ struct ToolPose {
 struct ToolCommands {
     std::uint32_t count = 0;           // tools commanded, <= kMaxTools
     ToolPose target[kMaxTools];        // where each tool should go
-    bool grasp[kMaxTools] = {};        // jaws closed (a level, not an edge)
+    bool grasp[kMaxTools] = {};        // jaws closed (a level, not an edge; posted by the render thread)
     double max_speed_m_per_s = 1.0;    // tip speed limit toward the target
     double max_turn_rad_per_s = 3.0;   // rotation speed limit toward the target
 };
 
 // Physics thread -> render thread: a tool after the last step.
 struct ToolReadback {
-    ToolPose pose;                     // the pose the scene used
-    double force_N[3] = {0.0, 0.0, 0.0};    // on the tool, from the bowel (ent_tool_wrench)
-    double torque_Nm[3] = {0.0, 0.0, 0.0};  // about the tip
-    bool grasping = false;             // ent_tool_state
+    ToolPose pose;                     // the pose posted for that step
+    ent_tool_feedback feedback{};      // force, torque, grasp, contacts (ent_tool_read_feedback)
 };
 
 // Moves a pose toward a target over dt_s, no faster than the given speeds; returns the

@@ -113,7 +113,7 @@ void Viewer::build_panels() {
         }
         bool grasp = commands.grasp[active];
         if (ImGui::Checkbox("jaws closed (G)", &grasp)) tools_.set_grasp(grasp);
-        const ToolReadback& tool = frame_.tools[active];
+        const ent_tool_feedback& tool = frame_.tools[active].feedback;
         ImGui::SameLine();
         if (tool.grasping)
             ImGui::TextColored(ImVec4(0.4f, 0.9f, 0.5f, 1.0f), "holding the bowel");
@@ -123,8 +123,8 @@ void Viewer::build_panels() {
         const double magnitude = std::sqrt(tool.force_N[0] * tool.force_N[0] + tool.force_N[1] * tool.force_N[1] +
                                            tool.force_N[2] * tool.force_N[2]);
         const double max_force = session_->layout().tools[active].max_force_N;
-        ImGui::Text("F = (%+.2f, %+.2f, %+.2f) N  |F| = %.2f N", tool.force_N[0], tool.force_N[1], tool.force_N[2],
-                    magnitude);
+        ImGui::Text("F = (%+.2f, %+.2f, %+.2f) N  |F| = %.2f N  %u contacts", tool.force_N[0], tool.force_N[1],
+                    tool.force_N[2], magnitude, tool.contacts);
         ImGui::Text("force on the tool, last %.0f s (bound %.1f N):", Histories::kPlotSeconds, max_force);
         const float top = static_cast<float>(std::max(0.5, std::min(max_force, 1.2 * histories_.force_magnitude[active].largest())));
         force_plot("##|F|", histories_.force_magnitude[active], top, 70.0f);
@@ -271,7 +271,7 @@ void Viewer::build_hud() {
                      ImGuiWindowFlags_NoSavedSettings);
     ImGui::Text("Enteron   t = %.2f s", frame_.time_s);
     if (tools_.count() > 0) {
-        const ToolReadback& tool = frame_.tools[0];
+        const ent_tool_feedback& tool = frame_.tools[0].feedback;
         const double magnitude = std::sqrt(tool.force_N[0] * tool.force_N[0] + tool.force_N[1] * tool.force_N[1] +
                                            tool.force_N[2] * tool.force_N[2]);
         const double max_force = session_->layout().tools[0].max_force_N;
