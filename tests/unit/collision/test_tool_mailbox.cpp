@@ -66,8 +66,13 @@ TEST(ToolMailbox, ConcurrentPostsNeverTearAPose) {
     long taken_count = 0, torn = 0, backwards = 0;
     double last[kPosters] = {0.0, 0.0, 0.0};
     ToolPose taken;
-    while (running.load() > 0 || mailbox.take_pose(taken)) {
-        if (!mailbox.take_pose(taken)) continue;
+    for (;;) {
+        // Read before the take: once the posters are done, one more take drains the last post.
+        const bool posting = running.load() > 0;
+        if (!mailbox.take_pose(taken)) {
+            if (posting) continue;
+            break;
+        }
         ++taken_count;
         const double x = taken.position[0];
         const int t = static_cast<int>(taken.orientation[0] - 1.0 + 0.5);
