@@ -16,8 +16,9 @@
  * work counters of ent_stats and ent_effect_stats record a step the guard gave up on).
  *
  * Threads (a physics thread at 1 kHz, a haptic thread, a render thread):
- * - The driving calls change the simulation: ent_scene_step, ent_scene_add_obstacle and
- *   ent_tool_add. One of them at a time per scene: a driving call made while another runs
+ * - The driving calls change (or read) the live simulation: ent_scene_step,
+ *   ent_scene_add_obstacle, ent_tool_add, ent_scene_save_state and ent_scene_restore_state.
+ *   One of them at a time per scene: a driving call made while another runs
  *   on the same scene on another thread returns ENT_ERROR_BUSY at once and changes nothing
  *   (the check costs one atomic operation). The driving thread may change between calls.
  * - The tool commands (ent_tool_set_pose, ent_tool_grasp, ent_tool_release) are safe from
@@ -25,13 +26,15 @@
  *   mailbox, which the next ent_scene_step takes at its start (the last command posted
  *   before that wins). A haptic thread posts poses while the physics thread steps.
  * - The queries read the last published snapshot: ent_scene_axis,
- *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, and each tool's
- *   output (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state). A snapshot is an
- *   immutable copy of the state made at creation, after each driving call and at the end
- *   of every step (a step that fails publishes the same state with its work counters).
- *   Any number of threads may query at the same time as each other and as the step; each
- *   query sees one whole snapshot, never a mix of two, and snapshots seen by one thread
- *   never go back in time. A query pins a snapshot only while it copies from it, and the
+ *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, the contacts
+ *   (ent_scene_contacts, ent_scene_contact_summary) and each tool's output
+ *   (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state, ent_tool_read_contacts). A
+ *   snapshot is an immutable copy of the state made at creation, after each driving call
+ *   and at the end of every step (a step that fails publishes the same state with its work
+ *   counters). Any number of threads may query at the same time as each other and as the
+ *   step; each query sees one whole snapshot, never a mix of two, and snapshots seen by one
+ *   thread never go back in the order they were published (a restore publishes an earlier
+ *   instant as a new snapshot: its time and step count go back). A query pins a snapshot only while it copies from it, and the
  *   stepping thread never waits for a copy: it publishes into a free slot of a small pool
  *   (8 slots; with up to 7 queries running at once every step is published, beyond that a
  *   publication may be skipped and the next one goes through).
@@ -437,6 +440,54 @@ ENT_API ent_status ent_scene_effect_stats(const ent_scene* scene, int32_t effect
 /** The JSON-style name of an effect ("stretch", "gravity", ...), or NULL if unknown. */
 ENT_API const char* ent_effect_name(int32_t effect);
 
+/**
+ * Saves the whole state of the scene into buffer: a versioned, self-describing binary image
+ * (docs/save-restore.md lays it out) of everything its future depends on: the control
+ * points' positions and velocities, the time, the integrator's history, each effect's state
+ * (the tools' poses, grasps and contact impulses; the self-contact's near pairs, which a
+ * restored scene must search in the same order), the counters of ent_stats and
+ * ent_effect_stats, and what the last step published (contacts, tool feedback). A scene
+ * restored from it (ent_scene_restore_state) continues bit-identically to this one.
+ * Commands posted to the tools' mailboxes and not yet taken are not part of it.
+ * @code
+ *   size_t size = 0;
+ *   ent_scene_save_state(scene, NULL, 0, &size);       // how much room it needs now
+ *   void* saved = malloc(2 * size);                     // the size varies with the contacts
+ *   ent_scene_save_state(scene, saved, 2 * size, &size);
+ *   ...
+ *   ent_scene_restore_state(scene, saved, size);        // back to that instant
+ * @endcode
+ * @param buffer where to write the state; NULL: only *out_size is set.
+ * @param capacity bytes that buffer holds.
+ * @param out_size receives the size of the state, bytes (also on ENT_ERROR_BUFFER_TOO_SMALL).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (scene or out_size NULL); ENT_ERROR_BUFFER_TOO_SMALL
+ *         (capacity below the size: *out_size set, nothing written); ENT_ERROR_BUSY.
+ * Allocates nothing; the scene does not change.
+ * @warning A driving call: one at a time per scene (it reads the live state, not a snapshot).
+ */
+ENT_API ent_status ent_scene_save_state(ent_scene* scene, void* buffer, size_t capacity, size_t* out_size);
+
+/**
+ * Restores a state saved by ent_scene_save_state, into the scene it was saved from or into
+ * another made from the same description (the same JSON or ent_scene_desc, and the same
+ * obstacles and tools added in the same order), and publishes it: the queries and skins
+ * see the saved instant at once, and the next ent_scene_step continues from it exactly as
+ * the saved scene did (bit-identical, given the same calls). It also gets a scene out of a
+ * state that keeps failing with ENT_ERROR_UNSTABLE. Tool commands posted and not yet taken
+ * stay posted: the next step takes them.
+ * The whole image is checked before anything changes: its format and version, that it was
+ * saved from a scene with this one's description (a fingerprint), its size and checksum,
+ * and every value (finite positions, velocities, time, poses; indices in range).
+ * Allocates a little work space for that check.
+ * @param buffer the image, size bytes; not retained.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, not a saved state, truncated or changed
+ *         data, saved from another scene, a bad value: the message names it; nothing
+ *         changes); ENT_ERROR_VERSION (saved by a newer library with a format this one does
+ *         not read; nothing changes); ENT_ERROR_BUSY; ENT_ERROR_OUT_OF_MEMORY.
+ * @warning A driving call: one at a time per scene.
+ */
+ENT_API ent_status ent_scene_restore_state(ent_scene* scene, const void* buffer, size_t size);
+
 /* ------------------------------------------------------------------------------------ */
 /* Environment: the abdominal cavity and other organs                                   */
 /* ------------------------------------------------------------------------------------ */
@@ -632,6 +683,125 @@ typedef struct ent_tool_feedback {
  *         ENT_ERROR_NOT_FOUND (unknown tool).
  */
 ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, ent_tool_feedback* out);
+
+/* ------------------------------------------------------------------------------------ */
+/* Contacts: what touches the bowel, where and how hard (for scoring a trainee)          */
+/* ------------------------------------------------------------------------------------ */
+
+/** What a contact of the bowel touches (ent_contact.kind). Passed as int32_t. */
+#define ENT_CONTACT_SELF 0     /**< another fold of the bowel */
+#define ENT_CONTACT_OBSTACLE 1 /**< an obstacle of the environment (ent_contact.index: its index) */
+#define ENT_CONTACT_TOOL 2     /**< a tool (ent_contact.index: its id) */
+
+/**
+ * One contact of the bowel in the last published step: its last evaluation of the contact
+ * forces, the one whose forces moved the bowel and whose sum the tools report. A place on
+ * the bowel is u in [0, 1], its arc length from the first end over the axis' length (as
+ * ent_mesh_view.axis_u), at the collision sphere that touches (spheres are
+ * collision_sphere_spacing_m apart, R / 2 by default). Later releases append fields.
+ */
+typedef struct ent_contact {
+    uint32_t struct_size; /**< set in the first element by the caller (see ent_scene_contacts). */
+    int32_t kind;         /**< ENT_CONTACT_*. */
+    int32_t index;        /**< the obstacle's index or the tool's id; -1 for a self-contact. */
+    double u;             /**< where on the bowel, in [0, 1]. */
+    double other_u;       /**< self-contact: where the other fold touches, in [0, 1] (> u); else -1. */
+    double point_m[3];    /**< the contact point, m: on the obstacle's or the tool's surface; self-contact: midway between the folds' axes. */
+    double normal[3];     /**< unit normal pushing the bowel at u away from what it touches (self-contact: from the fold at other_u). */
+    double depth_m;       /**< penetration, m, > 0. */
+    double force_N[3];    /**< force on the bowel at u, N (self-contact: the fold at other_u gets minus it). */
+} ent_contact;
+
+/**
+ * Copies the contacts of the last published step into out: the tools' first (by tool id,
+ * then along the bowel), then the obstacles', then the self-contacts'. Set
+ * out[0].struct_size to sizeof(ent_contact): the library writes the first struct_size bytes
+ * of each element, struct_size bytes apart, so a caller built against an older, smaller
+ * ent_contact keeps working. *out_count receives the number of contacts listed; with out
+ * NULL (any capacity) only the count is reported. A capacity below the count gives
+ * ENT_ERROR_BUFFER_TOO_SMALL with *out_count set and nothing copied: size the array once
+ * with ent_contact_summary.capacity, the most a step lists. A step lists at most 4 contacts
+ * per collision sphere; beyond that it lists the first (ent_contact_summary counts those
+ * found and those listed). After a step that failed (ENT_ERROR_UNSTABLE) the list is that of
+ * its last attempt, as ent_stats.contacts is.
+ * Any thread, also while the scene steps: never waits, allocates nothing.
+ * @code
+ *   ent_contact_summary summary = {0};
+ *   summary.struct_size = sizeof summary;
+ *   ent_scene_contact_summary(scene, &summary);
+ *   ent_contact* contacts = calloc(summary.capacity + 1, sizeof *contacts);  // once
+ *   contacts[0].struct_size = sizeof *contacts;
+ *   uint32_t count = 0;
+ *   if (ent_scene_contacts(scene, summary.capacity + 1, contacts, &count) == ENT_OK)
+ *       for (uint32_t i = 0; i < count; ++i) if (contacts[i].kind == ENT_CONTACT_TOOL) score(contacts[i].u);
+ * @endcode
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (scene or out_count NULL);
+ *         ENT_ERROR_VERSION (out[0].struct_size); ENT_ERROR_BUFFER_TOO_SMALL.
+ */
+ENT_API ent_status ent_scene_contacts(const ent_scene* scene, uint32_t capacity, ent_contact* out,
+                                      uint32_t* out_count);
+
+/** The bowel's contacts and stretch in the last published step: what a trainer scores as tissue stress. */
+typedef struct ent_contact_summary {
+    uint32_t struct_size;       /**< set by the caller to sizeof(ent_contact_summary). */
+    uint32_t capacity;          /**< the most contacts a step lists (4 per collision sphere; 0 without contact effects). */
+    uint32_t listed;            /**< contacts ent_scene_contacts gives for this step. */
+    uint32_t found;             /**< contacts found: more than listed when the list was full. */
+    uint32_t self_contacts;     /**< found, of each kind. */
+    uint32_t obstacle_contacts;
+    uint32_t tool_contacts;
+    double largest_force_N;     /**< the largest |force| of any contact found, N. */
+    double largest_force_u;     /**< where on the bowel (u in [0, 1]); 0 without contacts. */
+    /** The largest stretch of a segment of the axis between two control points: its arc length
+     *  over its rest length, minus 1 (0.05: 5 % longer than at rest; negative: every segment shorter). */
+    double largest_stretch;
+    double largest_stretch_u;   /**< where: the middle of that segment (u in [0, 1]). */
+    double time_s;              /**< simulated time of the published state. */
+    uint64_t steps;             /**< its successful step count (as ent_stats.steps). */
+} ent_contact_summary;
+
+/**
+ * Fills *out from the last published snapshot. Set out->struct_size first; fields beyond
+ * an older, smaller struct_size are not written. The stretch is measured on the published
+ * control points here, on the calling thread (one pass over the axis).
+ * Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size).
+ */
+ENT_API ent_status ent_scene_contact_summary(const ent_scene* scene, ent_contact_summary* out);
+
+/**
+ * What one tool touches and holds in the last published step. The caller sets struct_size
+ * and, to receive the ranges of the bowel the tool touches, range_capacity and ranges_u.
+ */
+typedef struct ent_tool_contacts {
+    uint32_t struct_size;       /**< in: sizeof(ent_tool_contacts). */
+    uint32_t range_capacity;    /**< in: ranges that ranges_u has room for. */
+    /** in: an array of range_capacity x 2 doubles, or NULL. Receives the ranges of u the tool
+     *  touches, first and last u of each, along the bowel: runs of neighbouring collision
+     *  spheres touching it (a range of one sphere has first = last). */
+    double* ranges_u;
+    uint32_t range_count;       /**< ranges touched; when above range_capacity, only the first range_capacity are written. */
+    uint32_t contacts;          /**< collision spheres touching the tool. */
+    int32_t grasping;           /**< 1 while a grasp holds (as ent_tool_state). */
+    double grasp_u;             /**< where the grasp took hold (u in [0, 1]) while grasping; else -1. */
+    double largest_force_N;     /**< the largest |force| of one of its contacts, N. */
+    /** The impulse of the bowel's contacts on the tool since it was added, N s: each step's
+     *  contact force times its dt, summed as vectors. The grasp's force is not in it. */
+    double contact_impulse_Ns[3];
+    double contact_impulse_magnitude_Ns; /**< the same with each step's force magnitude: how hard for how long. */
+    double time_s;              /**< simulated time of the published state. */
+    uint64_t steps;             /**< its successful step count. */
+} ent_tool_contacts;
+
+/**
+ * Fills *out with what the tool touched and held in the last published step, from one
+ * snapshot. The sum of the tool's contact forces (ent_scene_contacts, kind ENT_CONTACT_TOOL)
+ * and of its grasp spring is minus its wrench (ent_tool_wrench).
+ * Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL; ranges_u NULL with a range_capacity);
+ *         ENT_ERROR_VERSION (struct_size); ENT_ERROR_NOT_FOUND (unknown tool).
+ */
+ENT_API ent_status ent_tool_read_contacts(const ent_scene* scene, int32_t tool, ent_tool_contacts* out);
 
 /* ------------------------------------------------------------------------------------ */
 /* Skins: a closed triangle mesh of the bowel surface, for rendering                    */

@@ -45,6 +45,11 @@ public:
     const double* velocities(const double* v);
 
     std::size_t size() const { return spheres_.size(); }
+    std::size_t control_points() const { return control_points_; }
+    // Forgets the placement, so that the next update places the spheres anew (with the same
+    // bits: a placement depends on the control points only) and counts a new placement: the
+    // caches keyed on placements are dropped (after a restore).
+    void forget_placement() { placed_ = false; }
     const Sphere& operator[](std::size_t i) const { return spheres_[i]; }
     double radius() const { return radius_; }
     double rest_spacing() const { return rest_spacing_; }

@@ -13,7 +13,8 @@ EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParam
       contact_(contact),
       obstacles_(memory),
       contacts_(memory),
-      loads_(loads) {
+      loads_(loads),
+      log_(ContactKind::obstacle, kLoggedContactsPerSphere * spheres.size(), memory) {
     obstacles_.reserve(obstacles.size());
     for (const Obstacle& obstacle : obstacles) add_obstacle(obstacle);
     spheres_.update(initial.q.data());  // the stability bounds use the spheres' weights
@@ -38,12 +39,13 @@ void EnvironmentForce::find_contacts(const mechanics::State& state) const {
     contacts_.clear();
     const double r = spheres_.radius();
     for (std::size_t i = 0; i < spheres_.size(); ++i)
-        for (const Obstacle& obstacle : obstacles_)
-            for_each_contact(obstacle, spheres_[i].center, r, [&](const ObstacleContact& c) {
+        for (std::size_t k = 0; k < obstacles_.size(); ++k)
+            for_each_contact(obstacles_[k], spheres_[i].center, r, [&](const ObstacleContact& c) {
                 // Field by field: a whole-struct copy read the contact just written with
                 // wider loads than its stores, which stalls (store-to-load forwarding fails).
                 Contact& contact = contacts_.emplace_back();
                 contact.sphere = static_cast<uint32_t>(i);
+                contact.obstacle = static_cast<uint32_t>(k);
                 contact.contact.depth = c.depth;
                 contact.contact.normal = c.normal;
             });
@@ -54,6 +56,8 @@ void EnvironmentForce::find_contacts(const mechanics::State& state) const {
 void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/, const mechanics::Linearization* lin) {
     find_contacts(state);
     last_ = {};
+    log_.clear();
+    const double r = spheres_.radius();
     // The velocity of the spheres in contact only (in sphere order: once per sphere); most
     // spheres touch nothing.
     std::size_t have_velocity = spheres_.size();  // the sphere whose velocity v holds
@@ -65,6 +69,9 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/
         const ContactForce f = contact_force(contact_, c.depth, c.normal, v);
         last_.count += 1;
         last_.max_penetration = std::max(last_.max_penetration, c.depth);
+        // The point of the obstacle's surface the sphere reaches into.
+        log_.add(contact.sphere, contact.obstacle, c.depth, spheres_[i].center - (r - c.depth) * c.normal, c.normal,
+                 f.force);
         if (lin == nullptr) {
             loads_.add_force(i, f.force);
             continue;
@@ -99,6 +106,25 @@ void EnvironmentForce::add_damping_bound(numerics::ScalarBandMatrix& bound) cons
 void EnvironmentForce::summary_add(mechanics::ContactSummary& summary) const {
     summary.count += last_.count;
     summary.max_penetration = std::max(summary.max_penetration, last_.max_penetration);
+}
+
+void EnvironmentForce::save_state(StateWriter& out) const {
+    out.begin_section("environment", 1);
+    out.u32(last_.count);
+    out.f64(last_.max_penetration);
+    log_.save_state(out);
+    out.end_section();
+}
+
+void EnvironmentForce::restore_state(StateReader& in) {
+    in.begin_section("environment", 1);
+    const uint32_t contacts = in.u32("contacts");
+    const double max_penetration = in.f64("deepest contact");
+    log_.restore_state(in, spheres_.size(), obstacles_.size());
+    in.end_section();
+    if (in.checking()) return;
+    last_ = {contacts, max_penetration};
+    contacts_for_ = 0;
 }
 
 }  // namespace enteron::collision

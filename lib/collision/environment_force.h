@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "collision/collision_spheres.h"
+#include "collision/contact_log.h"
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
 #include "collision/sphere_loads.h"
@@ -32,6 +33,13 @@ public:
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override { summary_add(summary); }
+    // The contacts of the last evaluation (what it publishes): the obstacles and their
+    // contacts are found again from the positions.
+    void save_state(StateWriter& out) const override;
+    void restore_state(StateReader& in) override;
+
+    // The contacts of the last evaluation; `other` is the obstacle's index.
+    const ContactLog& contact_log() const { return log_; }
 
     // Adds an obstacle (validated; a plane's normal is normalised here). The caller
     // refinalises the dynamics, since the stability bounds change.
@@ -40,6 +48,7 @@ public:
 private:
     struct Contact {
         uint32_t sphere;
+        uint32_t obstacle;  // its index
         ObstacleContact contact;
     };
     // Finds the contacts of the spheres placed for `state`, once per placement: the guard's
@@ -58,6 +67,7 @@ private:
     mutable uint64_t contacts_for_ = 0;
     SphereLoads& loads_;  // shared with the other contact effects
     mechanics::ContactSummary last_;
+    ContactLog log_;
 };
 
 }  // namespace enteron::collision

@@ -40,7 +40,9 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
       contacts_(memory),
       loads_(loads),
       contact_(contact),
-      neighbour_spheres_(static_cast<std::size_t>(std::ceil(kPi * spheres_.radius() / spheres_.rest_spacing() - 1e-9))) {
+      neighbour_spheres_(static_cast<std::size_t>(std::ceil(kPi * spheres_.radius() / spheres_.rest_spacing() - 1e-9))),
+      log_(ContactKind::self, kLoggedContactsPerSphere * spheres_.size(), memory),
+      memory_(memory) {
     // Room for the densest pile: spheres of radius R whose centres lie within 2.5R of one
     // sphere number at most about 40 (volume ratio), each pair listed once. The contacts
     // are among the listed pairs.
@@ -204,6 +206,7 @@ void SelfContactForce::for_each_contact(Visit&& visit) const {
 // The forces reach `force` when the owner of loads_ applies them, after every contact effect.
 void SelfContactForce::evaluate(const mechanics::State& state, double* /*force*/, const mechanics::Linearization* lin) {
     last_ = {};
+    log_.clear();
     find_contacts(state);
     const double* velocities = contacts_.empty() && contacts_complete_ ? nullptr : spheres_.velocities(state.v.data());
     for_each_contact([&](std::size_t i, std::size_t j, double depth, const Vec3& n) {
@@ -212,6 +215,8 @@ void SelfContactForce::evaluate(const mechanics::State& state, double* /*force*/
         const Vec3 opposite = -f.force;
         last_.count += 1;
         last_.max_penetration = std::max(last_.max_penetration, depth);
+        log_.add(static_cast<uint32_t>(i), static_cast<uint32_t>(j), depth,
+                 0.5 * (point_at(positions_.data(), i) + point_at(positions_.data(), j)), n, f.force);
         if (lin == nullptr) {
             loads_.add_force(i, f.force);
             loads_.add_force(j, opposite);
@@ -246,6 +251,54 @@ void SelfContactForce::add_damping_bound(numerics::ScalarBandMatrix& bound) cons
 void SelfContactForce::add_contacts(mechanics::ContactSummary& summary) const {
     summary.count += last_.count;
     summary.max_penetration = std::max(summary.max_penetration, last_.max_penetration);
+}
+
+void SelfContactForce::save_state(StateWriter& out) const {
+    out.begin_section("self_contact", 1);
+    out.u32(static_cast<uint32_t>(spheres_.size()));
+    out.u64(searches_);
+    out.u64(moved_searches_);
+    out.u8(near_pairs_complete_ ? 1 : 0);
+    out.f64s(centers_.data(), centers_.size());
+    out.u32(static_cast<uint32_t>(near_pairs_.size()));
+    for (const auto& [a, b] : near_pairs_) {
+        out.u32(a);
+        out.u32(b);
+    }
+    grid_.save_filing(out);
+    out.u32(last_.count);
+    out.f64(last_.max_penetration);
+    log_.save_state(out);
+    out.end_section();
+}
+
+void SelfContactForce::restore_state(StateReader& in) {
+    in.begin_section("self_contact", 1);
+    const std::size_t count = spheres_.size();
+    if (in.u32("collision spheres") != count) in.fail("saved with another number of collision spheres");
+    const uint64_t searches = in.u64("searches");
+    const uint64_t moved_searches = in.u64("moved-sphere searches");
+    const bool complete = in.flag("near pairs complete");
+    // A centre may be NaN: a sphere filed where a rejected attempt blew up searches again.
+    in.any_f64s("sphere centres at their last search", centers_.size(), in.checking() ? nullptr : centers_.data());
+    const uint32_t pairs = in.count("near pairs", near_pairs_.capacity());
+    if (!in.checking()) near_pairs_.clear();
+    for (uint32_t k = 0; k < pairs; ++k) {
+        const uint32_t a = in.index("near pair sphere", count), b = in.index("near pair sphere", count);
+        if (!(a < b) || neighbours(a, b)) in.fail("a near pair of neighbouring or unordered spheres");
+        if (!in.checking()) near_pairs_.emplace_back(a, b);
+    }
+    grid_.restore_filing(in, centers_.data(), 3, memory_);
+    const uint32_t contacts = in.u32("contacts");
+    const double max_penetration = in.f64("deepest contact");
+    log_.restore_state(in, count, count);
+    in.end_section();
+    if (in.checking()) return;
+    searches_ = searches;
+    moved_searches_ = moved_searches;
+    near_pairs_complete_ = complete;
+    last_ = {contacts, max_penetration};
+    contacts_for_ = 0;  // the contacts of the restored placement are found again, from these pairs
 }
 
 }  // namespace enteron::collision

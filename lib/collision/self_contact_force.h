@@ -18,6 +18,7 @@
 
 #include "base/geometry.h"
 #include "collision/collision_spheres.h"
+#include "collision/contact_log.h"
 #include "collision/contact_model.h"
 #include "collision/spatial_hash.h"
 #include "collision/sphere_loads.h"
@@ -40,6 +41,14 @@ public:
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
+    // The near pairs, the grid's filing and the centres they were found at: the
+    // continuation of a restored scene finds its pairs in the same order, and so sums the
+    // same forces in the same order. Also the contacts of the last evaluation (published).
+    void save_state(StateWriter& out) const override;
+    void restore_state(StateReader& in) override;
+
+    // The contacts of the last evaluation, one per pair; `other` is the pair's second sphere.
+    const ContactLog& contact_log() const { return log_; }
 
     // How many times the grid was searched: for every sphere (the list of near pairs
     // remade) or for the spheres that moved only (their pairs remade).
@@ -100,6 +109,8 @@ private:
         return (i > j ? i - j : j - i) < neighbour_spheres_;
     }
     mechanics::ContactSummary last_;
+    ContactLog log_;
+    std::pmr::memory_resource* memory_;  // restore_state's work space
 };
 
 }  // namespace enteron::collision

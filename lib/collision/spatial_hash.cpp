@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <string>
 
 namespace enteron::collision {
 
@@ -60,6 +62,41 @@ void SpatialHash::move(std::size_t i, const Vec3& p) {
     if (*link_to_i != kEnd) *link_to_i = next_[i];
     point_cell_[i] = cell;
     link(i);
+}
+
+void SpatialHash::save_filing(StateWriter& out) const {
+    out.u32(static_cast<uint32_t>(count_));
+    for (const int32_t head : head_)
+        for (int32_t j = head; j != kEnd; j = next_[static_cast<std::size_t>(j)]) out.u32(static_cast<uint32_t>(j));
+}
+
+void SpatialHash::restore_filing(StateReader& in, const double* points, std::size_t stride,
+                                 std::pmr::memory_resource* scratch) {
+    const uint32_t count = in.count("points filed in the grid", next_.size());
+    const unsigned char* order = in.raw("grid filing order", count * sizeof(uint32_t));
+    auto at = [order](std::size_t k) {
+        uint32_t i;
+        std::memcpy(&i, order + k * sizeof i, sizeof i);
+        return i;
+    };
+    if (in.checking()) {
+        std::pmr::vector<uint8_t> seen(count, 0, scratch);  // allocates while checking only
+        for (std::size_t k = 0; k < count; ++k) {
+            const uint32_t i = at(k);
+            if (i >= count || seen[i] != 0)
+                in.fail("the grid's filing order is not each of its " + std::to_string(count) + " points once");
+            seen[i] = 1;
+        }
+        return;
+    }
+    count_ = count;
+    std::fill(head_.begin(), head_.end(), kEnd);
+    // Linked last to first: each bucket's list comes back in the order it was saved.
+    for (std::size_t k = count; k-- > 0;) {
+        const std::size_t i = at(k);
+        point_cell_[i] = cell_of(points + i * stride);
+        link(i);
+    }
 }
 
 }  // namespace enteron::collision

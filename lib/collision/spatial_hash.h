@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/geometry.h"
+#include "base/state_io.h"
 
 namespace enteron::collision {
 
@@ -25,6 +26,16 @@ public:
 
     // Refiles point i (already filed) at position p.
     void move(std::size_t i, const Vec3& p);
+
+    // Save and restore (base/state_io.h): the points filed, bucket by bucket in list order.
+    // A bucket's order is the history of its moves, and the order of the neighbours a
+    // search visits follows it; a grid restored from it visits them in the same order.
+    void save_filing(StateWriter& out) const;
+    // Reads what save_filing wrote and, unless checking, refiles the points (x y z each,
+    // `stride` doubles apart, where they were filed) in that order. The points listed must
+    // be each filed point once. `scratch` lends the work space of the check.
+    void restore_filing(StateReader& in, const double* points, std::size_t stride,
+                        std::pmr::memory_resource* scratch);
 
     // Calls visit(i, j) once for every unordered pair of points in the same or
     // neighbouring cells (a superset of the pairs closer than a cell); i and j in any order.

@@ -43,6 +43,12 @@ struct ToolOutput {
     ToolWrench wrench;      // of the last accepted step (its last evaluation)
     bool grasping = false;  // a grasp holds
     uint32_t contacts = 0;  // collision spheres touching the tool in that evaluation
+    uint32_t grasp_sphere = 0;  // while grasping: the collision sphere grasped, when the grasp took hold
+    // The impulse of the bowel's contacts on the tool since it was added (each accepted
+    // step's last evaluation times the step's dt): the vector sum, N s, and the sum of the
+    // magnitudes, N s (how hard for how long, whatever the direction).
+    Vec3 contact_impulse = Vec3::Zero();
+    double contact_impulse_magnitude = 0.0;
 };
 
 // The unit local +z axis of a unit quaternion (w x y z) in world coordinates.

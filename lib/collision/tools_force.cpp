@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "mechanics/system_matrix.h"
 
@@ -97,7 +98,8 @@ ToolsForce::ToolsForce(CollisionSpheres& spheres, const ContactParameters& conta
       channels_(channels),
       contact_(contact),
       tools_(memory),
-      hits_(memory) {
+      hits_(memory),
+      log_(ContactKind::tool, kLoggedContactsPerSphere * spheres.size(), memory) {
     hits_.reserve(spheres_.size());  // one contact per sphere and tool at most: no allocation in steps
     spheres_.update(initial.q.data());
 }
@@ -139,10 +141,12 @@ ToolsForce::Segment ToolsForce::segment_at(const Tool& tool, double t) const {
 void ToolsForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
     spheres_.update(state.q.data());
     last_ = {};
+    log_.clear();
     const double r = spheres_.radius();
     // The implicit step solves for the end of the substep: meet the tool where it is then.
     const double t = state.time + (lin != nullptr ? lin->h : 0.0);
-    for (Tool& tool : tools_) {
+    for (std::size_t index = 0; index < tools_.size(); ++index) {
+        Tool& tool = tools_[index];
         const Segment segment = segment_at(tool, t);
         const Shaft shaft(segment.tip, segment.tail, tool.settings.radius + r);
         hits_.clear();
@@ -195,11 +199,15 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             total_magnitude > tool.settings.max_force ? tool.settings.max_force / total_magnitude : 1.0;
         ToolWrench wrench;
         wrench.force = -scale * total;
+        Vec3 contact_force = Vec3::Zero();  // of the contacts on the bowel
         for (const Hit& hit : hits_) {
             const Sphere& sphere = spheres_[hit.sphere];
             const Vec3 f = scale * hit.force.force;
             add_point_force(sphere.weights, f, force);
             wrench.torque += (hit.point - segment.tip).cross(-f);
+            contact_force += f;
+            log_.add(static_cast<uint32_t>(hit.sphere), static_cast<uint32_t>(index), hit.depth, hit.point, hit.normal,
+                     f);
             if (lin == nullptr) continue;
             const ContactForce& cf = hit.force;
             // Scaled with the force.
@@ -220,6 +228,7 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             }
         }
         tool.attempt_wrench = wrench;
+        tool.attempt_contact_force = -contact_force;
     }
 }
 
@@ -264,6 +273,7 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
         if (d2 <= best) {
             best = d2;
             tool.grasp_point = spheres_[i].weights;
+            tool.grasp_sphere = static_cast<uint32_t>(i);
             found = true;
         }
     }
@@ -332,11 +342,91 @@ void ToolsForce::end_step(bool accepted) {
             tool.wrench = tool.attempt_wrench;
             tool.contacts = tool.attempt_contacts;
             tool.current = tool.target;
+            tool.contact_impulse += step_dt_ * tool.attempt_contact_force;
+            tool.contact_impulse_magnitude += step_dt_ * tool.attempt_contact_force.norm();
         }
         tool.slipped = false;
-        outputs[i] = ToolOutput{tool.wrench, tool.grasping, tool.contacts};
+        outputs[i] = output_of(tool);
     }
     step_dt_ = 0.0;
+}
+
+ToolOutput ToolsForce::output_of(const Tool& tool) {
+    ToolOutput output;
+    output.wrench = tool.wrench;
+    output.grasping = tool.grasping;
+    output.contacts = tool.contacts;
+    output.grasp_sphere = tool.grasp_sphere;
+    output.contact_impulse = tool.contact_impulse;
+    output.contact_impulse_magnitude = tool.contact_impulse_magnitude;
+    return output;
+}
+
+namespace {
+
+void save_pose(StateWriter& out, const ToolPose& pose) {
+    out.f64s(pose.position.data(), 3);
+    out.f64s(pose.orientation.data(), 4);
+}
+
+ToolPose restore_pose(StateReader& in, const char* what) {
+    ToolPose pose;
+    in.f64s(what, 3, pose.position.data());
+    in.f64s(what, 4, pose.orientation.data());
+    if (!(std::fabs(Eigen::Map<const Vec4>(pose.orientation.data()).norm() - 1.0) <= 1e-9))
+        in.fail(std::string(what) + ": the orientation is not a unit quaternion");
+    return pose;
+}
+
+}  // namespace
+
+void ToolsForce::save_state(StateWriter& out) const {
+    out.begin_section("tools", 1);
+    out.u32(static_cast<uint32_t>(tools_.size()));
+    for (const Tool& tool : tools_) {
+        save_pose(out, tool.current);
+        save_pose(out, tool.target);
+        out.u8(tool.grasping ? 1 : 0);
+        out.u32(static_cast<uint32_t>(tool.grasp_point.first));
+        out.f64s(tool.grasp_point.w.data(), 4);
+        out.u32(tool.grasp_sphere);
+        out.f64s(tool.wrench.force.data(), 3);
+        out.f64s(tool.wrench.torque.data(), 3);
+        out.u32(tool.contacts);
+        out.f64s(tool.contact_impulse.data(), 3);
+        out.f64(tool.contact_impulse_magnitude);
+    }
+    out.u32(last_.count);
+    out.f64(last_.max_penetration);
+    log_.save_state(out);
+    out.end_section();
+}
+
+void ToolsForce::restore_state(StateReader& in) {
+    in.begin_section("tools", 1);
+    if (in.u32("tools") != tools_.size()) in.fail("saved with another number of tools");
+    for (Tool& tool : tools_) {
+        Tool saved = tool;
+        saved.current = restore_pose(in, "tool pose");
+        saved.target = restore_pose(in, "tool target pose");
+        saved.grasping = in.flag("grasping");
+        saved.grasp_point.first = in.index("first control point grasped", spheres_.control_points() - 3);
+        in.f64s("grasp weights", 4, saved.grasp_point.w.data());
+        saved.grasp_sphere = in.index("sphere grasped", spheres_.size());
+        in.f64s("tool force", 3, saved.wrench.force.data());
+        in.f64s("tool torque", 3, saved.wrench.torque.data());
+        saved.contacts = in.count("tool contacts", spheres_.size());
+        in.f64s("contact impulse", 3, saved.contact_impulse.data());
+        saved.contact_impulse_magnitude = in.f64("contact impulse magnitude");
+        if (!in.checking()) tool = saved;
+    }
+    const uint32_t contacts = in.u32("contacts");
+    const double max_penetration = in.f64("deepest contact");
+    log_.restore_state(in, spheres_.size(), tools_.size());
+    in.end_section();
+    if (in.checking()) return;
+    last_ = {contacts, max_penetration};
+    for (std::size_t i = 0; i < tools_.size(); ++i) channels_.outputs()[i] = output_of(tools_[i]);
 }
 
 }  // namespace enteron::collision

@@ -21,6 +21,7 @@
 
 #include "base/geometry.h"
 #include "collision/collision_spheres.h"
+#include "collision/contact_log.h"
 #include "collision/contact_model.h"
 #include "collision/tool.h"
 #include "collision/tool_channels.h"
@@ -52,6 +53,12 @@ public:
     // Accepted: the tools rest at their targets and a slipped grasp is let go. Not: the
     // targets stay for the next step. Either way each tool's output is written.
     void end_step(bool accepted) override;
+    // The tools' poses, grasps, outputs and impulses, and the contacts of the last evaluation.
+    void save_state(StateWriter& out) const override;
+    void restore_state(StateReader& in) override;
+
+    // The contacts of the last evaluation, tool by tool; `other` is the tool's index.
+    const ContactLog& contact_log() const { return log_; }
 
     // Adds a tool (validated, unit quaternion) resting at its pose, with its channels.
     // Allocates. Returns its index.
@@ -66,10 +73,14 @@ private:
         bool grasping = false;
         bool slipped = false;                // in the current attempt
         spline::SegmentWeights grasp_point;  // material point of the axis held
+        uint32_t grasp_sphere = 0;           // the collision sphere it was when grasped
         ToolWrench wrench;                   // of the last accepted step
         ToolWrench attempt_wrench;           // of the last evaluation
         uint32_t contacts = 0;               // of the last accepted step
         uint32_t attempt_contacts = 0;       // of the last evaluation
+        Vec3 attempt_contact_force = Vec3::Zero();  // of the contacts on the tool, last evaluation
+        Vec3 contact_impulse = Vec3::Zero();        // N s, ToolOutput's
+        double contact_impulse_magnitude = 0.0;     // N s
     };
     struct Hit {
         std::size_t sphere;
@@ -87,6 +98,8 @@ private:
     double fraction_of_step(double t) const;
     // Grasps the axis point nearest the tip within reach, if any.
     void grasp(Tool& tool, const mechanics::State& state);
+    // What a tool publishes.
+    static ToolOutput output_of(const Tool& tool);
 
     CollisionSpheres& spheres_;  // shared with the other contact effects
     ToolChannels& channels_;
@@ -96,6 +109,7 @@ private:
     double step_start_ = 0.0;
     double step_dt_ = 0.0;  // 0 between steps
     mechanics::ContactSummary last_;
+    ContactLog log_;
 };
 
 }  // namespace enteron::collision

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "base/error.h"
+#include "base/state_io.h"
 #include "mechanics/axial_blocks.h"
 
 namespace enteron::mechanics {
@@ -227,6 +228,35 @@ double Dynamics::external_work_bound() const {
     double work = 0.0;
     for (const Owned<Effect>& effect : effects_) work += effect->external_work_bound();
     return work;
+}
+
+void Dynamics::save_state(StateWriter& out) const {
+    out.begin_section("dynamics", 1);
+    for (const EffectCounters& counter : counters_) {
+        out.u64(counter.calls);
+        out.u64(counter.total_time_ns);
+    }
+    out.end_section();
+    for (const Owned<Effect>& effect : effects_) effect->save_state(out);
+    if (pinned_) pinned_->save_state(out);
+}
+
+void Dynamics::restore_state(StateReader& in) {
+    in.begin_section("dynamics", 1);
+    std::array<EffectCounters, kEffectCount> counters{};
+    for (EffectCounters& counter : counters) {
+        counter.calls = in.u64("effect calls");
+        counter.total_time_ns = in.u64("effect time");
+    }
+    in.end_section();
+    for (Owned<Effect>& effect : effects_) effect->restore_state(in);
+    if (pinned_) pinned_->restore_state(in);
+    if (!in.checking()) counters_ = counters;
+}
+
+void Dynamics::add_layout(Fingerprint& fingerprint) const {
+    for (const Owned<Effect>& effect : effects_) fingerprint.add(static_cast<uint64_t>(effect->id()));
+    fingerprint.add(uint64_t{pinned_ != nullptr});
 }
 
 Effect* Dynamics::find_effect(EffectId id) {

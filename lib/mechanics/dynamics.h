@@ -65,6 +65,14 @@ public:
 
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;
+
+    // Save and restore (base/state_io.h): the effect counters in a section of their own,
+    // then each effect's section (Effect::save_state), the pins' last. restore_state reads
+    // them back in the same order, assigning only when !in.checking().
+    void save_state(StateWriter& out) const;
+    void restore_state(StateReader& in);
+    // Adds the effects in the order they run (the order of their sections) to a fingerprint.
+    void add_layout(Fingerprint& fingerprint) const;
     // Work the effects driven from outside may do in the current step (effect.h), J.
     double external_work_bound() const;
 

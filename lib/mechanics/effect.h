@@ -16,6 +16,12 @@
 #include "mechanics/system_matrix.h"
 #include "spline/gram_matrix.h"
 
+namespace enteron {
+class Fingerprint;
+class StateWriter;
+class StateReader;
+}  // namespace enteron
+
 namespace enteron::mechanics {
 
 class AxialBlocks;
@@ -89,6 +95,14 @@ public:
     // After the last attempt: accepted (the state moved on) or not (the state is back where
     // the step began).
     virtual void end_step(bool /*accepted*/) {}
+
+    // Save and restore (base/state_io.h, docs/save-restore.md). An effect whose future
+    // depends on more than the axis state q, v, t (what it holds between steps, caches whose
+    // order the next results depend on, the outputs it publishes) writes that into its own
+    // section and reads it back: restore_state reads and validates every value, and assigns
+    // them only when !in.checking(). Effects without such state keep these empty defaults.
+    virtual void save_state(StateWriter& /*out*/) const {}
+    virtual void restore_state(StateReader& /*in*/) {}
 };
 
 }  // namespace enteron::mechanics

@@ -23,6 +23,12 @@ public:
     // Stability interval beta of the method on the imaginary axis: an explicit method is
     // stable for h (omega + gamma) <= beta. Infinite for an implicit method.
     virtual double stability_interval() const = 0;
+
+    // Save and restore (base/state_io.h), as Effect's: an integrator with a history (a
+    // multistep method's previous states) writes it into its own section and reads it back,
+    // assigning only when !in.checking(). The one-step integrators have none.
+    virtual void save_state(StateWriter& /*out*/) const {}
+    virtual void restore_state(StateReader& /*in*/) {}
 };
 
 Owned<Integrator> make_integrator(IntegratorKind kind, std::size_t coordinates,

@@ -68,8 +68,9 @@ public:
     // Energy (J) a step may gain from the reference, besides the external work.
     double energy_allowance() const;
 
-    // Attempts rejected so far.
+    // Attempts rejected so far (restored with a saved state).
     uint64_t rollbacks() const { return rollbacks_; }
+    void set_rollbacks(uint64_t rollbacks) { rollbacks_ = rollbacks; }
     // What was wrong with the last rejected attempt.
     const GuardFinding& last_finding() const { return finding_; }
 

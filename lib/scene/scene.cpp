@@ -16,6 +16,7 @@
 #include "mechanics/mesentery_force.h"
 #include "mechanics/pinned_points.h"
 #include "mechanics/stretch_force.h"
+#include "scene/scene_fingerprint.h"
 
 namespace enteron::scene {
 
@@ -76,6 +77,8 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     backup_.resize(n);
     std::copy(config.start_points.begin(), config.start_points.end(), state_.q.begin());
     collision_.contact.damping_depth = kContactDampingDepth * radius_;
+    stats_.rest_length = rest_length_;
+    add_to_fingerprint(description_, config);
 
     // A zero stiffness asks for nothing: the effect is not built and costs nothing.
     if (intestine.stretch_stiffness != 0.0)
@@ -101,10 +104,13 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     if (config.self_collision) contact_loads(EffectId::self_collision);
     if (!config.environment.empty()) add_environment(config.environment);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
-    if (config.self_collision)
-        dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact,
-                                                                     state_, memory,
-                                                                     contact_loads(EffectId::self_collision)));
+    if (config.self_collision) {
+        auto effect = make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state_,
+                                                              memory, contact_loads(EffectId::self_collision));
+        const collision::ContactLog* log = &effect->contact_log();
+        dynamics_.add_effect(std::move(effect));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::self)] = log;
+    }
 
     integrator_ = make_integrator(solver_.integrator, 3 * n, memory);
     published_.reserve_tools(tool_channels_.size());
@@ -129,6 +135,7 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle) {
     } else {
         add_environment({obstacle});
     }
+    add_to_fingerprint(description_, obstacle);
     refinalize();
     publish();
     return index;
@@ -141,6 +148,7 @@ std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
                                                         tool_channels_, memory_);
         tools = effect.get();
         dynamics_.add_effect(std::move(effect));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::tool)] = &tools->contact_log();
     }
     return tools->add_tool(tool);
 }
@@ -148,15 +156,20 @@ std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
 std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
     published_.reserve_tools(tool_channels_.size() + 1);
     const std::size_t index = add_tool_effect_only(tool);
+    add_to_fingerprint(description_, tool);
     refinalize();
     publish();
     return index;
 }
 
 collision::CollisionSpheres& Scene::collision_spheres() {
-    if (!spheres_)
-        spheres_ = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,
-                                                           sphere_spacing(), radius_, memory_);
+    if (!spheres_) {
+        auto spheres = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,
+                                                               sphere_spacing(), radius_, memory_);
+        // Room for the contacts each snapshot lists, before anything refers to the spheres.
+        published_.reserve_contacts(collision::kLoggedContactsPerSphere * spheres->size());
+        spheres_ = std::move(spheres);
+    }
     return *spheres_;
 }
 
@@ -173,9 +186,11 @@ collision::SphereLoads& Scene::contact_loads(EffectId owner) {
 }
 
 void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
-    dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact,
-                                                                 obstacles, state_, memory_,
-                                                                 contact_loads(EffectId::environment)));
+    auto effect = make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, obstacles,
+                                                          state_, memory_, contact_loads(EffectId::environment));
+    const collision::ContactLog* log = &effect->contact_log();
+    dynamics_.add_effect(std::move(effect));
+    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = log;
     obstacles_ += obstacles.size();
 }
 
@@ -308,7 +323,33 @@ void Scene::publish() {
     }
     const std::pmr::vector<collision::ToolOutput>& tools = tool_channels_.outputs();
     slot->tools.assign(tools.begin(), tools.end());  // reserved when the tools were added
+    publish_contacts(*slot);
     published_.publish(slot);
+}
+
+void Scene::publish_contacts(Snapshot& slot) const {
+    using collision::ContactKind;
+    ContactTotals& totals = slot.contact_totals;
+    totals = ContactTotals{};
+    totals.spheres = spheres_ ? static_cast<uint32_t>(spheres_->size()) : 0;
+    slot.contacts.clear();
+    double largest_squared = 0.0;
+    // The tools' first (what a trainer scores), the self-contacts' last: the first dropped
+    // when the list is full (reserved with the spheres: no allocation here).
+    for (const ContactKind kind : {ContactKind::tool, ContactKind::obstacle, ContactKind::self}) {
+        const std::size_t k = static_cast<std::size_t>(kind);
+        const collision::ContactLog* log = contact_logs_[k];
+        if (log == nullptr) continue;
+        const std::size_t listed = std::min(log->size(), slot.contacts.capacity() - slot.contacts.size());
+        slot.contacts.insert(slot.contacts.end(), log->begin(), log->begin() + listed);
+        totals.found[k] = log->found();
+        totals.listed[k] = static_cast<uint32_t>(listed);
+        if (log->largest_force_squared() > largest_squared) {
+            largest_squared = log->largest_force_squared();
+            totals.largest_force_sphere = log->largest_force_sphere();
+        }
+    }
+    totals.largest_force = std::sqrt(largest_squared);
 }
 
 }  // namespace enteron::scene

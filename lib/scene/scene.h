@@ -10,12 +10,15 @@
 // snapshots.
 #pragma once
 
+#include <array>
 #include <memory_resource>
 #include <vector>
 
 #include "base/logger.h"
 #include "base/memory.h"
+#include "base/state_io.h"
 #include "collision/collision_spheres.h"
+#include "collision/contact_log.h"
 #include "collision/sphere_loads.h"
 #include "collision/tool.h"
 #include "collision/tool_channels.h"
@@ -67,6 +70,17 @@ public:
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
 
+    // Save and restore (docs/save-restore.md; scene_state.cpp). save_state writes the state
+    // into `buffer` if it fits in `capacity` bytes (a null buffer only measures) and returns
+    // its size. restore_state checks the whole image first (format, fingerprint, every
+    // section) and throws Error naming what is wrong with the scene untouched; then it
+    // applies it and publishes the restored state. Not during a step.
+    std::size_t save_state(void* buffer, std::size_t capacity) const;
+    void restore_state(const void* data, std::size_t size);
+    // What a saved state must have been saved from (scene_fingerprint.h): the description,
+    // the obstacles and tools added since, and the effects in the order they run.
+    uint64_t fingerprint() const;
+
 private:
     // One attempt at dt in `substeps` equal substeps; false if the guard rejects it.
     bool try_step(double dt, std::size_t substeps);
@@ -88,6 +102,11 @@ private:
     void refinalize();
     // Fills a free snapshot slot from the current state and publishes it.
     void publish();
+    // The contact effects' last evaluations into a slot: tools, obstacles, then self-contacts.
+    void publish_contacts(Snapshot& slot) const;
+    // The scene's own section of a saved state, and the sections of what it holds.
+    void save_sections(StateWriter& out) const;
+    void restore_sections(StateReader& in);
 
     std::pmr::memory_resource* memory_;
     Logger logger_;
@@ -111,6 +130,9 @@ private:
     mechanics::StabilityGuard guard_;
     SceneStats stats_;
     SnapshotPublisher& published_;
+    // The logs of the contact effects, by ContactKind (null: no such effect).
+    std::array<const collision::ContactLog*, collision::kContactKinds> contact_logs_{};
+    Fingerprint description_;  // of the description, the obstacles and the tools added since
 };
 
 }  // namespace enteron::scene

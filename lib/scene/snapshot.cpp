@@ -15,6 +15,10 @@ SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_r
 
 Snapshot* SnapshotPublisher::begin_write() {
     std::lock_guard<std::mutex> lock(mutex_);
+    // The slot published before the latest, if no one reads it: the stepping thread then
+    // writes into two slots in turn, which stay in its cache (the contact list of a pile is
+    // tens of kilobytes).
+    if (previous_ != latest_ && readers_[previous_] == 0) return &slots_[previous_];
     for (std::size_t i = 1; i < kSlots; ++i) {
         const std::size_t slot = (latest_ + i) % kSlots;
         if (readers_[slot] == 0) return &slots_[slot];
@@ -24,22 +28,32 @@ Snapshot* SnapshotPublisher::begin_write() {
 
 void SnapshotPublisher::publish(Snapshot* slot) {
     std::lock_guard<std::mutex> lock(mutex_);
+    previous_ = latest_;
     latest_ = static_cast<std::size_t>(slot - slots_.data());
 }
 
-void SnapshotPublisher::reserve_tools(std::size_t count) {
+template <class Change>
+void SnapshotPublisher::change_each_slot(Change&& change) {
     for (std::size_t slot = 0; slot < kSlots; ++slot) {
         for (;;) {
             {
                 std::lock_guard<std::mutex> lock(mutex_);
                 if (readers_[slot] == 0) {
-                    slots_[slot].tools.reserve(count);
+                    change(slots_[slot]);
                     break;
                 }
             }
             std::this_thread::yield();  // a reader is copying: microseconds
         }
     }
+}
+
+void SnapshotPublisher::reserve_tools(std::size_t count) {
+    change_each_slot([count](Snapshot& slot) { slot.tools.reserve(count); });
+}
+
+void SnapshotPublisher::reserve_contacts(std::size_t count) {
+    change_each_slot([count](Snapshot& slot) { slot.contacts.reserve(count); });
 }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {

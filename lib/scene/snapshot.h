@@ -17,6 +17,7 @@
 #include <mutex>
 #include <vector>
 
+#include "collision/contact_log.h"
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
 
@@ -32,6 +33,18 @@ struct SceneStats {
     uint32_t contacts = 0;
     double max_penetration = 0.0;  // m
     uint64_t last_step_ns = 0;
+    double rest_length = 0.0;  // m, of the axis (constant)
+};
+
+// The contacts of the last evaluation, as the scene published them.
+struct ContactTotals {
+    // By ContactKind: found in the evaluation, and listed in Snapshot::contacts, which holds
+    // the tools' first, then the obstacles', then the self-contacts', up to its capacity.
+    std::array<uint32_t, collision::kContactKinds> found{};
+    std::array<uint32_t, collision::kContactKinds> listed{};
+    double largest_force = 0.0;         // N, of every contact found
+    uint32_t largest_force_sphere = 0;  // where
+    uint32_t spheres = 0;               // collision spheres (0: none): sphere i is at u = i / (spheres - 1)
 };
 
 struct EffectStats {
@@ -41,11 +54,13 @@ struct EffectStats {
 };
 
 struct Snapshot {
-    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory) {}
+    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory), contacts(memory) {}
     std::pmr::vector<double> control_points;  // x y z per point, m
     SceneStats stats;
     std::array<EffectStats, mechanics::kEffectCount> effects{};
     std::pmr::vector<collision::ToolOutput> tools;  // by tool index
+    std::pmr::vector<collision::ContactRecord> contacts;  // see ContactTotals
+    ContactTotals contact_totals;
 };
 
 class SnapshotPublisher {
@@ -63,6 +78,8 @@ public:
     // Makes room for `count` tools in every slot, so that filling one never allocates.
     // Allocates; waits for the readers of a slot to finish their copy. Not during a step.
     void reserve_tools(std::size_t count);
+    // Makes room for `count` contact records in every slot, likewise.
+    void reserve_contacts(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
 
@@ -83,10 +100,15 @@ public:
     };
 
 private:
+    // Calls change(slot) on every slot, each while no reader copies from it.
+    template <class Change>
+    void change_each_slot(Change&& change);
+
     mutable std::mutex mutex_;
     std::pmr::vector<Snapshot> slots_;
     mutable std::array<uint32_t, kSlots> readers_{};
     std::size_t latest_ = 0;
+    std::size_t previous_ = 0;  // the latest before latest_
 };
 
 }  // namespace enteron::scene

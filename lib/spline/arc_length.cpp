@@ -49,6 +49,28 @@ double ArcLengthTable::speed(double s) const { return speed_at(points_, count_, 
 
 double ArcLengthTable::integrate(double s0, double s1) const { return integrate_between(points_, count_, s0, s1); }
 
+SegmentStretch largest_segment_stretch(const double* points_xyz, std::size_t count, double rest_segment_length) {
+    double total = 0.0, largest = 0.0, largest_start = 0.0, largest_length = 0.0;
+    bool found = false;
+    for (std::size_t segment = 0; segment + 1 < count; ++segment) {
+        double length = 0.0;
+        for (std::size_t k = 0; k < kSubdivisions; ++k)
+            length += integrate_between(points_xyz, count, segment + double(k) / kSubdivisions,
+                                        segment + double(k + 1) / kSubdivisions);
+        if (!found || length > largest) {
+            found = true;
+            largest = length;
+            largest_start = total;
+            largest_length = length;
+        }
+        total += length;
+    }
+    SegmentStretch out;
+    out.stretch = largest / rest_segment_length - 1.0;
+    out.u = total > 0.0 ? (largest_start + 0.5 * largest_length) / total : 0.0;
+    return out;
+}
+
 void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samples, double* out_xyz) {
     const std::size_t intervals = (count - 1) * kSubdivisions;
     double total = 0.0;

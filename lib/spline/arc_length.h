@@ -41,6 +41,15 @@ private:
     std::pmr::vector<double> cumulative_;  // length at s = k / 8 (8 intervals per segment)
 };
 
+// The most stretched segment of the axis (between two consecutive control points): its
+// stretch, arc length over `rest_segment_length` minus 1, and the arc-length fraction u in
+// [0, 1] of its middle. One pass over the axis, no allocation (a reader thread's query).
+struct SegmentStretch {
+    double stretch = 0.0;
+    double u = 0.0;
+};
+SegmentStretch largest_segment_stretch(const double* points_xyz, std::size_t count, double rest_segment_length);
+
 // Samples `samples` points (>= 2) evenly in arc length without a table: two passes over
 // the axis, no allocation (what a reader thread wants for a one-off query).
 void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samples, double* out_xyz);

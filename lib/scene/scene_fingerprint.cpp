@@ -1,0 +1,91 @@
+#include "scene/scene_fingerprint.h"
+
+namespace enteron::scene {
+
+namespace {
+
+void add(Fingerprint& f, const Vec3& v) {
+    for (int c = 0; c < 3; ++c) f.add(v[c]);
+}
+
+void add(Fingerprint& f, std::size_t value) { f.add(static_cast<uint64_t>(value)); }
+
+// An optional part: whether it is there, then its values.
+template <class T, class AddValues>
+void add_optional(Fingerprint& f, const std::optional<T>& part, AddValues add_values) {
+    f.add(uint64_t{part.has_value()});
+    if (part) add_values(*part);
+}
+
+}  // namespace
+
+void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
+    const IntestineConfig& intestine = config.intestine;
+    f.add(intestine.length);
+    f.add(intestine.radius);
+    add(f, intestine.control_points);
+    f.add(intestine.linear_density);
+    f.add(intestine.stretch_stiffness);
+    f.add(intestine.bend_stiffness);
+    // The start shape as its points: the mesentery's springs take their lengths there.
+    add(f, config.start_points.size());
+    f.add_bytes(config.start_points.data(), config.start_points.size() * sizeof(double));
+
+    const SolverConfig& solver = config.solver;
+    add(f, static_cast<std::size_t>(solver.integrator));
+    f.add(solver.timestep);
+    add(f, solver.max_substeps);
+    add(f, solver.max_subdivisions);
+    f.add(solver.max_speed);
+
+    add_optional(f, config.gravity, [&](const Vec3& g) { add(f, g); });
+    add_optional(f, config.damping, [&](const DampingConfig& d) {
+        f.add(d.drag);
+        f.add(d.stretch);
+        f.add(d.bend);
+    });
+    add_optional(f, config.mesentery, [&](const MesenteryConfig& m) {
+        add(f, m.root_start);
+        add(f, m.root_end);
+        add(f, m.attachments);
+        f.add(m.stiffness);
+        f.add(m.rest_length);
+    });
+    add_optional(f, config.pinned, [&](const PinnedConfig& p) {
+        add(f, static_cast<std::size_t>(p.ends));
+        add(f, p.points.size());
+        for (const uint32_t point : p.points) add(f, point);
+    });
+
+    const collision::ContactParameters& contact = config.collision.contact;
+    f.add(config.collision.sphere_spacing);
+    f.add(contact.stiffness);
+    f.add(contact.damping);
+    f.add(contact.friction);
+    f.add(contact.slip_speed);
+    f.add(uint64_t{config.self_collision});
+    add(f, config.environment.size());
+    for (const collision::Obstacle& obstacle : config.environment) add_to_fingerprint(f, obstacle);
+    add(f, config.tools.size());
+    for (const collision::ToolConfig& tool : config.tools) add_to_fingerprint(f, tool);
+}
+
+void add_to_fingerprint(Fingerprint& f, const collision::Obstacle& obstacle) {
+    add(f, static_cast<std::size_t>(obstacle.kind));
+    add(f, obstacle.center);
+    add(f, obstacle.extent);
+    f.add(obstacle.radius);
+}
+
+void add_to_fingerprint(Fingerprint& f, const collision::ToolConfig& tool) {
+    const collision::ToolSettings& s = tool.settings;
+    f.add(s.radius);
+    f.add(s.length);
+    f.add(s.max_force);
+    f.add(s.grasp_margin);
+    f.add(s.grasp_stiffness);
+    f.add(s.grasp_damping);
+    // Not its start pose: where a tool is belongs to the state.
+}
+
+}  // namespace enteron::scene
