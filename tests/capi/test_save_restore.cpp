@@ -1,0 +1,344 @@
+// Save and restore (ent_scene_save_state, ent_scene_restore_state; docs/save-restore.md).
+//
+// A restored scene continues bit-identically: the test runs a scripted trainee (a tool
+// pushing through a self-colliding pile in a box, grasping and pulling, releasing) for N
+// steps after a save, restores, runs the same N steps again and compares every control
+// point's bits, the tool's wrench and the contact list, step by step; the same in a fresh
+// scene made from the same description. A bad image (truncated, changed, another version,
+// another scene, a non-finite value, random corruption) is refused with a message and
+// leaves the scene exactly as it was (its saved image compares equal byte for byte).
+#include "capi_test_support.h"
+
+#include <cstdint>
+#include <random>
+
+using namespace capi_test;
+
+namespace {
+
+// A serpentine pile in a box, self-colliding, with a tool (implicit Euler).
+const char* const kPile = R"({
+  "intestine": {"length": 1.0, "control_points": 24, "stretch_stiffness": 100, "bend_stiffness": 2.5e-3,
+                "shape": {"kind": "serpentine", "leg_length": 0.12, "center": [0, 0, -0.05]}},
+  "solver": {"max_substeps": 100}, "gravity": [0, 0, -9.81], "damping": {},
+  "environment": [{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1]}], "self_collision": {},
+  "tools": [{"position": [0, 0, 0.02]}]})";
+
+constexpr double kDt = 1e-3;
+const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
+
+// Where the tool goes down: over control point 6 of the pile at its start (x, y).
+double g_aim[2] = {0.0, 0.0};
+
+ScenePtr create_pile() {
+    ScenePtr scene = create_json(kPile);
+    if (scene) {
+        const std::vector<double> q = control_points(scene.get());
+        g_aim[0] = q[3 * 6];
+        g_aim[1] = q[3 * 6 + 1];
+    }
+    return scene;
+}
+
+// The trainee's hand at step k: down onto the pile as it falls to the floor, grasp at step
+// 120, pull up, release at 200.
+void script(ent_scene* scene, int k) {
+    const double depth = std::min(0.001 * k, 0.1);
+    const double lift = k > 120 ? 0.0005 * (k - 120) : 0.0;
+    const double tip[3] = {g_aim[0] + 0.003 * std::sin(0.02 * k), g_aim[1], 0.02 - depth + lift};
+    ASSERT_EQ(ent_tool_set_pose(scene, 0, tip, kIdentity), ENT_OK) << ent_last_error();
+    if (k == 120) {
+        ASSERT_EQ(ent_tool_grasp(scene, 0), ENT_OK) << ent_last_error();
+    }
+    if (k == 200) {
+        ASSERT_EQ(ent_tool_release(scene, 0), ENT_OK) << ent_last_error();
+    }
+}
+
+std::vector<unsigned char> save(ent_scene* scene) {
+    size_t size = 0;
+    EXPECT_EQ(ent_scene_save_state(scene, nullptr, 0, &size), ENT_OK) << ent_last_error();
+    std::vector<unsigned char> image(size);
+    size_t written = 0;
+    EXPECT_EQ(ent_scene_save_state(scene, image.data(), image.size(), &written), ENT_OK) << ent_last_error();
+    EXPECT_EQ(written, size);
+    return image;
+}
+
+// Everything a step publishes that the test compares, as bytes.
+std::vector<unsigned char> published(const ent_scene* scene) {
+    std::vector<unsigned char> bytes;
+    auto append = [&bytes](const void* data, std::size_t size) {
+        const auto* at = static_cast<const unsigned char*>(data);
+        bytes.insert(bytes.end(), at, at + size);
+    };
+    const std::vector<double> q = control_points(scene);
+    append(q.data(), q.size() * sizeof(double));
+    double force[3], torque[3];
+    EXPECT_EQ(ent_tool_wrench(scene, 0, force, torque), ENT_OK) << ent_last_error();
+    append(force, sizeof force);
+    append(torque, sizeof torque);
+    uint32_t count = 0;
+    EXPECT_EQ(ent_scene_contacts(scene, 0, nullptr, &count), ENT_OK) << ent_last_error();
+    std::vector<ent_contact> contacts(std::max<uint32_t>(count, 1));
+    contacts[0].struct_size = sizeof(ent_contact);
+    EXPECT_EQ(ent_scene_contacts(scene, count, contacts.data(), &count), ENT_OK) << ent_last_error();
+    append(contacts.data(), count * sizeof(ent_contact));
+    const ent_stats s = stats(scene);
+    append(&s.time_s, sizeof s.time_s);
+    append(&s.steps, sizeof s.steps);
+    return bytes;
+}
+
+// Steps k = first .. first + count - 1 of the script; what each published.
+std::vector<std::vector<unsigned char>> run(ent_scene* scene, int first, int count) {
+    std::vector<std::vector<unsigned char>> out;
+    for (int k = first; k < first + count; ++k) {
+        script(scene, k);
+        EXPECT_EQ(ent_scene_step(scene, kDt), ENT_OK) << "step " << k << ": " << ent_last_error();
+        out.push_back(published(scene));
+    }
+    return out;
+}
+
+void expect_same_runs(const std::vector<std::vector<unsigned char>>& a,
+                      const std::vector<std::vector<unsigned char>>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) ASSERT_TRUE(a[k] == b[k]) << "the runs differ at step " << k;
+}
+
+// The image's checksum (docs/save-restore.md), so that a test can change a value and still
+// get past the checksum to the check of that value.
+uint64_t checksum(const unsigned char* data, std::size_t size) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    std::size_t i = 0;
+    for (; i + 8 <= size; i += 8) {
+        uint64_t word;
+        std::memcpy(&word, data + i, 8);
+        hash ^= word;
+        hash *= 0x100000001b3ull;
+        hash ^= hash >> 29;
+    }
+    for (; i < size; ++i) {
+        hash ^= data[i];
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
+
+constexpr std::size_t kHeader = 48, kChecksumAt = 32, kSizeAt = 16;
+
+void reseal(std::vector<unsigned char>& image) {
+    const uint64_t size = image.size();
+    std::memcpy(image.data() + kSizeAt, &size, 8);
+    const uint64_t sum = checksum(image.data() + kHeader, image.size() - kHeader);
+    std::memcpy(image.data() + kChecksumAt, &sum, 8);
+}
+
+// Restoring `image` must fail with `status` and a message holding `words`, and change nothing.
+void expect_refused(ent_scene* scene, const std::vector<unsigned char>& image, ent_status status,
+                    const std::string& words) {
+    const std::vector<unsigned char> before = save(scene);
+    const std::vector<unsigned char> shown = published(scene);
+    EXPECT_EQ(ent_scene_restore_state(scene, image.data(), image.size()), status);
+    EXPECT_NE(std::string(ent_last_error()).find(words), std::string::npos) << ent_last_error();
+    EXPECT_TRUE(save(scene) == before) << "the scene changed";
+    EXPECT_TRUE(published(scene) == shown) << "the published state changed";
+}
+
+TEST(SaveRestore, ARestoredSceneContinuesBitIdentically) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    run(scene.get(), 0, 100);
+    const std::vector<unsigned char> image = save(scene.get());
+    const std::vector<unsigned char> at_save = published(scene.get());
+    // Through the grasp (step 120), the pull and the release (200).
+    const auto first = run(scene.get(), 100, 150);
+    ASSERT_EQ(ent_scene_restore_state(scene.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
+    EXPECT_TRUE(published(scene.get()) == at_save) << "the restore publishes the saved instant";
+    EXPECT_TRUE(save(scene.get()) == image) << "save after restore gives the same image";
+    const auto second = run(scene.get(), 100, 150);
+    expect_same_runs(first, second);
+    // The run touched and grasped: the comparison covered contacts and a grasp.
+    ent_tool_contacts t{};
+    t.struct_size = sizeof t;
+    ASSERT_EQ(ent_tool_read_contacts(scene.get(), 0, &t), ENT_OK) << ent_last_error();
+    EXPECT_GT(t.contact_impulse_magnitude_Ns, 0.0);
+    ent_contact_summary s{};
+    s.struct_size = sizeof s;
+    ASSERT_EQ(ent_scene_contact_summary(scene.get(), &s), ENT_OK);
+    EXPECT_GT(s.self_contacts + s.obstacle_contacts, 0u);
+}
+
+TEST(SaveRestore, AFreshSceneFromTheSameDescriptionContinuesTheSame) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    run(scene.get(), 0, 130);  // grasping
+    const std::vector<unsigned char> image = save(scene.get());
+    const auto original = run(scene.get(), 130, 100);
+
+    ScenePtr fresh = create_pile();
+    ASSERT_TRUE(fresh);
+    ASSERT_EQ(ent_scene_restore_state(fresh.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
+    int32_t grasping = 0;
+    ASSERT_EQ(ent_tool_state(fresh.get(), 0, &grasping), ENT_OK);
+    EXPECT_EQ(grasping, 1) << "the grasp is part of the state";
+    expect_same_runs(original, run(fresh.get(), 130, 100));
+}
+
+TEST(SaveRestore, AStateOfAnotherSceneIsRefused) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    run(scene.get(), 0, 10);
+    const std::vector<unsigned char> image = save(scene.get());
+    // Another length; and the same description with one more obstacle added.
+    std::string longer = kPile;
+    longer.replace(longer.find("\"length\": 1.0"), 13, "\"length\": 1.1");
+    ScenePtr other = create_json(longer);
+    ASSERT_TRUE(other);
+    expect_refused(other.get(), image, ENT_ERROR_INVALID_ARGUMENT, "another scene");
+    ScenePtr more = create_json(kPile);
+    ASSERT_TRUE(more);
+    ent_obstacle_desc plane;
+    ent_obstacle_desc_default(&plane);
+    plane.kind = ENT_OBSTACLE_PLANE;
+    plane.center_m[2] = -0.2;
+    ASSERT_EQ(ent_scene_add_obstacle(more.get(), &plane, nullptr), ENT_OK) << ent_last_error();
+    expect_refused(more.get(), image, ENT_ERROR_INVALID_ARGUMENT, "another scene");
+}
+
+TEST(SaveRestore, BadImagesAreRefusedWithTheSceneUntouched) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    run(scene.get(), 0, 20);
+    const std::vector<unsigned char> good = save(scene.get());
+    run(scene.get(), 20, 5);  // so that a wrongly applied restore would show
+
+    std::vector<unsigned char> image(good.begin(), good.end() - 1);
+    expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "truncated");
+    image.assign(good.begin(), good.begin() + 20);
+    expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "header");
+    image = good;
+    image[0] = 'X';
+    expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "ENTSTATE");
+    image = good;
+    image[image.size() / 2] ^= 0x10;
+    expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "checksum");
+    image = good;
+    image[8] = 99;  // the format version
+    expect_refused(scene.get(), image, ENT_ERROR_VERSION, "format version 99");
+    // The time (the first double of the first section, after its 32-byte header and the
+    // point count) made NaN, resealed: the value check names it.
+    image = good;
+    const double nan = std::nan("");
+    std::memcpy(image.data() + kHeader + 32 + 4, &nan, 8);
+    reseal(image);
+    expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "time");
+    // A position made infinite, resealed: the last section applied nothing either.
+    image = good;
+    const double infinite = HUGE_VAL;
+    std::memcpy(image.data() + kHeader + 32 + 4 + 8 + 8 * 5, &infinite, 8);
+    reseal(image);
+    expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "positions");
+
+    EXPECT_EQ(ent_scene_restore_state(scene.get(), nullptr, 100), ENT_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(ent_scene_restore_state(nullptr, good.data(), good.size()), ENT_ERROR_INVALID_ARGUMENT);
+    // After all that, the good image still restores.
+    EXPECT_EQ(ent_scene_restore_state(scene.get(), good.data(), good.size()), ENT_OK) << ent_last_error();
+    EXPECT_TRUE(save(scene.get()) == good);
+}
+
+TEST(SaveRestore, ASmallBufferGetsTheSizeAndNothingWritten) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    size_t size = 0;
+    ASSERT_EQ(ent_scene_save_state(scene.get(), nullptr, 0, &size), ENT_OK);
+    ASSERT_GT(size, 48u);
+    std::vector<unsigned char> buffer(size - 1, 0xa5);
+    size_t reported = 0;
+    EXPECT_EQ(ent_scene_save_state(scene.get(), buffer.data(), buffer.size(), &reported), ENT_ERROR_BUFFER_TOO_SMALL);
+    EXPECT_EQ(reported, size);
+    EXPECT_TRUE(std::all_of(buffer.begin(), buffer.end(), [](unsigned char b) { return b == 0xa5; }));
+    EXPECT_EQ(ent_scene_save_state(scene.get(), buffer.data(), buffer.size(), nullptr), ENT_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(ent_scene_save_state(nullptr, nullptr, 0, &reported), ENT_ERROR_INVALID_ARGUMENT);
+}
+
+// A bowel falling against drag under a speed limit it soon exceeds whatever the substep
+// (test_unstable.cpp works out the speeds): step 1 passes, step 2 fails with
+// ENT_ERROR_UNSTABLE. Restoring the state saved at rest gets it going again, and its step 1
+// is bit for bit the first run's.
+TEST(SaveRestore, RestoreRecoversFromUnstable) {
+    ent_scene_desc desc = default_desc();
+    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_DAMPING);
+    desc.control_points = 10;
+    desc.length_m = 1.0;
+    desc.linear_density_kg_per_m = 0.3;
+    desc.shape = ENT_SHAPE_LINE;
+    desc.integrator = ENT_INTEGRATOR_SYMPLECTIC_EULER;
+    desc.timestep_s = 0.01;
+    desc.drag_N_s_per_m2 = 3.0;
+    desc.stretch_damping_N_s = 0.0;
+    desc.bend_damping_N_m2_s = 0.0;
+    desc.max_speed_m_per_s = 0.097;
+    desc.max_subdivisions = 4;
+    ScenePtr scene = create(desc);
+    ASSERT_TRUE(scene);
+    const std::vector<unsigned char> at_rest = save(scene.get());
+    ASSERT_EQ(ent_scene_step(scene.get(), 0.01), ENT_OK) << ent_last_error();
+    const std::vector<double> after_one = control_points(scene.get());
+    ASSERT_EQ(ent_scene_step(scene.get(), 0.01), ENT_ERROR_UNSTABLE);
+    ASSERT_EQ(ent_scene_step(scene.get(), 0.01), ENT_ERROR_UNSTABLE) << "stuck";
+    ASSERT_EQ(ent_scene_restore_state(scene.get(), at_rest.data(), at_rest.size()), ENT_OK) << ent_last_error();
+    EXPECT_EQ(stats(scene.get()).steps, 0u);
+    EXPECT_EQ(stats(scene.get()).rollbacks, 0u) << "the counters are part of the state";
+    ASSERT_EQ(ent_scene_step(scene.get(), 0.01), ENT_OK) << ent_last_error();
+    const std::vector<double> again = control_points(scene.get());
+    ASSERT_EQ(again.size(), after_one.size());
+    EXPECT_EQ(std::memcmp(again.data(), after_one.data(), again.size() * sizeof(double)), 0);
+}
+
+// Random corruption of a saved image (a few bytes changed, resealed or not; cut or padded):
+// every restore returns ENT_OK or a status with a message; a refused one changes nothing;
+// an accepted one leaves a finite scene that steps or fails cleanly.
+TEST(SaveRestore, FuzzedImagesFailCleanly) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    run(scene.get(), 0, 130);
+    const std::vector<unsigned char> good = save(scene.get());
+    std::mt19937_64 random(22);
+    int accepted = 0, refused = 0;
+    std::vector<unsigned char> before = good;
+    for (int trial = 0; trial < 1500; ++trial) {
+        std::vector<unsigned char> image = good;
+        const int kind = trial % 4;
+        if (kind == 3) {
+            image.resize(std::uniform_int_distribution<std::size_t>(0, 2 * good.size())(random));
+        } else {
+            const int changes = 1 + int(random() % 8);
+            for (int c = 0; c < changes; ++c) {
+                // Header and section headers more often: they hold the sizes and counts.
+                const std::size_t at = random() % 2 == 0 ? random() % std::min<std::size_t>(image.size(), 256)
+                                                          : random() % image.size();
+                image[at] = static_cast<unsigned char>(random());
+            }
+        }
+        if (kind != 0 && image.size() >= kHeader) reseal(image);
+        const ent_status status = ent_scene_restore_state(scene.get(), image.data(), image.size());
+        if (status != ENT_OK) {
+            ASSERT_NE(std::string(ent_last_error()), "") << "trial " << trial;
+            ASSERT_TRUE(save(scene.get()) == before) << "trial " << trial << ": a refused restore changed the scene";
+            ++refused;
+            continue;
+        }
+        ++accepted;
+        for (const double x : control_points(scene.get())) ASSERT_TRUE(std::isfinite(x)) << "trial " << trial;
+        const ent_status step = ent_scene_step(scene.get(), kDt);
+        ASSERT_TRUE(step == ENT_OK || step == ENT_ERROR_UNSTABLE) << "trial " << trial << ": " << ent_last_error();
+        ASSERT_EQ(ent_scene_restore_state(scene.get(), good.data(), good.size()), ENT_OK) << ent_last_error();
+        before = save(scene.get());
+    }
+    EXPECT_GT(refused, 1000);
+    std::cout << "[ fuzzed restores ] " << refused << " refused, " << accepted << " accepted\n";
+}
+
+}  // namespace
