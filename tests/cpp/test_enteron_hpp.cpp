@@ -1,0 +1,182 @@
+// The C++ layer (include/enteron/enteron.hpp), built twice: as C++17 without Eigen and as
+// C++20 with <Eigen/Core> included first (ENTERON_HPP_TEST_EIGEN), both with -Wall -Wextra
+// -Werror -pedantic. Each test checks the wrapper against the C call it wraps.
+#ifdef ENTERON_HPP_TEST_EIGEN
+#include <Eigen/Core>
+#endif
+#include <enteron/enteron.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+
+namespace {
+
+static_assert(!std::is_copy_constructible_v<enteron::Scene> && std::is_nothrow_move_constructible_v<enteron::Scene>);
+static_assert(!std::is_copy_constructible_v<enteron::Skin> && std::is_nothrow_move_constructible_v<enteron::Skin>);
+static_assert(!std::is_copy_constructible_v<enteron::Tool> && std::is_nothrow_move_constructible_v<enteron::Tool>);
+
+enteron::Scene small_scene() {
+    enteron::SceneDesc desc;
+    desc.length_m = 0.4;
+    desc.control_points = 17;
+    desc.shape = ENT_SHAPE_LINE;
+    desc.shape_center_m[0] = -0.2;
+    desc.shape_center_m[2] = 0.0125;
+    return enteron::Scene(desc);
+}
+
+TEST(CppLayer, DescsHoldTheLibrarysDefaults) {
+    ent_scene_desc c;
+    ent_scene_desc_default(&c);
+    const enteron::SceneDesc cpp;
+    EXPECT_EQ(std::memcmp(&c, static_cast<const ent_scene_desc*>(&cpp), sizeof c), 0);
+    ent_tool_desc tool;
+    ent_tool_desc_default(&tool);
+    EXPECT_EQ(enteron::ToolDesc().max_force_N, tool.max_force_N);
+    EXPECT_EQ(enteron::SkinDesc().struct_size, sizeof(ent_skin_desc));
+    EXPECT_EQ(enteron::ObstacleDesc().struct_size, sizeof(ent_obstacle_desc));
+}
+
+TEST(CppLayer, AFailingCallThrowsTheLibrarysMessage) {
+    enteron::SceneDesc desc;
+    desc.length_m = -1.0;
+    try {
+        enteron::Scene scene(desc);
+        FAIL() << "a negative length was accepted";
+    } catch (const enteron::Error& error) {
+        EXPECT_EQ(error.status(), ENT_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(error.what()).find("length_m"), std::string::npos) << error.what();
+    }
+    EXPECT_THROW(enteron::Scene::from_json("{not json"), enteron::Error);
+    enteron::Scene scene = small_scene();
+    EXPECT_THROW(scene.step(-1.0), enteron::Error);
+    EXPECT_THROW(scene.tool(3), enteron::Error) << "no tool 3";
+}
+
+TEST(CppLayer, HandlesMoveAndOwnTheirObject) {
+    enteron::Scene a = small_scene();
+    ent_scene* raw = a.get();
+    enteron::Scene b = std::move(a);
+    EXPECT_EQ(a.get(), nullptr);
+    EXPECT_EQ(b.get(), raw);
+    b.step(1e-3);
+    EXPECT_EQ(b.stats().steps, 1u);
+    enteron::Scene c = small_scene();
+    c = std::move(b);  // c's own scene is destroyed here (ASan would see a leak otherwise)
+    EXPECT_EQ(c.get(), raw);
+    ent_scene* released = c.release();
+    EXPECT_EQ(c.get(), nullptr);
+    enteron::Scene d(released);  // owned again
+    EXPECT_EQ(d.stats().steps, 1u);
+}
+
+TEST(CppLayer, QueriesMatchTheCApi) {
+    enteron::Scene scene = small_scene();
+    scene.step(1e-3);
+    const std::vector<double> q = scene.control_points();
+    ASSERT_EQ(q.size(), 3u * 17);
+    std::vector<double> c(q.size());
+    uint32_t count = 0;
+    ASSERT_EQ(ent_scene_control_points(scene.get(), 17, c.data(), &count), ENT_OK);
+    EXPECT_EQ(q, c);
+    const std::vector<double> axis = scene.axis(50);
+    EXPECT_EQ(axis.size(), 150u);
+    EXPECT_NEAR(axis[0], q[0], 1e-12);
+    EXPECT_EQ(scene.effect_stats(ENT_EFFECT_STRETCH).enabled, 1);
+#ifdef ENTERON_HPP_TEST_EIGEN
+    const auto points = enteron::as_matrix(q);
+    EXPECT_EQ(points.rows(), 17);
+    EXPECT_EQ(points(16, 0), q[3 * 16]);
+    EXPECT_EQ(points.row(5).y(), q[3 * 5 + 1]);
+#endif
+}
+
+TEST(CppLayer, ToolsContactsAndSaveRestore) {
+    enteron::Scene scene = small_scene();
+    enteron::ObstacleDesc floor;
+    floor.kind = ENT_OBSTACLE_PLANE;
+    EXPECT_EQ(scene.add_obstacle(floor), 0);
+    enteron::ToolDesc desc;
+    desc.position_m[1] = 0.05;
+    desc.position_m[2] = 0.0125;
+    enteron::Tool tool = scene.add_tool(desc);
+    const double identity[4] = {1, 0, 0, 0};
+    std::vector<unsigned char> saved;
+    for (int i = 1; i <= 400; ++i) {
+        const double tip[3] = {0.0, 0.05 - 1e-4 * i, 0.0125};
+        tool.set_pose(tip, identity);
+        scene.step(1e-3);
+        if (i == 200) saved = scene.save_state();
+    }
+    const ent_tool_feedback feedback = tool.feedback();
+    EXPECT_GT(feedback.contacts, 0u) << "the tool pushes the bowel";
+    std::vector<double> ranges;
+    const ent_tool_contacts touched = tool.contacts(&ranges);
+    EXPECT_EQ(touched.contacts, feedback.contacts);
+    EXPECT_EQ(ranges.size(), 2u * touched.range_count);
+    EXPECT_EQ(touched.ranges_u, nullptr) << "no pointer into a vector the caller may free";
+    double sum = 0.0;
+    for (const ent_contact& c : scene.contacts())
+        if (c.kind == ENT_CONTACT_TOOL) sum += c.force_N[1];
+    EXPECT_NEAR(sum, -feedback.force_N[1], 1e-12);
+    EXPECT_EQ(scene.contact_summary().tool_contacts, feedback.contacts);
+
+    const std::vector<double> at_400 = scene.control_points();
+    scene.restore_state(saved);
+    EXPECT_EQ(scene.stats().steps, 200u);
+    for (int i = 201; i <= 400; ++i) {
+        const double tip[3] = {0.0, 0.05 - 1e-4 * i, 0.0125};
+        tool.set_pose(tip, identity);
+        scene.step(1e-3);
+    }
+    EXPECT_EQ(scene.control_points(), at_400) << "bit-identical after the restore";
+    saved[saved.size() / 2] ^= 1;
+    try {
+        scene.restore_state(saved);
+        FAIL() << "a changed state was accepted";
+    } catch (const enteron::Error& error) {
+        EXPECT_EQ(error.status(), ENT_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(error.what()).find("checksum"), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(scene.control_points(), at_400);
+}
+
+TEST(CppLayer, SkinsGiveSpansOverTheMesh) {
+    enteron::Scene scene = small_scene();
+    enteron::SkinDesc desc;
+    desc.method = ENT_SKIN_TUBE;
+    enteron::Skin skin(scene, desc);
+    EXPECT_EQ(skin.mesh().vertex_count(), 0u) << "empty before the first update";
+    skin.update();
+    const enteron::Mesh mesh = skin.mesh();
+    ent_mesh_view view{};
+    view.struct_size = sizeof view;
+    ASSERT_EQ(ent_skin_mesh(skin.get(), &view), ENT_OK);
+    EXPECT_EQ(mesh.vertex_count(), view.vertex_count);
+    EXPECT_EQ(mesh.triangle_count(), view.triangle_count);
+    EXPECT_EQ(mesh.positions_xyz_m.data(), view.positions_xyz_m);
+    EXPECT_EQ(mesh.indices.size(), 3u * view.triangle_count);
+    uint32_t largest = 0;
+    for (const uint32_t index : mesh.indices) largest = std::max(largest, index);
+    EXPECT_LT(largest, mesh.vertex_count());
+    EXPECT_EQ(skin.metrics().watertight, 1);
+#ifdef ENTERON_HPP_HAS_STD_SPAN
+    const std::span<const float> normals = mesh.normals_xyz;
+    EXPECT_EQ(normals.size(), 3 * mesh.vertex_count());
+#endif
+#ifdef ENTERON_HPP_TEST_EIGEN
+    const auto normals_matrix = enteron::as_matrix(mesh.normals_xyz);
+    EXPECT_NEAR(normals_matrix.row(7).norm(), 1.0, 1e-5);
+    const auto triangles = enteron::as_matrix(mesh.indices);
+    EXPECT_EQ(triangles.rows(), Eigen::Index(mesh.triangle_count()));
+    EXPECT_EQ(triangles(2, 1), mesh.indices[7]);
+#endif
+    enteron::Skin moved = std::move(skin);
+    EXPECT_EQ(skin.get(), nullptr);
+    moved.update();
+}
+
+}  // namespace
