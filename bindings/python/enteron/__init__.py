@@ -13,6 +13,8 @@ A ctypes binding of the C API of libenteron (no compile step). Quick start:
         tool.set_pose((0.0, 0.0, 0.0))  # reached at the end of the next step; from any thread
         scene.step(0.001)
         force, torque = tool.wrench()   # what the bowel exerts on the tool, N and N m
+        touched = scene.contacts()      # numpy structured array: kind, index, u, point_m, force_N, ...
+        state = scene.save_state()      # bytes; scene.restore_state(state) goes back to this instant
         with enteron.Skin(scene, "convolution", segments=24) as skin:
             skin.update()
             mesh = skin.mesh()          # numpy arrays of the mesh (copies: they stay valid)
@@ -28,14 +30,14 @@ from ._library import version as _version
 from ._errors import (ERROR_BUFFER_TOO_SMALL, ERROR_BUSY, ERROR_INTERNAL, ERROR_INVALID_ARGUMENT,
                       ERROR_INVALID_SCENE, ERROR_NOT_FOUND, ERROR_OUT_OF_MEMORY, ERROR_PARSE, ERROR_UNSTABLE,
                       ERROR_VERSION, OK, Error, status_string)
-from .scene import (EFFECT_BEND, EFFECT_COUNT, EFFECT_DAMPING, EFFECT_ENVIRONMENT, EFFECT_GRAVITY,
+from .scene import (CONTACT_DTYPE, CONTACT_OBSTACLE, CONTACT_SELF, CONTACT_TOOL, ContactSummary, EFFECT_BEND, EFFECT_COUNT, EFFECT_DAMPING, EFFECT_ENVIRONMENT, EFFECT_GRAVITY,
                     EFFECT_MESENTERY, EFFECT_PINNED, EFFECT_SELF_COLLISION, EFFECT_STRETCH, EFFECT_TOOLS,
                     INTEGRATOR_IMPLICIT_EULER, INTEGRATOR_RK4, INTEGRATOR_SYMPLECTIC_EULER, LOG_DEBUG, LOG_ERROR,
                     LOG_INFO, LOG_WARNING, OBSTACLE_BOX_INSIDE, OBSTACLE_CAPSULE, OBSTACLE_PLANE, OBSTACLE_SPHERE,
                     PIN_BOTH, PIN_FIRST, PIN_LAST, PIN_NONE, SHAPE_HELIX, SHAPE_LINE, SHAPE_POINTS, SHAPE_SERPENTINE,
                     EffectStats, Scene, SceneDesc, Stats, effect_name)
 from .skin import SKIN_CONVOLUTION, SKIN_POINT_SKELETON, SKIN_TUBE, Mesh, Skin, SkinMetrics
-from .tool import Tool, ToolFeedback, Wrench
+from .tool import Tool, ToolContacts, ToolFeedback, Wrench
 
 #: The loaded library's version, (major, minor, patch).
 version = (_version >> 16, (_version >> 8) & 0xFF, _version & 0xFF)

@@ -183,5 +183,55 @@ class ent_tool_feedback(ctypes.Structure):
     ]
 
 
+class ent_contact(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("kind", ctypes.c_int32),
+        ("index", ctypes.c_int32),
+        ("u", ctypes.c_double),
+        ("other_u", ctypes.c_double),
+        ("point_m", _vec3),
+        ("normal", _vec3),
+        ("depth_m", ctypes.c_double),
+        ("force_N", _vec3),
+    ]
+
+
+class ent_contact_summary(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("capacity", ctypes.c_uint32),
+        ("listed", ctypes.c_uint32),
+        ("found", ctypes.c_uint32),
+        ("self_contacts", ctypes.c_uint32),
+        ("obstacle_contacts", ctypes.c_uint32),
+        ("tool_contacts", ctypes.c_uint32),
+        ("largest_force_N", ctypes.c_double),
+        ("largest_force_u", ctypes.c_double),
+        ("largest_stretch", ctypes.c_double),
+        ("largest_stretch_u", ctypes.c_double),
+        ("time_s", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+    ]
+
+
+class ent_tool_contacts(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("range_capacity", ctypes.c_uint32),
+        ("ranges_u", ctypes.POINTER(ctypes.c_double)),
+        ("range_count", ctypes.c_uint32),
+        ("contacts", ctypes.c_uint32),
+        ("grasping", ctypes.c_int32),
+        ("grasp_u", ctypes.c_double),
+        ("largest_force_N", ctypes.c_double),
+        ("contact_impulse_Ns", _vec3),
+        ("contact_impulse_magnitude_Ns", ctypes.c_double),
+        ("time_s", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+    ]
+
+
 ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_obstacle_desc, ent_tool_desc,
-       ent_tool_feedback, ent_skin_desc, ent_mesh_view, ent_skin_metrics)
+       ent_tool_feedback, ent_skin_desc, ent_mesh_view, ent_skin_metrics, ent_contact, ent_contact_summary,
+       ent_tool_contacts)

@@ -44,6 +44,13 @@ OBSTACLE_PLANE = 1
 OBSTACLE_SPHERE = 2
 OBSTACLE_CAPSULE = 3
 
+CONTACT_SELF = 0      # another fold of the bowel
+CONTACT_OBSTACLE = 1  # an obstacle (index: its index)
+CONTACT_TOOL = 2      # a tool (index: its id)
+
+#: The numpy dtype of Scene.contacts(): ent_contact's fields (u in [0, 1] along the bowel; m, N).
+CONTACT_DTYPE = np.dtype(s.ent_contact)
+
 LOG_DEBUG = 0
 LOG_INFO = 1
 LOG_WARNING = 2
@@ -176,6 +183,27 @@ class Stats:
     contacts: int
     max_penetration_m: float
     last_step_ns: int
+
+
+@dataclasses.dataclass(frozen=True)
+class ContactSummary:
+    """ent_contact_summary: the bowel's contacts and stretch in the last published step (what
+    a trainer scores as tissue stress). capacity: the most contacts a step lists; listed,
+    found (found > listed: the list was full); self_, obstacle_ and tool_contacts found;
+    largest_force_N and where (largest_force_u in [0, 1]); largest_stretch of a segment (0.05:
+    5 % longer than at rest) and where; time_s and steps of that state."""
+    capacity: int
+    listed: int
+    found: int
+    self_contacts: int
+    obstacle_contacts: int
+    tool_contacts: int
+    largest_force_N: float
+    largest_force_u: float
+    largest_stretch: float
+    largest_stretch_u: float
+    time_s: float
+    steps: int
 
 
 @dataclasses.dataclass(frozen=True)
@@ -335,3 +363,47 @@ class Scene(OwnedHandle):
     def all_effect_stats(self):
         """{name: EffectStats} for every effect this binding knows."""
         return {effect_name(n): self.effect_stats(n) for n in range(EFFECT_COUNT)}
+
+    # ---- contacts (any thread) ---------------------------------------------------------------
+    def contacts(self):
+        """The contacts of the last published step (ent_scene_contacts) as a numpy structured
+        array of CONTACT_DTYPE, one row per contact: kind (CONTACT_*), index (the obstacle's
+        index or the tool's id; -1 for a self-contact), u and other_u (where on the bowel, in
+        [0, 1]; other_u: the other fold, -1 unless a self-contact), point_m (3,), normal (3,),
+        depth_m, force_N (3,) on the bowel at u. The tools' come first, then the obstacles',
+        then the self-contacts'."""
+        while True:
+            count = ctypes.c_uint32()
+            check(lib.ent_scene_contacts(self._live(), 0, None, ctypes.byref(count)), "ent_scene_contacts")
+            array = np.zeros(max(count.value, 1), dtype=CONTACT_DTYPE)
+            array["struct_size"][0] = CONTACT_DTYPE.itemsize
+            status = lib.ent_scene_contacts(self._live(), len(array), array.ctypes.data, ctypes.byref(count))
+            if status == ERROR_BUFFER_TOO_SMALL:  # another thread's step listed more meanwhile
+                continue
+            check(status, "ent_scene_contacts")
+            return array[: count.value]
+
+    def contact_summary(self):
+        """ent_scene_contact_summary as a ContactSummary."""
+        raw = s.ent_contact_summary()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_scene_contact_summary(self._live(), ctypes.byref(raw)), "ent_scene_contact_summary")
+        return ContactSummary(**{field: getattr(raw, field) for field in ContactSummary.__dataclass_fields__})
+
+    # ---- save and restore (driving calls) ----------------------------------------------------
+    def save_state(self):
+        """The whole state of the scene as bytes (ent_scene_save_state; docs/save-restore.md):
+        restore_state(state), into this scene or one made from the same description, continues
+        bit for bit as this one would."""
+        size = ctypes.c_size_t()
+        check(lib.ent_scene_save_state(self._live(), None, 0, ctypes.byref(size)), "ent_scene_save_state")
+        buffer = ctypes.create_string_buffer(size.value)
+        check(lib.ent_scene_save_state(self._live(), buffer, size.value, ctypes.byref(size)), "ent_scene_save_state")
+        return buffer.raw[: size.value]
+
+    def restore_state(self, state):
+        """Back to a state from save_state (bytes or any bytes-like object)
+        (ent_scene_restore_state). A state that is damaged, of another version or of another
+        scene raises enteron.Error naming the problem, and the scene is unchanged."""
+        data = bytes(state)
+        check(lib.ent_scene_restore_state(self._live(), data, len(data)), "ent_scene_restore_state")

@@ -54,6 +54,23 @@ class ToolFeedback(typing.NamedTuple):
     steps: int
 
 
+class ToolContacts(typing.NamedTuple):
+    """ent_tool_read_contacts: what a tool touched and held in the last published step.
+    ranges: (k, 2) array of [first u, last u] of each run of the bowel it touches (u in
+    [0, 1]); contacts (collision spheres touching it); grasping, grasp_u (where the grasp took
+    hold, -1 when not grasping); largest_force_N of one contact; contact_impulse_Ns (3,) and
+    contact_impulse_magnitude_Ns since it was added (how hard for how long); time_s, steps."""
+    ranges: np.ndarray
+    contacts: int
+    grasping: bool
+    grasp_u: float
+    largest_force_N: float
+    contact_impulse_Ns: np.ndarray
+    contact_impulse_magnitude_Ns: float
+    time_s: float
+    steps: int
+
+
 class Wrench(typing.NamedTuple):
     """What the bowel exerted on a tool in the last step: force (3,) in N and torque (3,)
     about the tip in N m, both bounded by the tool's max_force. Unpacks as (force, torque)."""
@@ -136,6 +153,23 @@ class Tool:
               "ent_tool_read_feedback")
         return ToolFeedback(np.array(raw.force_N[:]), np.array(raw.torque_Nm[:]), bool(raw.grasping),
                             raw.contacts, raw.time_s, raw.steps)
+
+    def contacts(self):
+        """ent_tool_read_contacts as a ToolContacts, from one snapshot. Any thread."""
+        ranges = np.zeros((8, 2))
+        while True:
+            raw = s.ent_tool_contacts()
+            raw.struct_size = ctypes.sizeof(raw)
+            raw.range_capacity = len(ranges)
+            raw.ranges_u = ranges.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+            check(lib.ent_tool_read_contacts(self._scene._live(), self._id, ctypes.byref(raw)),
+                  "ent_tool_read_contacts")
+            if raw.range_count <= len(ranges):
+                break
+            ranges = np.zeros((raw.range_count, 2))
+        return ToolContacts(ranges[: raw.range_count].copy(), raw.contacts, bool(raw.grasping), raw.grasp_u,
+                            raw.largest_force_N, np.array(raw.contact_impulse_Ns[:]),
+                            raw.contact_impulse_magnitude_Ns, raw.time_s, raw.steps)
 
     def grasp(self):
         """Grasps, at the start of the next step, the collision sphere nearest the tip if it
