@@ -839,6 +839,97 @@ std::vector<BadInput> table() {
              return status;
          },
          ENT_ERROR_NOT_FOUND, "tool -3"},
+        // Contacts (queries) and save/restore (driving calls).
+        {"ent_scene_contacts", "scene NULL",
+         [](L) {
+             uint32_t count = 7;
+             const ent_status status = ent_scene_contacts(nullptr, 0, nullptr, &count);
+             EXPECT_EQ(count, 7u);
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_scene_contacts", "out_count NULL", [](L l) { return ent_scene_contacts(l.scene, 0, nullptr, nullptr); },
+         kArg, "out_count"},
+        {"ent_scene_contact_summary", "scene NULL",
+         [](L) {
+             ent_contact_summary s;
+             s.struct_size = sizeof s;
+             return ent_scene_contact_summary(nullptr, &s);
+         },
+         kArg, "scene"},
+        {"ent_scene_contact_summary", "out NULL", [](L l) { return ent_scene_contact_summary(l.scene, nullptr); },
+         kArg, "out"},
+        {"ent_tool_read_contacts", "scene NULL",
+         [](L) {
+             ent_tool_contacts t{};
+             t.struct_size = sizeof t;
+             return ent_tool_read_contacts(nullptr, 0, &t);
+         },
+         kArg, "scene"},
+        {"ent_tool_read_contacts", "out NULL", [](L l) { return ent_tool_read_contacts(l.scene, l.tool, nullptr); },
+         kArg, "out"},
+        {"ent_tool_read_contacts", "ranges_u NULL with a range_capacity",
+         [](L l) {
+             ent_tool_contacts t{};
+             t.struct_size = sizeof t;
+             t.range_capacity = 4;
+             return ent_tool_read_contacts(l.scene, l.tool, &t);
+         },
+         kArg, "ranges_u"},
+        {"ent_tool_read_contacts", "unknown tool 9",
+         [](L l) {
+             ent_tool_contacts t;
+             std::memset(&t, 0x5a, sizeof t);
+             t.struct_size = sizeof t;
+             t.range_capacity = 0;
+             t.ranges_u = nullptr;
+             const ent_tool_contacts before = t;
+             const ent_status status = ent_tool_read_contacts(l.scene, 9, &t);
+             EXPECT_TRUE(same_bits(&t, &before, sizeof t)) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 9"},
+        {"ent_scene_save_state", "scene NULL",
+         [](L) {
+             size_t size = 7;
+             const ent_status status = ent_scene_save_state(nullptr, nullptr, 0, &size);
+             EXPECT_EQ(size, 7u);
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_scene_save_state", "out_size NULL", [](L l) { return ent_scene_save_state(l.scene, nullptr, 0, nullptr); },
+         kArg, "out_size"},
+        {"ent_scene_save_state", "capacity 16",
+         [](L l) {
+             unsigned char buffer[16];
+             std::memset(buffer, 0x5a, sizeof buffer);
+             size_t size = 0;
+             const ent_status status = ent_scene_save_state(l.scene, buffer, sizeof buffer, &size);
+             EXPECT_GT(size, sizeof buffer) << "the size needed is reported";
+             for (const unsigned char b : buffer) EXPECT_EQ(b, 0x5a) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_BUFFER_TOO_SMALL, "capacity"},
+        {"ent_scene_restore_state", "scene NULL",
+         [](L) {
+             const char data[64] = "ENTSTATE";
+             return ent_scene_restore_state(nullptr, data, sizeof data);
+         },
+         kArg, "scene"},
+        {"ent_scene_restore_state", "buffer NULL", [](L l) { return ent_scene_restore_state(l.scene, nullptr, 64); },
+         kArg, "buffer"},
+        {"ent_scene_restore_state", "64 bytes of text",
+         [](L l) {
+             const std::string text(64, 'x');
+             return ent_scene_restore_state(l.scene, text.data(), text.size());
+         },
+         kArg, "not a saved state"},
+        {"ent_scene_restore_state", "size 0",
+         [](L l) {
+             const char data[1] = {0};
+             return ent_scene_restore_state(l.scene, data, 0);
+         },
+         kArg, "header"},
     };
 
     // Every struct that carries a struct_size, with each size no release has.
@@ -867,6 +958,21 @@ std::vector<BadInput> table() {
         add("ent_tool_read_feedback", out_struct_with_size<ent_tool_feedback>(size, [](L l, ent_tool_feedback* f) {
                 return ent_tool_read_feedback(l.scene, l.tool, f);
             }));
+        add("ent_scene_contact_summary", out_struct_with_size<ent_contact_summary>(size, [](L l, ent_contact_summary* c) {
+                return ent_scene_contact_summary(l.scene, c);
+            }));
+        add("ent_tool_read_contacts", out_struct_with_size<ent_tool_contacts>(size, [](L l, ent_tool_contacts* t) {
+                return ent_tool_read_contacts(l.scene, l.tool, t);
+            }));
+        add("ent_scene_contacts", [size](L l) {
+            ent_contact list[2];
+            std::memset(list, 0, sizeof list);
+            list[0].struct_size = size;
+            uint32_t count = 7;
+            const ent_status status = ent_scene_contacts(l.scene, 2, list, &count);
+            EXPECT_EQ(count, 7u) << "out_count written on failure";
+            return status;
+        });
     }
     for (int32_t effect : {-1, ENT_EFFECT_COUNT, INT32_MAX}) {
         rows.push_back({"ent_scene_effect_stats", "an effect this library does not know",
