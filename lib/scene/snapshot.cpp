@@ -11,30 +11,30 @@ SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_r
     }
 }
 
+// The stepping thread alone writes latest_ (relaxed loads of it here are its own stores).
+// Sequentially consistent everywhere else: the argument in snapshot.h needs one order of
+// the writer's "unread?" check, the readers' counts and the publications.
 Snapshot* SnapshotPublisher::begin_write() {
-    std::lock_guard<std::mutex> lock(mutex_);
+    const std::size_t latest = latest_.load(std::memory_order_relaxed);
     for (std::size_t i = 1; i < kSlots; ++i) {
-        const std::size_t slot = (latest_ + i) % kSlots;
-        if (readers_[slot] == 0) return &slots_[slot];
+        const std::size_t slot = (latest + i) % kSlots;
+        if (readers_[slot].load() == 0) return &slots_[slot];
     }
     return nullptr;
 }
 
-void SnapshotPublisher::publish(Snapshot* slot) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    latest_ = static_cast<std::size_t>(slot - slots_.data());
-}
+void SnapshotPublisher::publish(Snapshot* slot) { latest_.store(static_cast<std::size_t>(slot - slots_.data())); }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {
-    std::lock_guard<std::mutex> lock(publisher.mutex_);
-    slot_ = publisher.latest_;
-    publisher.readers_[slot_] += 1;
+    for (;;) {
+        slot_ = publisher.latest_.load();
+        publisher.readers_[slot_].fetch_add(1);
+        if (publisher.latest_.load() == slot_) break;
+        publisher.readers_[slot_].fetch_sub(1);  // a newer one came meanwhile: take that
+    }
     snapshot_ = &publisher.slots_[slot_];
 }
 
-SnapshotPublisher::Reader::~Reader() {
-    std::lock_guard<std::mutex> lock(publisher_.mutex_);
-    publisher_.readers_[slot_] -= 1;
-}
+SnapshotPublisher::Reader::~Reader() { publisher_.readers_[slot_].fetch_sub(1); }
 
 }  // namespace enteron::scene
