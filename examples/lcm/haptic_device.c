@@ -357,9 +357,12 @@ int main(int argc, char** argv) {
         median = d.round_trip_us[d.round_trips / 2];
         p99 = d.round_trip_us[(long)(0.99 * (double)(d.round_trips - 1))];
         printf("haptic_device: %ld commands, %ld feedback ticks (%ld missed), round trip median %.0f us, p99 %.0f us, "
-               "max %.0f us (%ld over one tick, %ld late for their tick, lead %.0f us), largest |F| %.3f N, grasped %s, held through the lift %s\n",
+               "max %.0f us (%ld over one tick, %ld late for their tick, lead %.0f us), largest |F| %.3f N",
                d.commands, d.feedback, d.missed_ticks, median, p99, d.round_trip_us[d.round_trips - 1], d.over_one_tick,
-               d.late_commands, 1e-3 * (double)d.lead_ns, d.largest_force, d.grasped ? "yes" : "no", d.held_through_lift ? "yes" : "no");
+               d.late_commands, 1e-3 * (double)d.lead_ns, d.largest_force);
+        if (!d.sweep)
+            printf(", grasped %s, held through the lift %s", d.grasped ? "yes" : "no", d.held_through_lift ? "yes" : "no");
+        printf("\n");
     } else {
         printf("haptic_device: %ld commands, no feedback on %s: is the server running (same URL and suffix)?\n",
                d.commands, d.feedback_channel);

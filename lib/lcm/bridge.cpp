@@ -261,7 +261,6 @@ ent_status Bridge::tick(int64_t now_ns) {
     if (!step_ok) BridgeCounters::add(counters_.step_failures);
     calls_ok = step != ENT_ERROR_INTERNAL && calls_ok;
     summary.tick = tick_;
-    summary.utime = utime;
 
     for (std::size_t i = 0; i < tools_.size(); ++i)
         calls_ok = render_tool(i, utime, step_ok, summary.stats, summary) && calls_ok;

@@ -40,7 +40,6 @@ namespace enteron::bridge {
 // What the report thread needs of the last tick to publish a scene_state_t.
 struct TickSummary {
     int64_t tick = 0;
-    int64_t utime = 0;
     int64_t state_digest = 0;
     ent_stats stats{};
     std::vector<double> control_points;       // 3 per point, the exact doubles the digest hashes

@@ -21,19 +21,18 @@ JournalWriter::~JournalWriter() {
     if (log_ != nullptr) lcm_eventlog_destroy(log_);
 }
 
-bool JournalWriter::write_event(const char* channel, int64_t utime, void* data, int size) {
+bool JournalWriter::write_event(const char* channel, int64_t utime, const void* data, int size) {
     lcm_eventlog_event_t event{};
     event.timestamp = utime;
     event.channellen = static_cast<int32_t>(std::strlen(channel));
     event.datalen = size;
     event.channel = const_cast<char*>(channel);
-    event.data = data;
+    event.data = const_cast<void*>(data);  // lcm_eventlog_write_event only reads it
     return lcm_eventlog_write_event(log_, &event) == 0;
 }
 
 bool JournalWriter::write_session(const std::vector<uint8_t>& encoded_session, int64_t utime) {
-    std::vector<uint8_t> copy = encoded_session;
-    return write_event(kJournalSessionChannel, utime, copy.data(), static_cast<int>(copy.size()));
+    return write_event(kJournalSessionChannel, utime, encoded_session.data(), static_cast<int>(encoded_session.size()));
 }
 
 bool JournalWriter::write(const JournalRecord& record) {

@@ -28,7 +28,7 @@ public:
     const std::string& path() const { return path_; }
 
 private:
-    bool write_event(const char* channel, int64_t utime, void* data, int size);
+    bool write_event(const char* channel, int64_t utime, const void* data, int size);
 
     std::string path_;
     lcm_eventlog_t* log_ = nullptr;

@@ -136,7 +136,7 @@ ENT_API ent_status ent_lcm_bridge_feedback(const ent_lcm_bridge* bridge, int32_t
     return guarded([&] {
         require(bridge, "bridge");
         require(buffer, "buffer");
-        Bridge& b = const_cast<ent_lcm_bridge*>(bridge)->bridge;
+        const Bridge& b = bridge->bridge;
         if (tool < 0 || static_cast<std::size_t>(tool) >= b.tool_count())
             throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " does not exist (the scene has " +
                                                   std::to_string(b.tool_count()) + ")");

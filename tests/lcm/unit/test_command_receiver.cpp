@@ -38,7 +38,7 @@ protected:
         enteron_tool_command_t c{};
         c.seq = seq;
         c.tool = tool;
-        c.utime = 100 + seq;
+        c.utime = 100 + seq % 1000;
         c.position_m[0] = 0.01 * static_cast<double>(seq % 10);
         c.orientation_wxyz[0] = 1.0;
         c.force_enable = 1;
