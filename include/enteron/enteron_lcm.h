@@ -319,7 +319,7 @@ typedef struct ent_lcm_stats {
     int64_t feedback_published;
     int64_t feedback_dropped;           /**< the publisher's queue was full. */
     int64_t journal_entries;            /**< ticks written to the journal. */
-    int64_t journal_dropped;            /**< ticks the journal lost: its queue was full (the replay stops there). */
+    int64_t journal_dropped;            /**< ticks the journal lost: its queue was full or its file could not be written (the replay stops there). */
     int64_t log_lines_dropped;          /**< lines logged during ticks that the queue to the callback could not hold. */
 } ent_lcm_stats;
 

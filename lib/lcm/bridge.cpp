@@ -158,7 +158,6 @@ void Bridge::queue_journal(Fill&& fill) {
     JournalRecord* record = journal_.claim();
     if (record == nullptr) {  // the report thread fell behind: the journal ends here
         journal_open_ = false;
-        BridgeCounters::add(counters_.journal_dropped);
         return;
     }
     fill(*record);
@@ -274,6 +273,7 @@ ent_status Bridge::tick(int64_t now_ns) {
         entry.sim_time_s = summary.stats.time_s;
         entry.state_digest = summary.state_digest;
     });
+    if (journal_writer_ != nullptr && !journal_open_) BridgeCounters::add(counters_.journal_dropped);
     summary_->publish();
     step_us_.push(clamp_to_int32(static_cast<int64_t>(summary.stats.last_step_ns / 1000)));
     counters_.sim_time_s.store(summary.stats.time_s, std::memory_order_relaxed);

@@ -99,7 +99,7 @@ private:
     void queue_journal(Fill&& fill);
 
     // Threads.
-    void receive_loop(std::promise<std::string>& subscribed);
+    void receive_loop();
     bool use_realtime_priority(int priority, const char* thread);
     void publish_loop();
     void publish_feedback();
@@ -125,6 +125,8 @@ private:
     std::vector<Tool> tools_;
     UtimeFromMonotonic utime_;
     const int64_t created_ns_ = monotonic_ns();
+    const std::string feedback_channel_ = channel("ENTERON_TOOL_FEEDBACK");
+    std::promise<std::string> subscribed_;  // the receive thread's verdict on its subscription
 
     // Driving thread only.
     int64_t tick_ = 0;
@@ -136,12 +138,11 @@ private:
     SpscQueue<JournalRecord> journal_{16384};
     SpscQueue<int32_t> step_us_{4096};
     std::unique_ptr<LatestMailbox<TickSummary>> summary_;
-    std::atomic<bool> journal_failed_{false};  // the report thread could not write: the tick stops queueing
+    std::atomic<bool> journal_failed_{false};  // the report thread could not write: the journal ends
     Wakeup publisher_wakeup_;
 
     // Report thread only.
     enteron_journal_step_t last_journal_step_{};
-    bool journal_writable_ = true;
     int64_t watchdog_trips_logged_ = 0;
 
     std::atomic<bool> stopping_{false};

@@ -72,10 +72,10 @@ void Bridge::start_threads() {
     report_thread_ = std::thread([this] { report_loop(); });
     if (!settings_.network) return;
     // The receive thread subscribes itself, so that the thread LCM starts to read the
-    // socket inherits its priority; its verdict comes back here.
-    std::promise<std::string> subscribed;
-    std::future<std::string> verdict = subscribed.get_future();
-    receive_thread_ = std::thread([this, &subscribed] { receive_loop(subscribed); });
+    // socket inherits its priority; its verdict comes back here (the promise is a member:
+    // it outlives the receive thread's set_value).
+    std::future<std::string> verdict = subscribed_.get_future();
+    receive_thread_ = std::thread([this] { receive_loop(); });
     const std::string problem = verdict.get();
     if (!problem.empty()) throw Error(ErrorCode::invalid_argument, problem);
     publish_thread_ = std::thread([this] { publish_loop(); });
@@ -105,18 +105,18 @@ void Bridge::publish(const char* name, const std::vector<uint8_t>& bytes) {
 
 // ---- receive ---------------------------------------------------------------------------------
 
-void Bridge::receive_loop(std::promise<std::string>& subscribed) {
+void Bridge::receive_loop() {
     use_realtime_priority(settings_.desc.realtime_priority - 1, "receive");
     // Commands are checked in the handler (CommandReceiver::feed), on this thread.
     const auto on_command = [](const lcm_recv_buf_t* buffer, const char*, void* self) {
         static_cast<Bridge*>(self)->feed(buffer->data, buffer->data_size, monotonic_ns(), nullptr, 0);
     };
     if (lcm_subscribe(lcm_, channel("ENTERON_TOOL_COMMAND").c_str(), on_command, this) == nullptr) {
-        subscribed.set_value("lcm_url: cannot subscribe to " + channel("ENTERON_TOOL_COMMAND") + " on \"" +
-                             settings_.lcm_url + "\"");
+        subscribed_.set_value("lcm_url: cannot subscribe to " + channel("ENTERON_TOOL_COMMAND") + " on \"" +
+                              settings_.lcm_url + "\"");
         return;
     }
-    subscribed.set_value("");
+    subscribed_.set_value("");
     while (!stopping_.load(std::memory_order_relaxed))
         if (lcm_handle_timeout(lcm_, kReceiveTimeout_ms) < 0) {
             callbacks_.log(LogLevel::error, "enteron_lcm: LCM cannot receive on \"%s\"; the receive thread stops",
@@ -129,13 +129,12 @@ void Bridge::receive_loop(std::promise<std::string>& subscribed) {
 
 void Bridge::publish_feedback() {
     static thread_local std::vector<uint8_t> bytes;
-    const std::string name = channel("ENTERON_TOOL_FEEDBACK");
     for (const enteron_tool_feedback_t* queued = feedback_.front(); queued != nullptr; queued = feedback_.front()) {
         enteron_tool_feedback_t feedback = *queued;
         feedback_.release();
         feedback.utime = realtime_us();  // "server clock at publication"
         encode_into(bytes, feedback, enteron_tool_feedback_t_encoded_size, enteron_tool_feedback_t_encode);
-        if (lcm_publish(lcm_, name.c_str(), bytes.data(), static_cast<unsigned>(bytes.size())) == 0)
+        if (lcm_publish(lcm_, feedback_channel_.c_str(), bytes.data(), static_cast<unsigned>(bytes.size())) == 0)
             BridgeCounters::add(counters_.feedback_published);
     }
 }
@@ -228,9 +227,8 @@ void Bridge::publish_status() {
 
 void Bridge::write_journal() {
     for (const JournalRecord* record = journal_.front(); record != nullptr; record = journal_.front()) {
-        if (journal_writable_) {
+        if (!journal_failed_.load(std::memory_order_relaxed)) {
             if (!journal_writer_->write(*record)) {
-                journal_writable_ = false;
                 journal_failed_.store(true, std::memory_order_relaxed);
                 callbacks_.log(LogLevel::error, "enteron_lcm: cannot write the journal \"%s\" (%s); it ends at tick %" PRId64,
                                journal_writer_->path().c_str(), std::strerror(errno), last_journal_step_.tick);
@@ -264,7 +262,7 @@ void Bridge::report_once_a_second(std::vector<int32_t>& step_us) {
                        trips - watchdog_trips_logged_, 1e3 * settings_.desc.watchdog_s);
         watchdog_trips_logged_ = trips;
     }
-    if (journal_writer_ != nullptr && journal_writable_) journal_writer_->flush();
+    if (journal_writer_ != nullptr && !journal_failed_.load()) journal_writer_->flush();
 }
 
 void Bridge::report_loop() {
@@ -293,7 +291,7 @@ void Bridge::report_loop() {
     callbacks_.drain();
     if (journal_writer_ != nullptr) {
         write_journal();
-        if (journal_writable_ && !journal_failed_.load() && last_journal_step_.tick > 0 &&
+        if (!journal_failed_.load() && last_journal_step_.tick > 0 &&
             last_journal_step_.tick == BridgeCounters::get(counters_.ticks) &&
             BridgeCounters::get(counters_.journal_dropped) == 0)
             journal_writer_->write_end(last_journal_step_);
