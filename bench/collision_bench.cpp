@@ -268,7 +268,7 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
         state.counters["contacts"] = static_cast<double>(contacts) / steps;  // mean per step
         state.counters["max_penetration_m"] = max_penetration_m;
         state.counters["radius_m"] = desc.radius_m;
-        // The sphere count of the README's formula, round(L / spacing) + 1.
+        // The sphere count of docs/scene-json.md, round(L / spacing) + 1.
         state.counters["spheres"] = std::round(desc.length_m / spacing) + 1.0;
         state.counters["control_points"] = control_points;
         state.counters["finite"] = axis_finite(scene, control_points) ? 1.0 : 0.0;

@@ -10,10 +10,12 @@
  *     --long        the 6 m small bowel with its mesentery in a 30 cm box (default: a 0.4 m
  *                   bowel lying on the floor of a box)
  *
- * Threads (see "Threads" in enteron.h): the haptic thread alone drives the scene (every
- * ent_tool_* call and ent_scene_step); the main thread only queries (ent_scene_stats) and
- * reads the last force from the haptic thread, and prints a few lines per second, so that
- * a slow terminal never delays a haptic tick. The haptic thread never blocks on the main
+ * Threads (see "Threads" in enteron.h): the haptic thread drives the scene (ent_scene_step)
+ * and posts the tool's commands; the main thread only queries (ent_scene_stats) and reads
+ * the last force from the haptic thread, and prints a few lines per second, so that a slow
+ * terminal never delays a haptic tick. (The tool commands and ent_tool_read_feedback are
+ * safe from any thread: a simulator whose physics thread steps on its own would post the
+ * device's pose from the haptic thread the same way, without a lock.) The haptic thread never blocks on the main
  * thread: it hands its force over with pthread_mutex_trylock and skips a hand-over when
  * the main thread holds the lock.
  *
@@ -180,6 +182,7 @@ static void* haptic_thread(void* argument) {
     const phase* script = s->scenario->script;
     const long ticks = (long)(s->seconds / TICK_S + 0.5);
     int current = -1;
+    int grasp_posted = 0; /* the grasp shows in the state once the next step has taken it */
     double deadline = TICK_S; /* when this tick's work must be done, s since the start */
     double previous[3] = {0.0, 0.0, 0.0};
     long tick;
@@ -193,9 +196,7 @@ static void* haptic_thread(void* argument) {
         if (now != current) {
             current = now;
             if (script[now].first == GRASP) {
-                if (!failed(s, ent_tool_grasp(s->scene, TOOL), "ent_tool_grasp") &&
-                    !failed(s, ent_tool_state(s->scene, TOOL, &grasping), "ent_tool_state"))
-                    s->grasped = grasping;
+                grasp_posted = !failed(s, ent_tool_grasp(s->scene, TOOL), "ent_tool_grasp");
             } else if (script[now].first == RELEASE) {
                 /* Before letting go: is the bowel still held after the lift, and how high is it? */
                 if (!failed(s, ent_tool_state(s->scene, TOOL, &grasping), "ent_tool_state"))
@@ -210,6 +211,10 @@ static void* haptic_thread(void* argument) {
         if (failed(s, ent_tool_wrench(s->scene, TOOL, force, torque), "ent_tool_wrench"))
             force[0] = force[1] = force[2] = 0.0; /* render nothing rather than garbage */
         failed(s, ent_tool_state(s->scene, TOOL, &grasping), "ent_tool_state");
+        if (grasp_posted) {
+            s->grasped = grasping;
+            grasp_posted = 0;
+        }
         s->work_us[tick - 1] = 1e6 * (seconds_since(&s->start) - before);
         /* A real shim sends `force` to the device here. */
         magnitude = sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);

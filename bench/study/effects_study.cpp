@@ -4,12 +4,13 @@
 //    from ent_scene_effect_stats over a window after the pile has settled: microseconds
 //    per 1 ms step and share of the whole step.
 // 2. Three variants of one 6 m bowel, stepped in interleaved rounds so that they share
-//    the machine's load: gravity only (a minimal document); the pile document with every
-//    other effect key deleted (what is left: intestine without stiffnesses, solver,
-//    gravity, collision parameters); the pile document with every other effect present
-//    at zero strength (stiffnesses, damping, mesentery and contact stiffness 0, nothing
-//    pinned, one tool parked above the cavity), which moves exactly alike but still runs
-//    them. Per round, each variant's
+//    the machine's load: gravity only (a minimal document, stiffnesses 0); the pile
+//    document with every other effect key deleted (what is left: intestine with
+//    stiffnesses 0, solver, gravity, collision parameters); the pile document with every
+//    other effect present at zero strength (damping, mesentery and contact stiffness 0,
+//    nothing pinned, one tool parked above the cavity), which moves exactly alike but
+//    still runs them; a zero stiffness turns the bowel's elasticity off in all three (it
+//    has no key of its own). Per round, each variant's
 //    median step time is divided by the gravity-only one's; the study reports the median
 //    ratio over rounds, and which effects each variant ran (enabled, calls).
 #include "effects_study.h"
@@ -27,7 +28,8 @@ const char* kShape = "\"shape\": {\"kind\": \"helix\", \"center\": [0, 0, -0.13]
                      " \"helix_pitch\": 0.025}";
 
 std::string gravity_only_json() {
-    return format("{\"intestine\": {\"length\": 6.0, \"control_points\": 240, %s},"
+    return format("{\"intestine\": {\"length\": 6.0, \"control_points\": 240,"
+                  " \"stretch_stiffness\": 0, \"bend_stiffness\": 0, %s},"
                   " \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001},"
                   " \"gravity\": [0, 0, -9.81]}",
                   kShape);
@@ -35,7 +37,7 @@ std::string gravity_only_json() {
 
 std::string others_absent_json() {
     return format("{\"intestine\": {\"length\": 6.0, \"radius\": 0.0125, \"control_points\": 240,"
-                  " \"linear_density\": 0.3, %s},"
+                  " \"linear_density\": 0.3, \"stretch_stiffness\": 0, \"bend_stiffness\": 0, %s},"
                   " \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001},"
                   " \"gravity\": [0, 0, -9.81],"
                   " \"collision\": {\"sphere_spacing\": 0, \"stiffness\": 500}}",

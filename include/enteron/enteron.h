@@ -15,25 +15,37 @@
  * failing call changes nothing: the scene is exactly as it was before the call (only the
  * work counters of ent_stats and ent_effect_stats record a step the guard gave up on).
  *
- * Threads:
- * - One thread at a time drives a scene: ent_scene_step, ent_scene_add_obstacle and the
- *   ent_tool_* calls that take a scene. Driving calls on one scene must not overlap; the
- *   driving thread may change if the caller hands the scene over (e.g. under its own mutex).
- * - The queries (ent_scene_axis, ent_scene_control_points, ent_scene_stats,
- *   ent_scene_effect_stats) read the last published snapshot: an immutable copy of the
- *   state made at creation and at the end of every step (a step that fails publishes the
- *   same state with its work counters). Any number of threads may query at the same time
- *   as each other and as the step; each query sees one whole snapshot, never a mix of
- *   two, and snapshots seen by one thread never go back in time. A query pins a snapshot
- *   only while it copies from it, and the stepping thread never waits for a copy: it
- *   publishes into a free slot of a small pool (8 slots; with up to 7 queries running at
- *   once every step is published, beyond that a publication may be skipped and the next
- *   one goes through).
- * - ent_scene_destroy must not overlap any other call on that scene.
+ * Threads (a physics thread at 1 kHz, a haptic thread, a render thread):
+ * - The driving calls change the simulation: ent_scene_step, ent_scene_add_obstacle and
+ *   ent_tool_add. One of them at a time per scene: a driving call made while another runs
+ *   on the same scene on another thread returns ENT_ERROR_BUSY at once and changes nothing
+ *   (the check costs one atomic operation). The driving thread may change between calls.
+ * - The tool commands (ent_tool_set_pose, ent_tool_grasp, ent_tool_release) are safe from
+ *   any thread, at any time, never wait and allocate nothing: each goes into the tool's
+ *   mailbox, which the next ent_scene_step takes at its start (the last command posted
+ *   before that wins). A haptic thread posts poses while the physics thread steps.
+ * - The queries read the last published snapshot: ent_scene_axis,
+ *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, and each tool's
+ *   output (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state). A snapshot is an
+ *   immutable copy of the state made at creation, after each driving call and at the end
+ *   of every step (a step that fails publishes the same state with its work counters).
+ *   Any number of threads may query at the same time as each other and as the step; each
+ *   query sees one whole snapshot, never a mix of two, and snapshots seen by one thread
+ *   never go back in time. A query pins a snapshot only while it copies from it, and the
+ *   stepping thread never waits for a copy: it publishes into a free slot of a small pool
+ *   (8 slots; with up to 7 queries running at once every step is published, beyond that a
+ *   publication may be skipped and the next one goes through).
+ * - A skin is used by one thread at a time (its own lock, or one skin per thread); it reads
+ *   the snapshots like a query, so it never waits for the step either.
+ * - Lifetimes: ent_scene_destroy must not overlap any other call on that scene, and a
+ *   scene (or skin) must not be used after its destroy call. A skin may outlive its
+ *   scene: it shares the published snapshots and keeps working on the last state the
+ *   scene published. A skin's mesh view is valid until that skin's next update or destroy.
  * - Different scenes are independent; the calls that take no scene (ent_version,
  *   ent_status_string, ent_last_error, ent_effect_name, the _init/_default functions)
  *   are safe from any thread. ent_last_error is per thread. Callbacks run on the thread
  *   of the call that triggers them.
+ * docs/c-api.md tells the same with the three threads of a simulator as an example.
  *
  * The library never prints, never aborts and never exits. It logs only through the
  * optional callback given in ent_callbacks.
@@ -114,6 +126,9 @@ typedef int32_t ent_status;
 #define ENT_ERROR_BUFFER_TOO_SMALL 8
 /** A bug in the library. Please report it with the message of ent_last_error(). */
 #define ENT_ERROR_INTERNAL 9
+/** Another driving call (step, add obstacle, add tool) is running on this scene on another
+ *  thread; nothing was done. Added in 0.1 after the first tools. */
+#define ENT_ERROR_BUSY 10
 
 /**
  * A short constant English text for a status ("ok", "invalid argument", ...). Unknown codes
@@ -141,7 +156,8 @@ ENT_API const char* ent_last_error(void);
  * Optional per-scene hooks. With none given the library is silent and allocates with
  * malloc/free. The callbacks are called on the thread that makes the call which logs or
  * allocates; they must not call back into the scene. No reference to this struct is kept,
- * but the function pointers and user_data must stay valid for the scene's lifetime.
+ * but the function pointers and user_data must stay valid until the scene and all its
+ * skins are destroyed (the snapshots that skins share come from the allocator).
  */
 typedef struct ent_callbacks {
     uint32_t struct_size; /**< sizeof(ent_callbacks); set by ent_callbacks_default. */
@@ -213,7 +229,9 @@ ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_
  * Everything needed to create a scene from C. Fill it with ent_scene_desc_default, change
  * what you need, then call ent_scene_create. No reference to it (or to the arrays it points
  * to) is kept after the call. The JSON description (ent_scene_create_json) offers the same
- * settings; the README documents both, key by key.
+ * settings with the same defaults (one set: an elastic bowel; C also turns on gravity and
+ * damping); docs/scene-json.md documents both, key by key, with the plausible range of
+ * each value.
  */
 typedef struct ent_scene_desc {
     uint32_t struct_size; /**< sizeof(ent_scene_desc); set by ent_scene_desc_default. */
@@ -269,7 +287,7 @@ typedef struct ent_scene_desc {
     const ent_callbacks* callbacks;
 
     /* Collision: spheres of radius R along the axis and the penalty contact law that every
-       contact of the bowel uses (the environment; later self-contact and tools). */
+       contact of the bowel uses: the environment, the self-contact and the tools. */
     double collision_sphere_spacing_m;  /**< sphere spacing along the axis at rest, m, <= R; 0: R / 2 (default 0). */
     double contact_stiffness_N_per_m;   /**< normal stiffness of one sphere's contact (default 500). */
     double contact_damping_N_s_per_m;   /**< normal damping, only while approaching, fading in over the first R/10 of penetration (default 0.5). */
@@ -302,16 +320,24 @@ typedef struct ent_scene ent_scene;
 /**
  * Creates a scene from a C description. The axis starts at rest in the initial shape and
  * the state is published at once, so the queries work before the first step.
+ * A value far outside what a human abdomen has (gravity of 9810 m/s^2, a 150 m cavity, a
+ * density a thousand times too large; the ranges are in docs/scene-json.md) is accepted,
+ * with a warning through the log callback that names the field and the likely unit mistake.
  * @param desc filled by ent_scene_desc_default first; not retained.
  * @param out_scene receives the new scene; untouched on failure.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, bad value: the message names the
- *         field), ENT_ERROR_VERSION (struct_size not known), ENT_ERROR_OUT_OF_MEMORY.
+ *         field; where two fields disagree it names the one that differs from its default),
+ *         ENT_ERROR_VERSION (struct_size not known), ENT_ERROR_OUT_OF_MEMORY.
  */
 ENT_API ent_status ent_scene_create(const ent_scene_desc* desc, ent_scene** out_scene);
 
 /**
- * Creates a scene from a JSON description (format v1, documented key by key in the
- * README). Effects are opt-in: a key that is absent is an effect that does not run.
+ * Creates a scene from a JSON description (format v1, documented key by key in
+ * docs/scene-json.md). Effects are opt-in: a key that is absent is an effect that does not
+ * run; the bowel itself is elastic unless its stiffnesses are 0. A scene that cannot start
+ * is refused: a control point beyond an obstacle's surface (outside the box_inside, inside
+ * an organ) gives ENT_ERROR_INVALID_SCENE naming the obstacle and the control points.
+ * Implausible values are warned about as in ent_scene_create.
  * @param json UTF-8 text, not necessarily NUL-terminated; @param length its bytes.
  * @return ENT_OK; ENT_ERROR_PARSE (not JSON: the message gives the byte offset);
  *         ENT_ERROR_INVALID_SCENE (unknown key, wrong type or bad value: the message names
@@ -326,7 +352,8 @@ ENT_API ent_status ent_scene_create_json_with(const char* json, size_t length,
                                               ent_scene** out_scene);
 
 /**
- * Destroys a scene and everything it owns. NULL is ignored.
+ * Destroys a scene and everything it owns. NULL is ignored. Its skins stay valid: they keep
+ * the last published state (and its memory) until they are destroyed too.
  * @warning No other call on this scene may run during or after this one.
  */
 ENT_API void ent_scene_destroy(ent_scene* scene);
@@ -334,15 +361,23 @@ ENT_API void ent_scene_destroy(ent_scene* scene);
 /**
  * Advances the simulation by dt_s seconds, in equal substeps no longer than the scene's
  * timestep (and, for explicit integrators, no longer than their stability limit), then
- * publishes the new state. A stability guard checks the result (finite, speeds below
- * max_speed, no energy from nothing); when the check fails it rolls back and retries
- * with halved substeps, up to max_subdivisions times.
- * Allocates nothing after the first step.
+ * publishes the new state. It first takes the tools' commands (ent_tool_set_pose, _grasp,
+ * _release). A stability guard checks the result (finite, speeds below max_speed, no
+ * energy from nothing); when the check fails it rolls back and retries with halved
+ * substeps, up to max_subdivisions times.
+ * Allocates nothing after the first step and makes no system call.
+ * Time: a step that succeeds at once costs n = ceil(dt_s / substep) substeps. A step that
+ * fails returns after at most (2^(max_subdivisions + 1) - 1) n substeps in all (31 n with
+ * the default 4; an attempt stops at its first non-finite substep), plus one evaluation of
+ * each effect to name the cause.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, dt not finite or <= 0, or dt needing
- *         more than max_substeps substeps; nothing changes); ENT_ERROR_UNSTABLE (the
- *         guard could not recover: positions, velocities, time and step count are exactly
- *         as before the call; substeps, rollbacks and effect times record the attempt).
- * @warning Call from the one thread that drives this scene.
+ *         more than max_substeps substeps; nothing changes); ENT_ERROR_BUSY (another
+ *         driving call is running; nothing changes); ENT_ERROR_UNSTABLE (the guard could
+ *         not recover: positions, velocities, time and step count are exactly as before
+ *         the call; substeps, rollbacks and effect times record the attempt; the message
+ *         names the check that failed, non-finite, speed or energy, by how much, the
+ *         control point and the effect that drove it).
+ * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s);
 
@@ -441,13 +476,14 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
  * environment effect on; its contacts use the scene's collision spheres and contact law
  * (ent_scene_desc collision_* and contact_* fields, JSON "collision"). The JSON
  * description lists obstacles under "environment" instead. Obstacles do not move.
- * Allocates; call it between steps, not on a hard real-time path.
+ * Allocates; not on a hard real-time path.
  * @param out_obstacle receives the obstacle's index (0, 1, ... in order of addition; JSON
  *        obstacles come first); may be NULL.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown kind, non-finite value, size
- *         <= 0, zero normal: the message names the field); ENT_ERROR_VERSION; nothing
- *         changes on failure.
- * @warning Call from the thread that drives the scene.
+ *         <= 0, zero normal: the message names the field; an obstacle with control points
+ *         of the bowel, where it is now, beyond its surface: the message names them);
+ *         ENT_ERROR_VERSION; ENT_ERROR_BUSY; nothing changes on failure.
+ * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle);
 
@@ -490,7 +526,7 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
  * Adds a tool at the desc's pose. The first tool turns ENT_EFFECT_TOOLS on. Every collision
  * sphere of the bowel touching the capsule gets the scene's penalty contact (ent_scene_desc
  * contact_* fields, JSON "collision"). The JSON description lists tools under "tools"
- * instead (they come first). Allocates; call it between steps.
+ * instead (they come first). Allocates; not on a hard real-time path.
  * @code
  *   ent_tool_desc tool;
  *   ent_tool_desc_default(&tool);
@@ -500,9 +536,9 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
  * @endcode
  * @param out_tool receives the tool's id (0, 1, ... in order of addition); may be NULL.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, a value out of range or non-finite, a
- *         zero quaternion: the message names the field); ENT_ERROR_VERSION; nothing
- *         changes on failure.
- * @warning Call from the thread that drives the scene.
+ *         zero quaternion: the message names the field); ENT_ERROR_VERSION;
+ *         ENT_ERROR_BUSY; nothing changes on failure.
+ * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int32_t* out_tool);
 
@@ -512,11 +548,12 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
  * moves continuously from its current pose (the tip linearly, the orientation by
  * normalised linear interpolation) across the substeps, so a fast tool pushes the bowel
  * instead of jumping through it; its velocity, for contact damping, is the pose change
- * over the step. Setting the pose again before the step replaces the target.
- * Allocates nothing: safe at 1 kHz.
+ * over the step. Setting the pose again before the step replaces the target: the step
+ * takes the last pose posted before it starts.
+ * Any thread, at any time, also while the scene steps: wait-free (no lock), allocates
+ * nothing; safe at 1 kHz and more from a haptic thread.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite position, zero or
  *         non-finite quaternion); ENT_ERROR_NOT_FOUND (unknown tool); nothing changes on failure.
- * @warning Call from the thread that drives the scene.
  */
 ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const double position_m[3],
                                      const double orientation_wxyz[4]);
@@ -527,40 +564,74 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
  * sum of the tool's contacts and grasp, bounded by max_force_N: when the magnitudes of
  * those forces add up to more, they are all scaled down by one factor, on the bowel as on
  * the tool, so action equals reaction. Zero before the first step.
- * Allocates nothing.
+ * Reads the last published snapshot (as ent_tool_read_feedback does, which tells more):
+ * any thread, never waits, allocates nothing.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
- * @warning Call from the thread that drives the scene.
  */
 ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double force_N[3], double torque_Nm[3]);
 
 /**
- * Grasps the bowel: the collision sphere centre nearest the tip, within radius_m + R +
+ * Grasps the bowel at the start of the next ent_scene_step: the collision sphere centre
+ * nearest the tip (where the tool rests before that step), within radius_m + R +
  * grasp_margin_m of it, is held to the tip by a tension-only spring-damper of rest length
  * radius_m + R (the held point stays on the tool's surface, where the contact does not
  * push, and the grasp starts without a jolt); the material point of the axis held stays
- * the same as the bowel moves. With nothing within reach nothing is held
- * (still ENT_OK; ent_tool_state reports it). Grasping again picks the nearest point anew.
- * When holding would need more than max_force_N the grasp slips: it is released at the
- * end of that step, with no force jump beyond the bound.
+ * the same as the bowel moves. With nothing within reach nothing is held (still ENT_OK;
+ * ent_tool_state reports it once that step is published). Grasping again picks the
+ * nearest point anew. When holding would need more than max_force_N the grasp slips: it
+ * is released at the end of that step, with no force jump beyond the bound.
+ * Any thread, at any time: wait-free, like ent_tool_set_pose. Of a grasp and a release
+ * posted before one step, the last one posted wins.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
- * @warning Call from the thread that drives the scene.
  */
 ENT_API ent_status ent_tool_grasp(ent_scene* scene, int32_t tool);
 
 /**
- * Releases what the tool holds (nothing held: no effect).
+ * Releases what the tool holds at the start of the next ent_scene_step (nothing held: no
+ * effect). Any thread, at any time: wait-free, like ent_tool_grasp.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
- * @warning Call from the thread that drives the scene.
  */
 ENT_API ent_status ent_tool_release(ent_scene* scene, int32_t tool);
 
 /**
- * Whether the tool holds the bowel: *out_grasping is 1 while a grasp holds, 0 after a
- * release, a grasp with nothing in reach, or a slip.
+ * Whether the tool holds the bowel in the last published state: *out_grasping is 1 while a
+ * grasp holds, 0 after a release, a grasp with nothing in reach, or a slip. A grasp or a
+ * release shows once the step that takes it is published.
+ * Any thread; never waits; allocates nothing.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
- * @warning Call from the thread that drives the scene.
  */
 ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t* out_grasping);
+
+/**
+ * What a tool felt and did in the last published step: what a haptic loop renders, read in
+ * one call from one snapshot. Later releases append fields (struct_size tells them apart).
+ */
+typedef struct ent_tool_feedback {
+    uint32_t struct_size;  /**< set by the caller to sizeof(ent_tool_feedback). */
+    int32_t grasping;      /**< 1 while a grasp holds, else 0 (as ent_tool_state). */
+    double force_N[3];     /**< force of the bowel on the tool, N, bounded by max_force_N (as ent_tool_wrench). */
+    double torque_Nm[3];   /**< torque of the bowel on the tool about its tip, N m. */
+    uint32_t contacts;     /**< collision spheres touching the tool in the step's last evaluation. */
+    double time_s;         /**< simulated time of the published state this comes from. */
+    uint64_t steps;        /**< successful steps at that state (ent_stats.steps): a new value, a new step. */
+} ent_tool_feedback;
+
+/**
+ * Copies the tool's output in the last published snapshot into *out: wrench, grasp,
+ * contacts, and the time and step count of that snapshot. Set out->struct_size first;
+ * fields beyond an older, smaller struct_size are not written.
+ * Any thread, also while the scene steps: never waits (it pins the snapshot only while it
+ * copies) and allocates nothing. A haptic thread at 1 kHz:
+ * @code
+ *   ent_tool_feedback feedback = {0};
+ *   feedback.struct_size = sizeof feedback;
+ *   ent_tool_set_pose(scene, tool, device_position_m, device_orientation_wxyz);
+ *   if (ent_tool_read_feedback(scene, tool, &feedback) == ENT_OK) render_force(feedback.force_N);
+ * @endcode
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
+ *         ENT_ERROR_NOT_FOUND (unknown tool).
+ */
+ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, ent_tool_feedback* out);
 
 /* ------------------------------------------------------------------------------------ */
 /* Skins: a closed triangle mesh of the bowel surface, for rendering                    */
@@ -568,8 +639,9 @@ ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t*
 
 /**
  * A skin builds the surface of the intestine, a tube of radius R around the axis, from the
- * last published state of its scene. Opaque; made by ent_skin_create. A skin keeps a
- * reference to its scene: the scene must outlive all its skins.
+ * last published state of its scene. Opaque; made by ent_skin_create. A skin shares its
+ * scene's published snapshots: it may outlive the scene, and then keeps building from the
+ * last state the scene published.
  */
 typedef struct ent_skin ent_skin;
 
@@ -623,7 +695,7 @@ ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size)
 /**
  * Creates a skin of a scene. The mesh is empty until the first ent_skin_update.
  * The skin's buffers come from the C++ heap, not from the scene's allocator callbacks.
- * @param scene the scene to skin; it must outlive the skin.
+ * @param scene the scene to skin; the skin may outlive it.
  * @param desc filled by ent_skin_desc_default first; not retained.
  * @param out_skin receives the new skin; untouched on failure.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown method, a knob out of its range:
@@ -635,7 +707,7 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
 
 /**
  * Rebuilds the mesh from the scene's last published state (the one ent_scene_axis would
- * read). Safe on a render thread while another thread calls ent_scene_step: it pins the
+ * read; after ent_scene_destroy, the last state it published). Safe on a render thread while another thread calls ent_scene_step: it pins the
  * latest snapshot only while it copies the control points, and the stepping thread never
  * waits on it for more than a pointer swap. Reuses the skin's buffers: after the first
  * updates it allocates only when the mesh grows beyond any size it had before (its work

@@ -17,6 +17,7 @@ enum class ErrorCode : int {
     not_found = 7,
     buffer_too_small = 8,
     internal = 9,
+    busy = 10,
 };
 
 class Error : public std::runtime_error {

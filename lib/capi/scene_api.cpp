@@ -9,11 +9,12 @@
 
 #include "base/memory.h"
 #include "capi/call_guard.h"
-#include "capi/scene_handle.h"
+#include "capi/driving_call.h"
 #include "capi/scene_desc.h"
 #include "capi/scene_handle.h"
 #include "capi/struct_size.h"
 #include "scene/json_loader.h"
+#include "scene/plausible_ranges.h"
 #include "scene/scene.h"
 #include "spline/arc_length.h"
 
@@ -26,34 +27,51 @@ namespace {
 
 using enteron::capi::SceneHandle;
 using enteron::capi::handle_of;
+using enteron::capi::live_handle;
 
-ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::SceneConfig& config) {
+// A validated config as a scene, after the warnings of the values no abdomen has.
+ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::SceneConfig& config,
+                       const enteron::scene::FieldNames& names) {
     if (callbacks != nullptr) enteron::capi::check_callbacks(*callbacks);
-    void* memory = nullptr;
     const bool custom = callbacks != nullptr && callbacks->allocate != nullptr;
-    memory = custom ? callbacks->allocate(callbacks->user_data, sizeof(SceneHandle), alignof(SceneHandle))
-                    : ::operator new(sizeof(SceneHandle), std::nothrow);
+    void* memory = custom ? callbacks->allocate(callbacks->user_data, sizeof(SceneHandle), alignof(SceneHandle))
+                          : ::operator new(sizeof(SceneHandle), std::nothrow);
     if (memory == nullptr) throw std::bad_alloc();
-    SceneHandle* handle = new (memory) SceneHandle(callbacks);
-    if (callbacks != nullptr) handle->callbacks = *callbacks;
-    ent_scene* scene = reinterpret_cast<ent_scene*>(handle);
+    SceneHandle* handle = nullptr;
     try {
-        handle->scene.emplace(config, handle->memory, handle->logger);
+        handle = new (memory) SceneHandle(callbacks, config.intestine.control_points);
     } catch (...) {
-        ent_scene_destroy(scene);
+        if (custom)
+            callbacks->release(callbacks->user_data, memory, sizeof(SceneHandle), alignof(SceneHandle));
+        else
+            ::operator delete(memory);
         throw;
     }
-    return scene;
-}
-
-const enteron::scene::Scene& scene_of(const ent_scene* scene) {
-    require(scene, "scene");
-    return *handle_of(scene)->scene;
+    try {
+        enteron::scene::warn_implausible(config, names, handle->logger);
+        handle->scene.emplace(config, *handle->published, handle->memory, handle->logger);
+    } catch (...) {
+        enteron::capi::release(handle);
+        throw;
+    }
+    return reinterpret_cast<ent_scene*>(handle);
 }
 
 }  // namespace
 
+namespace enteron::capi {
 
+void release(SceneHandle* handle) {
+    if (handle->references.fetch_sub(1, std::memory_order_acq_rel) != 1) return;
+    const ent_callbacks callbacks = handle->callbacks;
+    handle->~SceneHandle();
+    if (callbacks.release != nullptr)
+        callbacks.release(callbacks.user_data, handle, sizeof(SceneHandle), alignof(SceneHandle));
+    else
+        ::operator delete(handle);
+}
+
+}  // namespace enteron::capi
 
 extern "C" {
 
@@ -63,7 +81,7 @@ ENT_API ent_status ent_scene_create(const ent_scene_desc* desc, ent_scene** out_
         require(out_scene, "out_scene");
         const ent_scene_desc complete = enteron::capi::complete_desc(*desc);
         const enteron::scene::SceneConfig config = enteron::capi::config_from_desc(complete);
-        *out_scene = make_handle(complete.callbacks, config);
+        *out_scene = make_handle(complete.callbacks, config, enteron::scene::c_field_names());
     });
 }
 
@@ -73,7 +91,7 @@ ENT_API ent_status ent_scene_create_json_with(const char* json, size_t length, c
         require(json, "json");
         require(out_scene, "out_scene");
         const enteron::scene::SceneConfig config = enteron::scene::load_scene_json(json, length);
-        *out_scene = make_handle(callbacks, config);
+        *out_scene = make_handle(callbacks, config, enteron::scene::json_field_names());
     });
 }
 
@@ -84,37 +102,35 @@ ENT_API ent_status ent_scene_create_json(const char* json, size_t length, ent_sc
 ENT_API void ent_scene_destroy(ent_scene* scene) {
     if (scene == nullptr) return;
     SceneHandle* handle = handle_of(scene);
-    const ent_callbacks callbacks = handle->callbacks;
-    handle->~SceneHandle();
-    if (callbacks.release != nullptr)
-        callbacks.release(callbacks.user_data, handle, sizeof(SceneHandle), alignof(SceneHandle));
-    else
-        ::operator delete(handle);
+    handle->scene.reset();
+    enteron::capi::release(handle);
 }
 
 ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s) {
     return guarded([&] {
-        require(scene, "scene");
-        handle_of(scene)->scene->step(dt_s);
+        SceneHandle& handle = live_handle(scene);
+        const enteron::capi::DrivingCall driving(handle, "ent_scene_step");
+        handle.scene->step(dt_s);
     });
 }
 
 ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double* points_xyz_m) {
     return guarded([&] {
-        const enteron::scene::Scene& s = scene_of(scene);
+        const SceneHandle& handle = live_handle(scene);
         require(points_xyz_m, "points_xyz_m");
         if (count < 2) throw Error(ErrorCode::invalid_argument, "count must be >= 2, got " + std::to_string(count));
-        const auto snapshot = s.read();
-        enteron::spline::sample_evenly(snapshot->control_points.data(), s.control_points(), count, points_xyz_m);
+        const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
+        enteron::spline::sample_evenly(snapshot->control_points.data(), handle.published->control_points(), count,
+                                       points_xyz_m);
     });
 }
 
 ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t capacity, double* points_xyz_m,
                                             uint32_t* out_count) {
     return guarded([&] {
-        const enteron::scene::Scene& s = scene_of(scene);
+        const SceneHandle& handle = live_handle(scene);
         require(out_count, "out_count");
-        const uint32_t count = static_cast<uint32_t>(s.control_points());
+        const uint32_t count = static_cast<uint32_t>(handle.published->control_points());
         if (points_xyz_m != nullptr && capacity < count) {
             *out_count = count;
             throw Error(ErrorCode::buffer_too_small, "capacity is " + std::to_string(capacity) +
@@ -122,25 +138,25 @@ ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t cap
         }
         *out_count = count;
         if (points_xyz_m == nullptr) return;
-        const auto snapshot = s.read();
+        const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
         std::copy(snapshot->control_points.begin(), snapshot->control_points.end(), points_xyz_m);
     });
 }
 
 ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
     return guarded([&] {
-        const enteron::scene::Scene& s = scene_of(scene);
+        const SceneHandle& handle = live_handle(scene);
         require(out, "out");
         // The sizes of ent_stats in released headers; fields past an older size are not
         // written. 0.0 preview: without last_step_ns (a simulated release, see
         // complete_desc in scene_desc.cpp and tests/abi/); 0.1: the current header.
         enteron::capi::check_struct_size(out->struct_size, {offsetof(ent_stats, last_step_ns), sizeof(ent_stats)},
                                          "ent_stats");
-        const auto snapshot = s.read();
+        const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
         const enteron::scene::SceneStats& stats = snapshot->stats;
         ent_stats full{};
         full.struct_size = out->struct_size;
-        full.control_points = static_cast<uint32_t>(s.control_points());
+        full.control_points = static_cast<uint32_t>(handle.published->control_points());
         full.time_s = stats.time;
         full.steps = stats.steps;
         full.substeps = stats.substeps;
@@ -156,12 +172,12 @@ ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
 
 ENT_API ent_status ent_scene_effect_stats(const ent_scene* scene, int32_t effect, ent_effect_stats* out) {
     return guarded([&] {
-        const enteron::scene::Scene& s = scene_of(scene);
+        const SceneHandle& handle = live_handle(scene);
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_effect_stats)}, "ent_effect_stats");
         if (effect < 0 || effect >= ENT_EFFECT_COUNT)
             throw Error(ErrorCode::not_found, "effect " + std::to_string(effect) + " is not an ENT_EFFECT_* this library knows");
-        const auto snapshot = s.read();
+        const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
         const enteron::scene::EffectStats& stats = snapshot->effects[static_cast<std::size_t>(effect)];
         ent_effect_stats full{};
         full.struct_size = out->struct_size;

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstring>
+#include <utility>
 
 #include "capi/call_guard.h"
 #include "capi/struct_size.h"
@@ -16,27 +17,30 @@ constexpr uint32_t kMaxControlPoints = 100000;
 
 scene::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
 
-// The defaults of the current ent_scene_desc, whole.
+// The defaults of the current ent_scene_desc, whole: those of a default SceneConfig (one
+// set for JSON and C), with gravity and damping turned on.
 ent_scene_desc default_desc() {
     ent_scene_desc desc;
-    const enteron::scene::SceneConfig defaults;
-    const enteron::scene::MesenteryConfig mesentery;
-    const enteron::scene::DampingConfig damping;
-    const enteron::scene::ShapeConfig& shape = defaults.intestine.shape;
+    const scene::SceneConfig defaults;
+    const scene::IntestineConfig& intestine = defaults.intestine;
+    const scene::ShapeConfig& shape = intestine.shape;
+    const scene::DampingConfig damping;
+    const scene::MesenteryConfig mesentery;
     std::memset(&desc, 0, sizeof desc);
     desc.struct_size = sizeof desc;
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
-                    ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
-    desc.length_m = defaults.intestine.length;
-    desc.radius_m = defaults.intestine.radius;
-    desc.control_points = static_cast<uint32_t>(defaults.intestine.control_points);
-    desc.linear_density_kg_per_m = defaults.intestine.linear_density;
-    desc.stretch_stiffness_N = 100.0;
-    desc.bend_stiffness_N_m2 = 2.5e-3;
+                   ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
+    desc.length_m = intestine.length;
+    desc.radius_m = intestine.radius;
+    desc.control_points = static_cast<uint32_t>(intestine.control_points);
+    desc.linear_density_kg_per_m = intestine.linear_density;
+    desc.stretch_stiffness_N = intestine.stretch_stiffness;
+    desc.bend_stiffness_N_m2 = intestine.bend_stiffness;
     desc.shape = static_cast<int32_t>(shape.kind);
     for (int c = 0; c < 3; ++c) {
         desc.shape_center_m[c] = shape.center[c];
         desc.shape_direction[c] = shape.direction[c];
+        desc.gravity_m_per_s2[c] = scene::kStandardGravity[c];
         desc.mesentery_root_start_m[c] = mesentery.root_start[c];
         desc.mesentery_root_end_m[c] = mesentery.root_end[c];
     }
@@ -49,20 +53,18 @@ ent_scene_desc default_desc() {
     desc.max_substeps = static_cast<uint32_t>(defaults.solver.max_substeps);
     desc.max_subdivisions = static_cast<uint32_t>(defaults.solver.max_subdivisions);
     desc.max_speed_m_per_s = defaults.solver.max_speed;
-    desc.gravity_m_per_s2[2] = -9.81;
     desc.drag_N_s_per_m2 = damping.drag;
     desc.stretch_damping_N_s = damping.stretch;
     desc.bend_damping_N_m2_s = damping.bend;
     desc.mesentery_attachments = static_cast<uint32_t>(mesentery.attachments);
     desc.mesentery_stiffness_N_per_m = mesentery.stiffness;
     desc.mesentery_rest_length_m = mesentery.rest_length;
-    desc.pinned_ends = ENT_PIN_NONE;
-    const enteron::scene::CollisionConfig collision;
-    desc.collision_sphere_spacing_m = collision.sphere_spacing;
-    desc.contact_stiffness_N_per_m = collision.contact.stiffness;
-    desc.contact_damping_N_s_per_m = collision.contact.damping;
-    desc.contact_friction = collision.contact.friction;
-    desc.contact_slip_speed_m_per_s = collision.contact.slip_speed;
+    desc.pinned_ends = scene::PinnedConfig{}.ends;
+    desc.collision_sphere_spacing_m = defaults.collision.sphere_spacing;
+    desc.contact_stiffness_N_per_m = defaults.collision.contact.stiffness;
+    desc.contact_damping_N_s_per_m = defaults.collision.contact.damping;
+    desc.contact_friction = defaults.collision.contact.friction;
+    desc.contact_slip_speed_m_per_s = defaults.collision.contact.slip_speed;
     return desc;
 }
 
@@ -115,8 +117,9 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     intestine.radius = desc.radius_m;
     intestine.control_points = desc.control_points;
     intestine.linear_density = desc.linear_density_kg_per_m;
-    if (has(ENT_EFFECT_STRETCH)) intestine.stretch_stiffness = desc.stretch_stiffness_N;
-    if (has(ENT_EFFECT_BEND)) intestine.bend_stiffness = desc.bend_stiffness_N_m2;
+    // Without its bit an elasticity is off, as a zero stiffness is.
+    intestine.stretch_stiffness = has(ENT_EFFECT_STRETCH) ? desc.stretch_stiffness_N : 0.0;
+    intestine.bend_stiffness = has(ENT_EFFECT_BEND) ? desc.bend_stiffness_N_m2 : 0.0;
 
     scene::ShapeConfig& shape = intestine.shape;
     shape.kind = static_cast<scene::ShapeKind>(desc.shape);
@@ -132,7 +135,7 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     }
 
     scene::SolverConfig& solver = config.solver;
-    solver.integrator = static_cast<scene::IntegratorKind>(desc.integrator);
+    solver.integrator = static_cast<mechanics::IntegratorKind>(desc.integrator);
     solver.timestep = desc.timestep_s;
     solver.max_substeps = desc.max_substeps;
     solver.max_subdivisions = desc.max_subdivisions;
@@ -166,8 +169,8 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     config.collision.contact.damping = desc.contact_damping_N_s_per_m;
     config.collision.contact.friction = desc.contact_friction;
     config.collision.contact.slip_speed = desc.contact_slip_speed_m_per_s;
-    scene::validate(config, scene::c_field_names());
-    return config;
+    const scene::FieldSet given = scene::fields_apart_from_defaults(config);
+    return scene::validate(std::move(config), scene::c_field_names(), given);
 }
 
 }  // namespace enteron::capi

@@ -1,5 +1,6 @@
-// The skin entry points of the C API: a skin wraps a lib/skinning skin, the scene it reads
-// and the copy of the axis it reads into.
+// The skin entry points of the C API: a skin wraps a lib/skinning skin, the published
+// snapshots of its scene (shared: a skin may outlive its scene) and the copy of the axis
+// it reads into.
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include "capi/call_guard.h"
 #include "capi/scene_handle.h"
 #include "capi/struct_size.h"
+#include "scene/checked_value.h"
 #include "skinning/skin.h"
 #include "skinning/skin_metrics.h"
 
@@ -21,9 +23,17 @@ using enteron::capi::require;
 
 namespace {
 
+using enteron::capi::SceneHandle;
+
+// Releases the skin's reference to its scene's handle.
+struct SceneReference {
+    void operator()(SceneHandle* handle) const { enteron::capi::release(handle); }
+};
+
 // What an ent_skin* points to. ent_skin itself is never defined (opaque in the ABI).
 struct SkinHandle {
-    const enteron::scene::Scene* scene = nullptr;
+    // The scene's handle, for its published snapshots: they stay as long as the skin does.
+    std::unique_ptr<SceneHandle, SceneReference> scene;
     std::unique_ptr<enteron::skinning::Skin> skin;
     std::vector<double> points;  // control points copied from the snapshot
     double time_s = 0.0;
@@ -34,18 +44,10 @@ struct SkinHandle {
 SkinHandle* handle_of(ent_skin* skin) { return reinterpret_cast<SkinHandle*>(skin); }
 const SkinHandle* handle_of(const ent_skin* skin) { return reinterpret_cast<const SkinHandle*>(skin); }
 
-void check_range(double value, double low, double high, bool high_inclusive, const char* field) {
-    const bool ok = std::isfinite(value) && value >= low && (high_inclusive ? value <= high : value < high);
-    if (!ok)
-        throw Error(ErrorCode::invalid_argument, std::string(field) + " must be in [" + std::to_string(low) + ", " +
-                                                     std::to_string(high) + (high_inclusive ? "]" : ")") + ", got " +
-                                                     std::to_string(value));
-}
-
-void check_count(uint32_t value, uint32_t low, uint32_t high, const char* field) {
-    if (value < low || value > high)
-        throw Error(ErrorCode::invalid_argument, std::string(field) + " must be in [" + std::to_string(low) + ", " +
-                                                     std::to_string(high) + "], got " + std::to_string(value));
+// A knob of the skin description, within [low, high].
+template <typename T>
+void check_knob(T value, T low, T high, const char* field) {
+    enteron::scene::Checked<T>(value, field, ErrorCode::invalid_argument).at_least(low).at_most(high);
 }
 
 // The sizes of ent_skin_desc in released headers. An older size is the offset of the first
@@ -87,13 +89,16 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, d
         throw Error(ErrorCode::invalid_argument,
                     "method must be ENT_SKIN_TUBE, ENT_SKIN_POINT_SKELETON or ENT_SKIN_CONVOLUTION (0, 1, 2), got " +
                         std::to_string(desc.method));
-    check_count(desc.segments, 3, 1024, "segments");
-    check_range(desc.ring_spacing_radii, 0.05, 8.0, true, "ring_spacing_radii");
-    check_count(desc.cap_rings, 0, 64, "cap_rings");
-    check_range(desc.skeleton_spacing_radii, 0.05, 2.0, true, "skeleton_spacing_radii");
-    check_range(desc.voxel_size_radii, 0.1, 2.0, true, "voxel_size_radii");
-    check_range(desc.window_radii, 0.25, 2.0, false, "window_radii");
-    check_range(desc.ring_chord_error_radii, 0.0, 1.0, true, "ring_chord_error_radii");
+    check_knob(desc.segments, 3u, 1024u, "segments");
+    check_knob(desc.ring_spacing_radii, 0.05, 8.0, "ring_spacing_radii");
+    check_knob(desc.cap_rings, 0u, 64u, "cap_rings");
+    check_knob(desc.skeleton_spacing_radii, 0.05, 2.0, "skeleton_spacing_radii");
+    check_knob(desc.voxel_size_radii, 0.1, 2.0, "voxel_size_radii");
+    // The window must stay below 2 R, where folds would blend.
+    enteron::scene::Checked<double>(desc.window_radii, "window_radii", ErrorCode::invalid_argument)
+        .at_least(0.25)
+        .below(2.0);
+    check_knob(desc.ring_chord_error_radii, 0.0, 1.0, "ring_chord_error_radii");
     enteron::skinning::SkinSettings s;
     s.method = static_cast<enteron::skinning::SkinMethod>(desc.method);
     s.radius = radius;
@@ -124,15 +129,16 @@ ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size)
 
 ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, ent_skin** out_skin) {
     return guarded([&] {
-        require(scene, "scene");
+        SceneHandle& scene_handle = enteron::capi::live_handle(scene);
         require(desc, "desc");
         require(out_skin, "out_skin");
-        const enteron::scene::Scene& s = enteron::capi::scene_of_handle(scene);
+        const enteron::scene::Scene& s = *scene_handle.scene;
         const enteron::skinning::SkinSettings settings = settings_from_desc(*desc, s.radius());
         auto handle = std::make_unique<SkinHandle>();
-        handle->scene = &s;
         handle->skin = enteron::skinning::make_skin(settings);
         handle->points.resize(3 * s.control_points());
+        enteron::capi::retain(scene_handle);
+        handle->scene.reset(&scene_handle);
         *out_skin = reinterpret_cast<ent_skin*>(handle.release());
     });
 }
@@ -144,7 +150,7 @@ ENT_API ent_status ent_skin_update(ent_skin* skin) {
         const auto start = std::chrono::steady_clock::now();
         {
             // Pin the snapshot only for the copy: the stepping thread keeps publishing.
-            const auto snapshot = h.scene->read();
+            const enteron::scene::SnapshotPublisher::Reader snapshot(*h.scene->published);
             std::memcpy(h.points.data(), snapshot->control_points.data(), h.points.size() * sizeof(double));
             h.time_s = snapshot->stats.time;
         }

@@ -4,18 +4,6 @@
 #include "capi/call_guard.h"
 #include "mechanics/effect_id.h"
 
-static_assert(ENT_ERROR_INVALID_ARGUMENT == static_cast<int>(enteron::ErrorCode::invalid_argument));
-static_assert(ENT_ERROR_VERSION == static_cast<int>(enteron::ErrorCode::version));
-static_assert(ENT_ERROR_PARSE == static_cast<int>(enteron::ErrorCode::parse));
-static_assert(ENT_ERROR_INVALID_SCENE == static_cast<int>(enteron::ErrorCode::invalid_scene));
-static_assert(ENT_ERROR_UNSTABLE == static_cast<int>(enteron::ErrorCode::unstable));
-static_assert(ENT_ERROR_OUT_OF_MEMORY == static_cast<int>(enteron::ErrorCode::out_of_memory));
-static_assert(ENT_ERROR_NOT_FOUND == static_cast<int>(enteron::ErrorCode::not_found));
-static_assert(ENT_ERROR_BUFFER_TOO_SMALL == static_cast<int>(enteron::ErrorCode::buffer_too_small));
-static_assert(ENT_ERROR_INTERNAL == static_cast<int>(enteron::ErrorCode::internal));
-static_assert(ENT_EFFECT_COUNT == enteron::kEffectCount);
-static_assert(ENT_EFFECT_PINNED == static_cast<int>(enteron::EffectId::pinned));
-
 namespace {
 thread_local char last_error[1024] = "";
 }
@@ -43,6 +31,7 @@ ENT_API const char* ent_status_string(ent_status status) {
         case ENT_ERROR_NOT_FOUND: return "not found";
         case ENT_ERROR_BUFFER_TOO_SMALL: return "buffer too small";
         case ENT_ERROR_INTERNAL: return "internal error";
+        case ENT_ERROR_BUSY: return "busy: another driving call is running on this scene";
         default: return "unknown status";
     }
 }

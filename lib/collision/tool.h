@@ -1,18 +1,16 @@
 // A surgical tool as the bowel sees it: a capsule (a shaft swept by a sphere) whose tip is
 // at `position` and whose shaft runs from the tip back along the orientation's local +z
 // axis for `length` metres (the identity orientation is a vertical tool pointing down,
-// tip lowest). Poses are set by the caller between steps; the tool moves continuously
+// tip lowest). Poses come from the caller (tool_mailbox.h); the tool moves continuously
 // from the previous pose to the new one over the next step.
 #pragma once
 
 #include <array>
-#include <cmath>
-#include <string>
-
-#include "base/error.h"
+#include <cstdint>
 
 namespace enteron::collision {
 
+// The defaults of ent_tool_desc and of a JSON tool.
 struct ToolSettings {
     double radius = 0.005;           // m, > 0
     double length = 0.3;             // m, >= 0: shaft from the tip along local +z
@@ -23,13 +21,26 @@ struct ToolSettings {
 };
 
 struct ToolPose {
-    std::array<double, 3> position{};                  // tip, m
+    std::array<double, 3> position{};                       // tip, m
     std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // w x y z, unit
 };
 
 struct ToolConfig {
     ToolSettings settings;
-    ToolPose pose;
+    ToolPose pose;  // validated: a unit quaternion
+};
+
+struct ToolWrench {
+    double force[3] = {0.0, 0.0, 0.0};   // N, on the tool
+    double torque[3] = {0.0, 0.0, 0.0};  // N m, on the tool about its tip
+};
+
+// What a tool reports after each step: published in the scene's snapshot, so that any
+// thread reads it without waiting for the step. A later output is one more field here.
+struct ToolOutput {
+    ToolWrench wrench;      // of the last accepted step (its last evaluation)
+    bool grasping = false;  // a grasp holds
+    uint32_t contacts = 0;  // collision spheres touching the tool in that evaluation
 };
 
 // The unit local +z axis of a unit quaternion (w x y z) in world coordinates.
@@ -37,34 +48,5 @@ inline std::array<double, 3> quaternion_z_axis(const std::array<double, 4>& q) {
     const double w = q[0], x = q[1], y = q[2], z = q[3];
     return {2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y)};
 }
-
-// The names errors give a tool's fields: JSON keys or C fields.
-struct ToolFieldNames {
-    const char* radius;
-    const char* length;
-    const char* max_force;
-    const char* grasp_margin;
-    const char* grasp_stiffness;
-    const char* grasp_damping;
-    const char* position;
-    const char* orientation;
-};
-inline constexpr ToolFieldNames kJsonToolFields{"radius",       "length",          "max_force",
-                                               "grasp_margin", "grasp_stiffness", "grasp_damping",
-                                               "position",     "orientation"};
-inline constexpr ToolFieldNames kCToolFields{"radius_m",       "length_m",
-                                            "max_force_N",    "grasp_margin_m",
-                                            "grasp_stiffness_N_per_m", "grasp_damping_N_s_per_m",
-                                            "position_m",     "orientation_wxyz"};
-
-// Checks a pose and returns it with a unit quaternion. Throws Error(code) naming the field
-// after `prefix` ("tools[0].orientation", "position_m") for a non-finite position or a zero
-// or non-finite quaternion.
-ToolPose normalized_pose(const ToolPose& pose, const std::string& prefix, const ToolFieldNames& names,
-                         ErrorCode code);
-
-// Checks the settings; throws Error(code) naming the field ("tools[1].radius must be > 0").
-void validate_tool_settings(const ToolSettings& settings, const std::string& prefix, const ToolFieldNames& names,
-                            ErrorCode code);
 
 }  // namespace enteron::collision

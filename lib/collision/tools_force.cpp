@@ -120,8 +120,9 @@ struct Shaft {
 }  // namespace
 
 ToolsForce::ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
-                       std::pmr::memory_resource* memory)
+                       ToolChannels& channels, std::pmr::memory_resource* memory)
     : spheres_(spheres),
+      channels_(channels),
       contact_(contact),
       tools_(memory),
       hits_(memory) {
@@ -134,11 +135,11 @@ std::size_t ToolsForce::add_tool(const ToolConfig& tool) {
     t.settings = tool.settings;
     t.current = tool.pose;
     t.target = tool.pose;
+    tools_.reserve(tools_.size() + 1);  // nothing changes if an allocation fails
+    channels_.add();
     tools_.push_back(t);
     return tools_.size() - 1;
 }
-
-void ToolsForce::set_target(std::size_t tool, const ToolPose& pose) { tools_[tool].target = pose; }
 
 double ToolsForce::fraction_of_step(double t) const {
     if (!(step_dt_ > 0.0)) return 0.0;
@@ -179,6 +180,7 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
         const double* axis = shaft.axis;
         const double reach = shaft.reach;
         hits_.clear();
+        tool.attempt_contacts = 0;
         double total[3] = {0.0, 0.0, 0.0};  // on the bowel
         double total_magnitude = 0.0;       // sum of the magnitudes of its parts
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
@@ -205,6 +207,7 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
             }
             total_magnitude += norm3(hit.force.force);
             hits_.push_back(hit);
+            tool.attempt_contacts += 1;
             last_.count += 1;
             last_.max_penetration = std::max(last_.max_penetration, hit.depth);
         }
@@ -306,8 +309,7 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
     return energy;
 }
 
-bool ToolsForce::grasp(std::size_t index, const mechanics::State& state) {
-    Tool& tool = tools_[index];
+void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
     spheres_.update(state.q.data());
     const double reach = tool.settings.radius + spheres_.radius() + tool.settings.grasp_margin;
     double best = reach * reach;
@@ -325,7 +327,6 @@ bool ToolsForce::grasp(std::size_t index, const mechanics::State& state) {
         }
     }
     if (found) tool.grasping = true;
-    return tool.grasping;
 }
 
 void ToolsForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
@@ -364,27 +365,40 @@ double ToolsForce::external_work_bound() const {
     return work;
 }
 
-void ToolsForce::begin_step(double start_time, double dt) {
-    step_start_ = start_time;
+bool ToolsForce::begin_step(const mechanics::State& state, double dt) {
+    bool grasp_changed = false;
+    for (std::size_t i = 0; i < tools_.size(); ++i) {
+        Tool& tool = tools_[i];
+        ToolMailbox& mailbox = *channels_.mailbox(i);
+        mailbox.take_pose(tool.target);
+        switch (mailbox.take_grasp()) {
+            case ToolMailbox::Grasp::none: break;
+            case ToolMailbox::Grasp::grasp: grasp(tool, state); grasp_changed = true; break;
+            case ToolMailbox::Grasp::release: tool.grasping = false; grasp_changed = true; break;
+        }
+    }
+    step_start_ = state.time;
     step_dt_ = dt;
+    return grasp_changed;
 }
 
 void ToolsForce::begin_attempt() {
     for (Tool& tool : tools_) tool.slipped = false;
 }
 
-void ToolsForce::end_step() {
-    for (Tool& tool : tools_) {
-        if (tool.slipped) tool.grasping = false;
+void ToolsForce::end_step(bool accepted) {
+    std::pmr::vector<ToolOutput>& outputs = channels_.outputs();
+    for (std::size_t i = 0; i < tools_.size(); ++i) {
+        Tool& tool = tools_[i];
+        if (accepted) {
+            if (tool.slipped) tool.grasping = false;
+            tool.wrench = tool.attempt_wrench;
+            tool.contacts = tool.attempt_contacts;
+            tool.current = tool.target;
+        }
         tool.slipped = false;
-        tool.wrench = tool.attempt_wrench;
-        tool.current = tool.target;
+        outputs[i] = ToolOutput{tool.wrench, tool.grasping, tool.contacts};
     }
-    step_dt_ = 0.0;
-}
-
-void ToolsForce::abort_step() {
-    for (Tool& tool : tools_) tool.slipped = false;
     step_dt_ = 0.0;
 }
 

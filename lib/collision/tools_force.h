@@ -4,7 +4,11 @@
 // each contact touches four consecutive control points, so its linearisation goes into the
 // implicit system.
 //
-// Motion: a new pose is a target reached at the end of the next step; within the step the
+// Commands: at the start of each step (begin_step) each tool takes what its mailbox holds
+// (tool_channels.h): a new pose, a grasp or a release. At the end (end_step) it writes its
+// output (wrench, grasp, contacts) for the scene to publish.
+//
+// Motion: a new pose is a target reached at the end of the step; within the step the
 // tip moves linearly and the orientation by nlerp, so a fast tool sweeps the bowel instead
 // of jumping through it. The tool's velocity (for contact damping) is the pose change over
 // the step. Bound: the total force of one tool on the bowel (contacts and grasp) is scaled
@@ -18,21 +22,18 @@
 #include "collision/collision_spheres.h"
 #include "collision/contact_model.h"
 #include "collision/tool.h"
+#include "collision/tool_channels.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
 namespace enteron::collision {
 
-struct ToolWrench {
-    double force[3] = {0.0, 0.0, 0.0};   // N, on the tool
-    double torque[3] = {0.0, 0.0, 0.0};  // N m, on the tool about its tip
-};
-
 class ToolsForce final : public mechanics::Effect {
 public:
-    // `spheres` are shared with the other contact effects and must outlive this one.
+    // `spheres` are shared with the other contact effects and `channels` connect the tools
+    // with the caller's threads; both must outlive this effect.
     ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
-               std::pmr::memory_resource* memory);
+               ToolChannels& channels, std::pmr::memory_resource* memory);
 
     EffectId id() const override { return EffectId::tools; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
@@ -42,25 +43,19 @@ public:
     void add_contacts(mechanics::ContactSummary& summary) const override;
     double external_work_bound() const override;
 
-    // Adds a tool (validated, unit quaternion) resting at its pose. Allocates. Returns its index.
+    // Takes each tool's commands (a grasp picks the axis point nearest the tip, within
+    // reach, as the tool rests); true if a grasp or release was made. The tools then move
+    // towards their targets over the dt seconds of the step.
+    bool begin_step(const mechanics::State& state, double dt) override;
+    void begin_attempt() override;
+    // Accepted: the tools rest at their targets and a slipped grasp is let go. Not: the
+    // targets stay for the next step. Either way each tool's output is written.
+    void end_step(bool accepted) override;
+
+    // Adds a tool (validated, unit quaternion) resting at its pose, with its channels.
+    // Allocates. Returns its index.
     std::size_t add_tool(const ToolConfig& tool);
     std::size_t size() const { return tools_.size(); }
-
-    // The pose the tool reaches at the end of the next step (validated, unit quaternion).
-    void set_target(std::size_t tool, const ToolPose& pose);
-    // Grasps the axis point nearest the tip within reach, if any; true if one is held.
-    bool grasp(std::size_t tool, const mechanics::State& state);
-    void release(std::size_t tool) { tools_[tool].grasping = false; }
-    bool grasping(std::size_t tool) const { return tools_[tool].grasping; }
-    const ToolWrench& wrench(std::size_t tool) const { return tools_[tool].wrench; }
-
-    // Step protocol of the scene: begin_step before the attempts, begin_attempt before each,
-    // end_step after the accepted one (the tools then rest at their targets), abort_step
-    // when every attempt failed (the targets stay for the next step).
-    void begin_step(double start_time, double dt);
-    void begin_attempt();
-    void end_step();
-    void abort_step();
 
 private:
     struct Tool {
@@ -72,6 +67,8 @@ private:
         spline::SegmentWeights grasp_point;  // material point of the axis held
         ToolWrench wrench;                   // of the last accepted step
         ToolWrench attempt_wrench;           // of the last evaluation
+        uint32_t contacts = 0;               // of the last accepted step
+        uint32_t attempt_contacts = 0;       // of the last evaluation
     };
     struct Hit {
         std::size_t sphere;
@@ -84,8 +81,11 @@ private:
     void segment_at(const Tool& tool, double t, double tip[3], double tail[3], double tip_v[3],
                     double tail_v[3]) const;
     double fraction_of_step(double t) const;
+    // Grasps the axis point nearest the tip within reach, if any.
+    void grasp(Tool& tool, const mechanics::State& state);
 
     CollisionSpheres& spheres_;  // shared with the other contact effects
+    ToolChannels& channels_;
     ContactParameters contact_;
     std::pmr::vector<Tool> tools_;
     std::pmr::vector<Hit> hits_;

@@ -30,7 +30,8 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       mass_products_(memory),
       mass_factor_(memory),
       constant_system_(memory),
-      scratch_(memory) {
+      scratch_(memory),
+      one_effect_force_(memory) {
     const std::size_t n = model.control_points;
     mass_.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value,
@@ -39,6 +40,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
     mass_factor_.resize(n);
     constant_system_.resize(3 * n);
     scratch_.assign(3 * n, 0.0);
+    one_effect_force_.assign(3 * n, 0.0);
 }
 
 void Dynamics::add_effect(Owned<Effect> effect) {
@@ -173,6 +175,46 @@ Dynamics::Energies Dynamics::energies(const State& state) const {
         if (effect->id() != EffectId::gravity) energies.deformation += energy;
     }
     return energies;
+}
+
+bool Dynamics::begin_step(const State& state, double dt) {
+    bool energy_changed = false;
+    for (Owned<Effect>& effect : effects_) energy_changed |= effect->begin_step(state, dt);
+    return energy_changed;
+}
+
+void Dynamics::begin_attempt() {
+    for (Owned<Effect>& effect : effects_) effect->begin_attempt();
+}
+
+void Dynamics::end_step(bool accepted) {
+    for (Owned<Effect>& effect : effects_) effect->end_step(accepted);
+}
+
+Dynamics::Culprit Dynamics::strongest_force_at(const State& state, std::size_t control_point) {
+    Culprit strongest;
+    double* force = one_effect_force_.data();
+    for (Owned<Effect>& effect : effects_) {
+        std::fill(one_effect_force_.begin(), one_effect_force_.end(), 0.0);
+        // The contact effects put their forces into the shared loads.
+        for (const auto& [loads, owner] : shared_loads_) loads->clear();
+        effect->evaluate(state, force, nullptr);
+        for (const auto& [loads, owner] : shared_loads_) loads->apply(force, nullptr);
+        const double* f = force + 3 * control_point;
+        const double magnitude = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        // NaN compares false: a non-finite force wins at once.
+        if (!strongest.found || !(magnitude <= strongest.amount)) strongest = {true, effect->id(), magnitude};
+    }
+    return strongest;
+}
+
+Dynamics::Culprit Dynamics::largest_energy_gain(const State& before, const State& after) const {
+    Culprit largest;
+    for (const Owned<Effect>& effect : effects_) {
+        const double gain = effect->potential_energy(after) - effect->potential_energy(before);
+        if (!(gain <= 0.0) && (!largest.found || !(gain <= largest.amount))) largest = {true, effect->id(), gain};
+    }
+    return largest;
 }
 
 ContactSummary Dynamics::contacts() const {

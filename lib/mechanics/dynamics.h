@@ -57,6 +57,12 @@ public:
     // implicit system for substep h. Cached: rebuilt only when h changes.
     const SystemMatrix& constant_system(double h);
 
+    // The effects' step hooks (effect.h), in the order the effects were added.
+    // begin_step returns true if an effect changed the energy it stores.
+    bool begin_step(const State& state, double dt);
+    void begin_attempt();
+    void end_step(bool accepted);
+
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;
     // Work the effects driven from outside may do in the current step (effect.h), J.
@@ -69,6 +75,19 @@ public:
     };
     Energies energies(const State& state) const;
     double kinetic_energy(const State& state) const;
+
+    // For the guard's report of a failed step (not on the stepping path: it evaluates every
+    // effect again, alone, without timing it). The effect whose force on control point
+    // `control_point` is the largest in `state`, and that force's magnitude (N); and the
+    // effect whose potential energy grew the most from `before` to `after`, and by how much
+    // (J). `found` is false when the scene has no effect (or none gained energy).
+    struct Culprit {
+        bool found = false;
+        EffectId effect = EffectId::stretch;
+        double amount = 0.0;
+    };
+    Culprit strongest_force_at(const State& state, std::size_t control_point);
+    Culprit largest_energy_gain(const State& before, const State& after) const;
 
     // The longest substep an explicit method with stability interval [-beta, 0] on the
     // imaginary / real axes may take, from bounds on the highest frequency omega and the
@@ -94,6 +113,7 @@ private:
     double max_frequency_ = 0.0;      // rad/s, bound on sqrt(eig(M^-1 K))
     double max_damping_rate_ = 0.0;   // 1/s, bound on eig(M^-1 C)
     mutable std::pmr::vector<double> scratch_;
+    std::pmr::vector<double> one_effect_force_;  // strongest_force_at's, sized once
 };
 
 }  // namespace enteron::mechanics

@@ -75,6 +75,20 @@ public:
     // step from outside the system (a tool driven by the caller); the guard allows that
     // much energy to appear. 0 for effects that only store or dissipate energy.
     virtual double external_work_bound() const { return 0.0; }
+
+    // Step hooks, called by Dynamics around each step of the scene: an effect driven from
+    // outside (the tools) takes its commands and moves within the step; the others have
+    // nothing to do. A step is begin_step, then begin_attempt before each attempt (the
+    // first, and each retry after the guard rolled one back), then end_step.
+    //
+    // Before the first attempt of a step of dt seconds from `state`. Returns true if the
+    // effect changed the energy it stores (a grasp taken or let go), so that the guard
+    // measures it again.
+    virtual bool begin_step(const State& /*state*/, double /*dt*/) { return false; }
+    virtual void begin_attempt() {}
+    // After the last attempt: accepted (the state moved on) or not (the state is back where
+    // the step began).
+    virtual void end_step(bool /*accepted*/) {}
 };
 
 }  // namespace enteron::mechanics

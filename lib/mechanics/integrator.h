@@ -8,11 +8,9 @@
 
 #include "base/memory.h"
 #include "mechanics/dynamics.h"
+#include "mechanics/integrator_kind.h"
 
 namespace enteron::mechanics {
-
-// The numbers are those of ENT_INTEGRATOR_* in enteron.h.
-enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2 };
 
 class Integrator {
 public:

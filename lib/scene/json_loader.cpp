@@ -300,7 +300,7 @@ const Key<Obstacle> kCapsuleKeys[] = {
 void read_obstacle(const json& value, const std::string& path, Obstacle& obstacle) {
     if (!value.is_object() || !value.contains("type"))
         fail(path + " must be an object with a \"type\", got " + describe(value));
-    obstacle.kind = read_choice(value.at("type"), child(path, "type"), kObstacleKinds);
+    obstacle = default_obstacle(read_choice(value.at("type"), child(path, "type"), kObstacleKinds));
     json rest = value;
     rest.erase("type");
     switch (obstacle.kind) {
@@ -457,6 +457,28 @@ json parse(const char* text, std::size_t length) {
     }
 }
 
+// The fields the document gives a value, found by their paths ("mesentery.root[0]" is
+// given with "mesentery.root"): the validation's messages blame what the user wrote.
+FieldSet given_fields(const json& document) {
+    FieldSet given;
+    const FieldNames& names = json_field_names();
+    for (std::size_t i = 0; i < kFieldCount; ++i) {
+        const std::string path = std::string(names.names[i]).substr(0, std::string(names.names[i]).find('['));
+        const json* node = &document;
+        bool present = true;
+        for (std::size_t start = 0; present;) {
+            const std::size_t dot = path.find('.', start);
+            const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+            present = node->is_object() && node->contains(key);
+            if (present) node = &(*node)[key];
+            if (dot == std::string::npos) break;
+            start = dot + 1;
+        }
+        given[i] = present;
+    }
+    return given;
+}
+
 }  // namespace
 
 SceneConfig load_scene_json(const char* text, std::size_t length) {
@@ -465,8 +487,7 @@ SceneConfig load_scene_json(const char* text, std::size_t length) {
     const json document = parse(text != nullptr ? text : kEmpty, length);
     SceneConfig config;
     read_object(document, "", kSceneKeys, config);
-    validate(config, json_field_names());
-    return config;
+    return validate(std::move(config), json_field_names(), given_fields(document));
 }
 
 }  // namespace enteron::scene

@@ -8,7 +8,9 @@
 namespace enteron::scene {
 
 // Parses, type-checks and validates a JSON v1 scene description: length bytes of UTF-8 at
-// text, which need not be NUL-terminated. A key that is absent leaves its effect off.
+// text, which need not be NUL-terminated. A key that is absent takes its default (one set,
+// scene_config.h); an effect's key that is absent leaves the effect off. Returns the
+// validated, normalised config (validate.h).
 // Throws Error with
 //   ErrorCode::parse: not well-formed JSON, "JSON parse error at byte N (line L, column C):
 //     ..." with N counted from 1;

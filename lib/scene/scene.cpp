@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "base/error.h"
 #include "collision/environment_force.h"
@@ -15,23 +16,12 @@
 #include "mechanics/mesentery_force.h"
 #include "mechanics/pinned_points.h"
 #include "mechanics/stretch_force.h"
-#include "scene/shape_builder.h"
 
 namespace enteron::scene {
 
 namespace {
 
 using namespace enteron::mechanics;
-
-// The guard's allowance for energy appearing in one step, as a fraction of the kinetic and
-// deformation energy: an explicit method's energy wobbles by much less (stability suite:
-// under 0.4 %), while an implicit step whose contacts appeared within it can gain tens of
-// percent and, step after step, pile up joules from nothing (50 ms steps in a dense pile
-// went from 0.6 J to 12.9 J with an allowance of 100 %; 1 % refuses legitimate steps out of
-// a deep initial overlap). Below this floor (a bowel at rest) the
-// allowance is the kinetic energy of the whole bowel at 0.1 m/s.
-constexpr double kEnergyGrowthFactor = 0.1;
-constexpr double kEnergyFloorSpeed = 0.1;  // m/s
 
 AxisModel make_model(const IntestineConfig& intestine) {
     AxisModel model;
@@ -50,21 +40,6 @@ std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t cou
     return points;
 }
 
-bool all_finite(const std::pmr::vector<double>& values) {
-    for (double v : values)
-        if (!std::isfinite(v)) return false;
-    return true;
-}
-
-double max_speed(const State& state) {
-    double fastest = 0.0;
-    for (std::size_t i = 0; i + 2 < state.v.size(); i += 3) {
-        const double* v = &state.v[i];
-        fastest = std::max(fastest, v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    }
-    return std::sqrt(fastest);
-}
-
 // The contact damper fades in over this fraction of the radius of penetration, so that
 // every contact force starts from zero (contact_model.h).
 constexpr double kContactDampingDepth = 0.1;
@@ -76,11 +51,13 @@ uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logger logger)
+Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::memory_resource* memory,
+             Logger logger)
     : memory_(memory),
       logger_(logger),
       solver_(config.solver),
       model_(make_model(config.intestine)),
+      tool_channels_(memory),
       dynamics_(model_, memory),
       state_(memory),
       backup_(memory),
@@ -88,19 +65,23 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
-      total_mass_(config.intestine.linear_density * config.intestine.length),
-      publisher_(3 * model_.control_points, memory) {
+      start_clearance_(scene::start_clearance(config)),
+      guard_(config.solver.max_speed, config.intestine.linear_density * config.intestine.length),
+      published_(published) {
     const IntestineConfig& intestine = config.intestine;
     const std::size_t n = model_.control_points;
+    if (config.start_points.size() != 3 * n || published_.control_points() != n)
+        throw Error(ErrorCode::internal, "a scene made from a config that validate() did not return");
     state_.resize(n);
     backup_.resize(n);
-    build_shape(intestine.shape, intestine.length, n, state_.q.data());
+    std::copy(config.start_points.begin(), config.start_points.end(), state_.q.begin());
     collision_.contact.damping_depth = kContactDampingDepth * radius_;
 
-    if (intestine.stretch_stiffness)
-        dynamics_.add_effect(make_owned<StretchForce>(memory, model_, *intestine.stretch_stiffness, memory));
-    if (intestine.bend_stiffness)
-        dynamics_.add_effect(make_owned<BendForce>(memory, model_, *intestine.bend_stiffness, memory));
+    // A zero stiffness asks for nothing: the effect is not built and costs nothing.
+    if (intestine.stretch_stiffness != 0.0)
+        dynamics_.add_effect(make_owned<StretchForce>(memory, model_, intestine.stretch_stiffness, memory));
+    if (intestine.bend_stiffness != 0.0)
+        dynamics_.add_effect(make_owned<BendForce>(memory, model_, intestine.bend_stiffness, memory));
     if (config.damping) {
         const DampingCoefficients coefficients{config.damping->drag, config.damping->stretch,
                                                config.damping->bend};
@@ -125,8 +106,8 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
                                                                      state_, memory,
                                                                      &contact_loads(EffectId::self_collision)));
 
-    const auto kind = static_cast<mechanics::IntegratorKind>(static_cast<int32_t>(solver_.integrator));
-    integrator_ = make_integrator(kind, 3 * n, memory);
+    integrator_ = make_integrator(solver_.integrator, 3 * n, memory);
+    published_.reserve_tools(tool_channels_.size());
     refinalize();
     publish();
 }
@@ -134,7 +115,7 @@ Scene::Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logge
 void Scene::refinalize() {
     dynamics_.finalize();
     explicit_substep_limit_ = dynamics_.explicit_substep_limit(integrator_->stability_interval());
-    energies_ = dynamics_.energies(state_);
+    guard_.set_reference(dynamics_.energies(state_));
     if (logger_.enabled())
         logger_.log(LogLevel::info, "scene: %zu control points, substep limit %g s", model_.control_points,
                     std::min(solver_.timestep, explicit_substep_limit_));
@@ -154,46 +135,22 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle) {
 }
 
 std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
-    if (tools_ == nullptr) {
-        auto effect =
-            make_owned<collision::ToolsForce>(memory_, collision_spheres(), collision_.contact, state_, memory_);
-        tools_ = effect.get();
+    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
+    if (tools == nullptr) {
+        auto effect = make_owned<collision::ToolsForce>(memory_, collision_spheres(), collision_.contact, state_,
+                                                        tool_channels_, memory_);
+        tools = effect.get();
         dynamics_.add_effect(std::move(effect));
     }
-    collision::ToolConfig normalized = tool;
-    normalized.pose = collision::normalized_pose(tool.pose, "tool.", collision::kJsonToolFields, ErrorCode::internal);
-    return tools_->add_tool(normalized);
+    return tools->add_tool(tool);
 }
 
 std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
+    published_.reserve_tools(tool_channels_.size() + 1);
     const std::size_t index = add_tool_effect_only(tool);
     refinalize();
     publish();
     return index;
-}
-
-std::size_t Scene::tool_count() const { return tools_ != nullptr ? tools_->size() : 0; }
-
-void Scene::set_tool_pose(std::size_t tool, const collision::ToolPose& pose) { tools_->set_target(tool, pose); }
-
-// A grasp or a release adds or removes the spring's energy between steps: the guard
-// compares the next step with the energies as they are now.
-bool Scene::grasp(std::size_t tool) {
-    const bool held = tools_->grasp(tool, state_);
-    energies_ = dynamics_.energies(state_);
-    return held;
-}
-
-void Scene::release(std::size_t tool) {
-    tools_->release(tool);
-    energies_ = dynamics_.energies(state_);
-}
-
-bool Scene::grasping(std::size_t tool) const { return tools_->grasping(tool); }
-
-void Scene::tool_wrench(std::size_t tool, double force[3], double torque[3]) const {
-    const collision::ToolWrench& wrench = tools_->wrench(tool);
-    for (int c = 0; c < 3; ++c) force[c] = wrench.force[c], torque[c] = wrench.torque[c];
 }
 
 collision::CollisionSpheres& Scene::collision_spheres() {
@@ -241,28 +198,28 @@ void Scene::step(double dt) {
     const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
 
     backup_.assign(state_);
-    if (tools_ != nullptr) tools_->begin_step(state_.time, dt);
-    for (std::size_t attempt = 0; attempt <= solver_.max_subdivisions; ++attempt) {
-        if (tools_ != nullptr) tools_->begin_attempt();
+    // A grasp taken or let go changes the stored energy: the guard measures it again.
+    if (dynamics_.begin_step(state_, dt)) guard_.set_reference(dynamics_.energies(state_));
+    for (std::size_t attempt = 0;; ++attempt) {
+        dynamics_.begin_attempt();
         if (try_step(dt, substeps << attempt)) {
-            if (tools_ != nullptr) tools_->end_step();
+            dynamics_.end_step(true);
             stats_.steps += 1;
             stats_.last_step_ns = elapsed_ns(start);
             publish();
             return;
         }
+        if (attempt == solver_.max_subdivisions) break;
         state_.assign(backup_);
-        stats_.rollbacks += 1;
-        logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard; retrying with %zu substeps",
-                    state_.time, substeps << (attempt + 1));
+        if (logger_.enabled())
+            logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard (%s); retrying with %zu substeps",
+                        state_.time, guard_check_name(guard_.last_finding().check), substeps << (attempt + 1));
     }
-    if (tools_ != nullptr) tools_->abort_step();
+    const std::string message = unstable_message(dt, substeps);
+    state_.assign(backup_);
+    dynamics_.end_step(false);
     stats_.last_step_ns = elapsed_ns(start);
     publish();  // the same state, with the counters of the failed attempts
-    char message[256];
-    std::snprintf(message, sizeof message,
-                  "the step of %g s at t = %g s stayed unstable after %zu subdivisions; the state is "
-                  "unchanged", dt, state_.time, solver_.max_subdivisions);
     throw Error(ErrorCode::unstable, message);
 }
 
@@ -271,43 +228,87 @@ bool Scene::try_step(double dt, std::size_t substeps) {
     const double start_time = state_.time;
     for (std::size_t i = 0; i < substeps; ++i) {
         stats_.substeps += 1;
-        if (!integrator_->step(dynamics_, state_, h)) return false;
-        if (!all_finite(state_.v) || !all_finite(state_.q)) return false;
+        const bool solved = integrator_->step(dynamics_, state_, h);
+        if (!guard_.substep_passes(solved, state_)) return false;
     }
     state_.time = start_time + dt;  // no drift from summing substeps
-    if (!(max_speed(state_) <= solver_.max_speed)) return false;
+    return guard_.step_passes(state_, dynamics_);
+}
 
-    const Dynamics::Energies after = dynamics_.energies(state_);
-    const double floor = 0.5 * total_mass_ * kEnergyFloorSpeed * kEnergyFloorSpeed;
-    const double allowance = std::max(floor, kEnergyGrowthFactor * (energies_.kinetic + energies_.deformation)) +
-                             dynamics_.external_work_bound();
-    // A state whose energy is not finite is an explosion, whatever the allowance.
-    if (!std::isfinite(after.kinetic + after.potential)) return false;
-    if (!(after.kinetic + after.potential <= energies_.kinetic + energies_.potential + allowance)) return false;
-    energies_ = after;
-    return true;
+// Names the check that failed and by how much, the control point, and the effect that
+// most likely drove it: the strongest force on that point at the start of the step, or
+// the effect whose energy grew the most. Off the stepping path: it evaluates the effects
+// again, one by one.
+std::string Scene::unstable_message(double dt, std::size_t substeps) {
+    const GuardFinding& finding = guard_.last_finding();
+    const std::size_t point = finding.control_point;
+    char what[320];
+    switch (finding.check) {
+        case GuardCheck::solver:
+            std::snprintf(what, sizeof what, "the implicit solve failed (its system was not positive definite)");
+            break;
+        case GuardCheck::not_finite:
+            if (std::isfinite(finding.value))
+                std::snprintf(what, sizeof what, "non-finite: control point %zu's position or velocity became NaN or "
+                              "infinite", point);
+            else
+                std::snprintf(what, sizeof what, "non-finite: the energy became %.3g J", finding.value);
+            break;
+        case GuardCheck::speed:
+            std::snprintf(what, sizeof what, "speed: control point %zu moved at %.3g m/s, %.3g times max_speed (%g m/s)",
+                          point, finding.value, finding.value / finding.limit, finding.limit);
+            break;
+        case GuardCheck::energy:
+            std::snprintf(what, sizeof what,
+                          "energy: the bowel gained %.3g J in the step, %.3g J more than the %.3g J allowed (fastest: "
+                          "control point %zu)", finding.value, finding.value - finding.limit, finding.limit, point);
+            break;
+        case GuardCheck::passed: std::snprintf(what, sizeof what, "none"); break;
+    }
+    char culprit[200] = "";
+    const Dynamics::Culprit gain = finding.check == GuardCheck::energy ? dynamics_.largest_energy_gain(backup_, state_)
+                                                                         : Dynamics::Culprit{};
+    if (gain.found) {
+        std::snprintf(culprit, sizeof culprit, "; the largest gain was in %s's potential energy (%+.3g J)",
+                      effect_name(gain.effect), gain.amount);
+    } else if (finding.check != GuardCheck::solver) {
+        const Dynamics::Culprit force = dynamics_.strongest_force_at(backup_, point);
+        if (force.found)
+            std::snprintf(culprit, sizeof culprit,
+                          "; the largest force on control point %zu at the start of the step was %s's (%.3g N)", point,
+                          effect_name(force.effect), force.amount);
+    }
+    char message[700];
+    std::snprintf(message, sizeof message,
+                  "the step of %g s at t = %g s stayed unstable after %zu subdivisions (%zu substeps in the last "
+                  "attempt); the guard's last check failed: %s%s; the state is unchanged",
+                  dt, backup_.time, solver_.max_subdivisions, substeps << solver_.max_subdivisions, what, culprit);
+    return message;
 }
 
 void Scene::publish() {
-    Snapshot* slot = publisher_.begin_write();
+    Snapshot* slot = published_.begin_write();
     if (slot == nullptr) {
         logger_.log(LogLevel::warning, "every snapshot slot is being read; publication skipped");
         return;
     }
     std::copy(state_.q.begin(), state_.q.end(), slot->control_points.begin());
     stats_.time = state_.time;
+    stats_.rollbacks = guard_.rollbacks();
     const ContactSummary contacts = dynamics_.contacts();
     stats_.contacts = contacts.count;
     stats_.max_penetration = contacts.max_penetration;
-    stats_.kinetic_energy = energies_.kinetic;
-    stats_.potential_energy = energies_.potential;
+    stats_.kinetic_energy = guard_.reference().kinetic;
+    stats_.potential_energy = guard_.reference().potential;
     slot->stats = stats_;
     for (std::size_t e = 0; e < kEffectCount; ++e) {
         const EffectId id = static_cast<EffectId>(e);
         const EffectCounters& counters = dynamics_.counters(id);
         slot->effects[e] = EffectStats{dynamics_.has_effect(id), counters.calls, counters.total_time_ns};
     }
-    publisher_.publish(slot);
+    const std::pmr::vector<collision::ToolOutput>& tools = tool_channels_.outputs();
+    slot->tools.assign(tools.begin(), tools.end());  // reserved when the tools were added
+    published_.publish(slot);
 }
 
 }  // namespace enteron::scene

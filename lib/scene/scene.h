@@ -1,72 +1,77 @@
 // A simulated scene: the intestine axis, the effects its description names, an integrator,
-// the stability guard, and the published snapshot that readers use.
+// the stability guard, and the snapshot it publishes for readers.
 //
 // step() has the strong guarantee: it either advances the state and publishes it, or
 // throws enteron::Error with the state exactly as before (counters of the failed attempt
 // aside: substeps, rollbacks and effect time record the work that was done).
+//
+// Threads: one thread at a time drives the scene (step, add_obstacle, add_tool); the C API
+// enforces it. Any thread may post tool commands (tool_channels()) and read the published
+// snapshots.
 #pragma once
 
 #include <memory_resource>
+#include <vector>
 
 #include "base/logger.h"
 #include "base/memory.h"
 #include "collision/collision_spheres.h"
 #include "collision/sphere_loads.h"
 #include "collision/tool.h"
+#include "collision/tool_channels.h"
 #include "mechanics/dynamics.h"
 #include "mechanics/integrator.h"
+#include "mechanics/stability_guard.h"
 #include "mechanics/state.h"
 #include "scene/scene_config.h"
 #include "scene/snapshot.h"
-
-namespace enteron::collision {
-class ToolsForce;
-}
+#include "scene/validate.h"
 
 namespace enteron::scene {
 
 class Scene {
 public:
-    // The config must have been validated (validate.h). Allocates everything the scene
-    // needs from `memory`.
-    Scene(const SceneConfig& config, std::pmr::memory_resource* memory, Logger logger);
+    // The config must come from validate() (validate.h): checked, with its start points.
+    // Allocates everything the scene needs from `memory`. The scene publishes into
+    // `published`, which the caller owns (readers may outlive the scene): made with the
+    // config's control point count and the same memory, and kept alive past the scene.
+    Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::memory_resource* memory, Logger logger);
 
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
 
     // Advances by dt seconds (see ent_scene_step). Throws Error(invalid_argument) for a bad
-    // dt, Error(unstable) when the guard cannot recover.
+    // dt, Error(unstable) when the guard cannot recover; its message names the check that
+    // failed, by how much, and the effect and control point where it happened.
     void step(double dt);
 
-    // Adds an obstacle to the environment (validated by the caller), starting the
-    // environment effect with the first one. Returns its index. Not during a step.
+    // Adds an obstacle to the environment (validated by the caller, against positions()),
+    // starting the environment effect with the first one. Returns its index. Not during a
+    // step.
     std::size_t add_obstacle(const collision::Obstacle& obstacle);
     std::size_t obstacle_count() const { return obstacles_; }
 
-    // Tools (tools_force.h): add_tool starts the tools effect with the first one and
-    // returns the tool's index. The tool calls take a valid index (the caller checks it
-    // against tool_count) and a validated, normalised pose. Not during a step.
+    // Adds a tool (validated: unit quaternion), starting the tools effect with the first
+    // one; returns its index. Not during a step.
     std::size_t add_tool(const collision::ToolConfig& tool);
-    std::size_t tool_count() const;
-    void set_tool_pose(std::size_t tool, const collision::ToolPose& pose);
-    bool grasp(std::size_t tool);
-    void release(std::size_t tool);
-    bool grasping(std::size_t tool) const;
-    // Force (N) and torque about the tip (N m) on the tool in the last accepted step.
-    void tool_wrench(std::size_t tool, double force[3], double torque[3]) const;
+    // The tools' mailboxes: any thread posts poses, grasps and releases here; the next step
+    // takes them (tool_channels.h).
+    collision::ToolChannels& tool_channels() { return tool_channels_; }
 
-    // The latest published snapshot, pinned while the reader lives. Any thread.
-    SnapshotPublisher::Reader read() const { return SnapshotPublisher::Reader(publisher_); }
-
+    // How deep beyond an obstacle's surface the bowel may be and still start (validate.h),
+    // for an obstacle added later.
+    const StartClearance& start_clearance() const { return start_clearance_; }
+    // The control points now (x y z each, m): the driving thread only.
+    const std::pmr::vector<double>& positions() const { return state_.q; }
     std::size_t control_points() const { return model_.control_points; }
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
-    std::pmr::memory_resource* memory() const { return memory_; }
-    const Logger& logger() const { return logger_; }
 
 private:
     // One attempt at dt in `substeps` equal substeps; false if the guard rejects it.
     bool try_step(double dt, std::size_t substeps);
+    // The message of a step the guard could not save (before the state is restored).
+    std::string unstable_message(double dt, std::size_t substeps);
     // Collision sphere spacing at rest, m.
     double sphere_spacing() const;
     // The shared collision spheres, made on first use (a scene without contacts has none).
@@ -92,6 +97,7 @@ private:
     // dynamics_, which holds those effects, so that it outlives them).
     Owned<collision::CollisionSpheres> spheres_;
     Owned<collision::SphereLoads> contact_loads_;  // made with the first of them, like spheres_
+    collision::ToolChannels tool_channels_;        // the tools effect uses them: before dynamics_
     mechanics::Dynamics dynamics_;
     Owned<mechanics::Integrator> integrator_;
     mechanics::State state_;
@@ -101,11 +107,10 @@ private:
     double radius_;
     CollisionConfig collision_;
     std::size_t obstacles_ = 0;
-    collision::ToolsForce* tools_ = nullptr;  // owned by dynamics_; null until the first tool
-    double total_mass_;
-    mechanics::Dynamics::Energies energies_;  // of the current state
+    StartClearance start_clearance_;
+    mechanics::StabilityGuard guard_;
     SceneStats stats_;
-    SnapshotPublisher publisher_;
+    SnapshotPublisher& published_;
 };
 
 }  // namespace enteron::scene

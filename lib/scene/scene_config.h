@@ -1,6 +1,7 @@
-// A scene description in C++ terms, whatever it came from (the C struct or JSON v1).
-// An effect that the description does not name is an empty optional here, and is then
-// never built.
+// A scene description in C++ terms, whatever it came from (the C struct or JSON v1), and
+// the one home of its defaults: the JSON loader starts from a default SceneConfig and
+// ent_scene_desc_default fills the C struct from one. An effect that the description does
+// not name is an empty optional (or a zero stiffness) here, and is then never built.
 #pragma once
 
 #include <array>
@@ -12,13 +13,14 @@
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
 #include "collision/tool.h"
+#include "mechanics/integrator_kind.h"
 
 namespace enteron::scene {
 
 using Vec3 = std::array<double, 3>;
 
 enum class ShapeKind : int32_t { line = 0, serpentine = 1, helix = 2, points = 3 };
-enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2 };
+using mechanics::IntegratorKind;
 
 struct ShapeConfig {
     ShapeKind kind = ShapeKind::helix;
@@ -36,8 +38,9 @@ struct IntestineConfig {
     double radius = 0.0125;          // m
     std::size_t control_points = 240;
     double linear_density = 0.3;     // kg/m
-    std::optional<double> stretch_stiffness;  // EA, N: the stretch effect
-    std::optional<double> bend_stiffness;     // EI, N m^2: the bend effect
+    // The bowel is elastic unless told otherwise; 0 turns the effect off (it is not built).
+    double stretch_stiffness = 100.0;  // EA, N: the stretch effect
+    double bend_stiffness = 2.5e-3;    // EI, N m^2: the bend effect
     ShapeConfig shape;
 };
 
@@ -70,12 +73,32 @@ struct PinnedConfig {
     std::vector<uint32_t> points;  // further control point indices
 };
 
-// Settings shared by every contact of the bowel (the environment now; self-contact and
-// tools use the same spheres and law).
+// Settings shared by every contact of the bowel: the environment, the self-contact and
+// the tools use the same spheres and law.
 struct CollisionConfig {
     double sphere_spacing = 0.0;  // m at rest; 0: radius / 2
     collision::ContactParameters contact;
 };
+
+// An obstacle of each kind as a JSON entry or ent_obstacle_desc_default starts: a cavity
+// 24 cm wide around the origin, a floor through the origin, organs of 5 cm radius.
+inline collision::Obstacle default_obstacle(collision::ObstacleKind kind) {
+    collision::Obstacle obstacle;
+    obstacle.kind = kind;
+    switch (kind) {
+        case collision::ObstacleKind::box_inside: obstacle.extent = {0.12, 0.12, 0.12}; break;
+        case collision::ObstacleKind::plane: obstacle.extent = {0.0, 0.0, 1.0}; break;
+        case collision::ObstacleKind::sphere: obstacle.radius = 0.05; break;
+        case collision::ObstacleKind::capsule:
+            obstacle.extent = {0.0, 0.0, 0.1};
+            obstacle.radius = 0.05;
+            break;
+    }
+    return obstacle;
+}
+
+// Gravity at the Earth's surface, m/s^2: what ent_scene_desc_default turns on.
+inline const Vec3 kStandardGravity{0.0, 0.0, -9.81};
 
 struct SceneConfig {
     IntestineConfig intestine;
@@ -88,6 +111,9 @@ struct SceneConfig {
     std::vector<collision::Obstacle> environment;  // empty: the environment effect is off
     std::vector<collision::ToolConfig> tools;       // empty: the tools effect is off
     bool self_collision = false;                   // folds that touch push apart
+
+    // Set by validate(): the initial control points of the shape (control_points x 3, m).
+    std::vector<double> start_points;
 };
 
 }  // namespace enteron::scene

@@ -1,5 +1,7 @@
 #include "scene/snapshot.h"
 
+#include <thread>
+
 namespace enteron::scene {
 
 SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory)
@@ -24,6 +26,27 @@ Snapshot* SnapshotPublisher::begin_write() {
 }
 
 void SnapshotPublisher::publish(Snapshot* slot) { latest_.store(static_cast<std::size_t>(slot - slots_.data())); }
+
+// The stepping thread's own rules (begin_write) say when it may touch a slot: not the
+// latest, and unread. So each other slot is reserved once its readers are gone; then the
+// latest is copied into a reserved slot, that one is published, and the old latest is
+// reserved once its last reader is gone (no new reader pins a slot that is not the latest).
+void SnapshotPublisher::reserve_tools(std::size_t count) {
+    const auto wait_unread = [this](std::size_t slot) {
+        while (readers_[slot].load() != 0) std::this_thread::yield();  // a reader is copying: microseconds
+    };
+    const std::size_t old_latest = latest_.load(std::memory_order_relaxed);
+    for (std::size_t slot = 0; slot < kSlots; ++slot) {
+        if (slot == old_latest) continue;
+        wait_unread(slot);
+        slots_[slot].tools.reserve(count);
+    }
+    const std::size_t moved = (old_latest + 1) % kSlots;
+    slots_[moved] = slots_[old_latest];  // within the capacity just reserved
+    publish(&slots_[moved]);
+    wait_unread(old_latest);
+    slots_[old_latest].tools.reserve(count);
+}
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {
     for (;;) {

@@ -8,6 +8,9 @@
 // counts itself on the latest slot, then checks that the slot is still the latest (else it
 // uncounts and tries again): the writer only fills slots that are not the latest and that
 // it saw unread, so a slot a reader counted on and found latest is complete and stays put.
+//
+// The publisher outlives the scene when skins still read it (the C API shares it between
+// them): a skin then keeps working on the last state published.
 #pragma once
 
 #include <array>
@@ -17,6 +20,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "collision/tool.h"
 #include "mechanics/effect_id.h"
 
 namespace enteron::scene {
@@ -40,10 +44,11 @@ struct EffectStats {
 };
 
 struct Snapshot {
-    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory) {}
+    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory) {}
     std::pmr::vector<double> control_points;  // x y z per point, m
     SceneStats stats;
     std::array<EffectStats, kEffectCount> effects{};
+    std::pmr::vector<collision::ToolOutput> tools;  // by tool index
 };
 
 class SnapshotPublisher {
@@ -57,6 +62,12 @@ public:
     Snapshot* begin_write();
     // Makes the slot from begin_write the latest.
     void publish(Snapshot* slot);
+
+    // Makes room for `count` tools in every slot, so that filling one never allocates.
+    // Allocates; waits for the readers of a slot to finish their copy. Not during a step.
+    void reserve_tools(std::size_t count);
+    // Control points of every snapshot.
+    std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
 
     // Pins the latest snapshot for reading while it lives.
     class Reader {

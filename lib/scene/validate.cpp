@@ -1,13 +1,15 @@
 #include "scene/validate.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <string>
-#include <type_traits>
 #include <utility>
+#include <vector>
 
+#include "scene/checked_value.h"
+#include "scene/plausible_ranges.h"
+#include "scene/shape_builder.h"
 #include "spline/catmull_rom.h"
 
 namespace enteron::scene {
@@ -21,78 +23,114 @@ constexpr double kMaxTimestep = 0.1;              // s
 constexpr std::size_t kMaxSubsteps = 1000000;
 constexpr std::size_t kMaxSubdivisions = 30;      // 2^-30 of the timestep is already below 1 ns
 constexpr std::size_t kMaxAttachments = 100000;
-
-// Shortest text that reads back as the same double ("-1", not "-1.000000"). to_chars
-// ignores the locale, which a host program may have changed.
-std::string format(double value) {
-    if (std::isnan(value)) return "nan";
-    char text[32];
-    const auto result = std::to_chars(text, text + sizeof text, value);
-    return std::string(text, result.ptr);
-}
-
-template <typename Integer>
-std::string format(Integer value) {
-    return std::to_string(value);
-}
+// A tool 1e200 m wide is finite but gave the bowel an infinite potential energy: upper
+// bounds on its sizes keep every contact's depth, and so its energy, finite.
+constexpr double kMaxToolRadius = 1.0;   // m, also the largest grasp margin
+constexpr double kMaxToolLength = 10.0;  // m
 
 std::string format(const Vec3& v) {
-    return "[" + format(v[0]) + ", " + format(v[1]) + ", " + format(v[2]) + "]";
+    return "[" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) + "]";
 }
 
 std::string indexed(const std::string& name, std::size_t index) {
     return name + "[" + std::to_string(index) + "]";
 }
 
-// One value under test, named for messages. Each check throws on failure and returns
-// *this, so checks chain: check(r, Field::radius).above(0.0).below(length, "...").
-template <typename T>
-class Checked {
-public:
-    Checked(T value, std::string name, ErrorCode code)
-        : value_(value), name_(std::move(name)), code_(code) {
-        if constexpr (std::is_floating_point_v<T>) {
-            if (!std::isfinite(value_)) fail("must be finite");
+// "0-11, 40, 52-239": the indices (ascending) as ranges, at most a few of them.
+std::string index_ranges(const std::vector<std::size_t>& indices) {
+    constexpr std::size_t kMaxRanges = 6;
+    std::string text;
+    std::size_t ranges = 0;
+    for (std::size_t i = 0; i < indices.size();) {
+        std::size_t j = i;
+        while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) ++j;
+        if (ranges == kMaxRanges) return text + ", ...";
+        text += (text.empty() ? "" : ", ") + std::to_string(indices[i]);
+        if (j > i) text += "-" + std::to_string(indices[j]);
+        ++ranges;
+        i = j + 1;
+    }
+    return text;
+}
+
+const char* obstacle_kind_name(collision::ObstacleKind kind) {
+    switch (kind) {
+        case collision::ObstacleKind::box_inside: return "box_inside";
+        case collision::ObstacleKind::plane: return "plane";
+        case collision::ObstacleKind::sphere: return "sphere";
+        case collision::ObstacleKind::capsule: return "capsule";
+    }
+    return "?";
+}
+
+// How far a point p lies beyond the obstacle's surface, m (<= 0: on the bowel's side):
+// outside the box_inside, behind the plane, inside the sphere or capsule.
+double beyond_surface(const collision::Obstacle& o, const double p[3]) {
+    using collision::ObstacleKind;
+    switch (o.kind) {
+        case ObstacleKind::box_inside: {
+            double outside = -INFINITY;
+            for (int c = 0; c < 3; ++c) outside = std::max(outside, std::fabs(p[c] - o.center[c]) - o.extent[c]);
+            return outside;
+        }
+        case ObstacleKind::plane: {
+            const Vec3& n = o.extent;
+            const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            return -((p[0] - o.center[0]) * n[0] + (p[1] - o.center[1]) * n[1] + (p[2] - o.center[2]) * n[2]) / norm;
+        }
+        case ObstacleKind::sphere:
+        case ObstacleKind::capsule: {
+            double closest[3] = {o.center[0], o.center[1], o.center[2]};
+            if (o.kind == ObstacleKind::capsule) {
+                double axis2 = 0.0, along = 0.0;
+                for (int c = 0; c < 3; ++c) {
+                    axis2 += (o.extent[c] - o.center[c]) * (o.extent[c] - o.center[c]);
+                    along += (o.extent[c] - o.center[c]) * (p[c] - o.center[c]);
+                }
+                const double t = axis2 > 0.0 ? std::clamp(along / axis2, 0.0, 1.0) : 0.0;
+                for (int c = 0; c < 3; ++c) closest[c] += t * (o.extent[c] - o.center[c]);
+            }
+            const double d = std::sqrt((p[0] - closest[0]) * (p[0] - closest[0]) +
+                                       (p[1] - closest[1]) * (p[1] - closest[1]) +
+                                       (p[2] - closest[2]) * (p[2] - closest[2]));
+            return o.radius - d;
         }
     }
+    return 0.0;
+}
 
-    // bound_name, when given, says where the bound comes from: "< intestine.length (6)".
-    const Checked& above(T bound, const std::string& bound_name = {}) const {
-        return require(value_ > bound, ">", bound, bound_name);
-    }
-    const Checked& at_least(T bound, const std::string& bound_name = {}) const {
-        return require(value_ >= bound, ">=", bound, bound_name);
-    }
-    const Checked& below(T bound, const std::string& bound_name = {}) const {
-        return require(value_ < bound, "<", bound, bound_name);
-    }
-    const Checked& at_most(T bound, const std::string& bound_name = {}) const {
-        return require(value_ <= bound, "<=", bound, bound_name);
-    }
-
-    [[noreturn]] void fail(const std::string& requirement) const {
-        throw Error(code_, name_ + " " + requirement + ", got " + format(value_));
-    }
-
-private:
-    const Checked& require(bool ok, const char* relation, T bound,
-                           const std::string& bound_name) const {
-        if (!ok) {
-            const std::string bound_text =
-                bound_name.empty() ? format(bound) : bound_name + " (" + format(bound) + ")";
-            fail(std::string("must be ") + relation + " " + bound_text);
+// Refuses an obstacle with control points so far beyond its surface that their contacts
+// would throw them out faster than the guard allows (StartClearance): every step of such a
+// scene would fail.
+void check_clearance(const collision::Obstacle& o, const std::string& name, ErrorCode code, const double* points,
+                     std::size_t count, const StartClearance& clearance) {
+    // Beyond this the escape speed passes max_speed.
+    const double deepest_possible = clearance.max_speed / clearance.escape_rate - clearance.radius;
+    std::vector<std::size_t> stuck;
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const double depth = beyond_surface(o, points + 3 * i);
+        if (depth > 0.0 && depth > deepest_possible) {
+            stuck.push_back(i);
+            deepest = std::max(deepest, depth);
         }
-        return *this;
     }
-
-    T value_;
-    std::string name_;
-    ErrorCode code_;
-};
+    if (stuck.empty()) return;
+    const bool organ = o.kind == collision::ObstacleKind::sphere || o.kind == collision::ObstacleKind::capsule;
+    const char* where = organ ? "inside it" : o.kind == collision::ObstacleKind::plane ? "behind it" : "outside it";
+    const double escape = (deepest + clearance.radius) * clearance.escape_rate;
+    throw Error(code, name + " (" + obstacle_kind_name(o.kind) + ") has control points " + index_ranges(stuck) +
+                          " (" + std::to_string(stuck.size()) + " of " + std::to_string(count) + ") " + where +
+                          ", up to " + format_rounded(deepest) + " m beyond its surface: its contacts would throw them "
+                          "out at up to " + format_rounded(escape) + " m/s, past the guard's max_speed (" +
+                          format_number(clearance.max_speed) + " m/s), so the scene cannot start. Move the obstacle "
+                          "or the bowel's shape so that the bowel starts " +
+                          (organ ? "outside every organ" : "within the cavity"));
+}
 
 class Validator {
 public:
-    explicit Validator(const FieldNames& names) : names_(names) {}
+    Validator(const FieldNames& names, const FieldSet& given) : names_(names), given_(given) {}
 
     std::string name(Field field) const { return names_[field]; }
 
@@ -104,12 +142,19 @@ public:
     Checked<T> check_element(T value, Field field, std::size_t index) const {
         return Checked<T>(value, indexed(name(field), index), names_.code);
     }
+    template <typename T>
+    Checked<T> check_named(T value, const std::string& name) const {
+        return Checked<T>(value, name, names_.code);
+    }
     void check_finite(const Vec3& v, Field field) const {
         for (std::size_t k = 0; k < 3; ++k) check_element(v[k], field, k);
     }
     [[noreturn]] void fail(const std::string& name, const std::string& message) const {
         throw Error(names_.code, name + " " + message);
     }
+
+    enum class Relation { below, at_most, at_least };
+    void relate(double value, Field field, Relation relation, double factor, double other, Field other_field) const;
 
     void intestine(const IntestineConfig& intestine) const;
     void shape(const IntestineConfig& intestine) const;
@@ -118,23 +163,56 @@ public:
     void mesentery(const MesenteryConfig& mesentery) const;
     void pinned(const PinnedConfig& pinned, std::size_t control_points) const;
     void collision(const CollisionConfig& collision, double radius) const;
-    void obstacle(const collision::Obstacle& obstacle, std::size_t index) const;
+    void obstacle(const collision::Obstacle& obstacle, const std::string& name) const;
+    collision::ToolPose tool_pose(const collision::ToolPose& pose, const std::string& prefix) const;
+    void tool_settings(const collision::ToolSettings& settings, const std::string& prefix) const;
 
 private:
+    bool given(Field field) const { return given_[static_cast<std::size_t>(field)]; }
+
     const FieldNames& names_;
+    const FieldSet& given_;
 };
+
+// value (field) must be below / at most / at least factor x other (other_field). The
+// message names what the caller wrote: when field still has its default but other_field
+// was given, it is other_field that does not fit.
+void Validator::relate(double value, Field field, Relation relation, double factor, double other,
+                       Field other_field) const {
+    const double bound = factor * other;
+    const bool ok = relation == Relation::below     ? value < bound
+                    : relation == Relation::at_most ? value <= bound
+                                                    : value >= bound;
+    if (ok) return;
+    const char* op = relation == Relation::below ? "<" : relation == Relation::at_most ? "<=" : ">=";
+    const std::string scaled = factor == 1.0 ? name(other_field) : format_number(factor) + " x " + name(other_field);
+    if (!given(field) && given(other_field)) {
+        std::string message = name(other_field) + " (" + format_number(other) + ") does not fit the default " +
+                              name(field) + " (" + format_number(value) + "), which must be " + op + " " + scaled +
+                              ": give " + name(field) + " too, or check " + name(other_field);
+        if (const PlausibleRange* range = plausible_range(other_field)) {
+            const std::string unlikely = implausibility(*range, other);
+            if (!unlikely.empty()) message += ": " + unlikely;
+        }
+        throw Error(names_.code, message);
+    }
+    std::string bound_text = scaled + " (" + format_number(bound);
+    if (!given(other_field))
+        bound_text += factor == 1.0 ? ", the default" : ", from its default " + format_number(other);
+    bound_text += ")";
+    throw Error(names_.code, name(field) + " must be " + op + " " + bound_text + ", got " + format_number(value));
+}
 
 void Validator::intestine(const IntestineConfig& intestine) const {
     check(intestine.length, Field::length).above(0.0).at_most(kMaxLength);
-    check(intestine.radius, Field::radius).above(0.0).below(intestine.length, name(Field::length));
+    check(intestine.radius, Field::radius).above(0.0);
+    relate(intestine.radius, Field::radius, Relation::below, 1.0, intestine.length, Field::length);
     check(intestine.control_points, Field::control_points)
         .at_least(spline::kMinControlPoints)
         .at_most(kMaxControlPoints);
     check(intestine.linear_density, Field::linear_density).above(0.0);
-    if (intestine.stretch_stiffness) {
-        check(*intestine.stretch_stiffness, Field::stretch_stiffness).at_least(0.0);
-    }
-    if (intestine.bend_stiffness) check(*intestine.bend_stiffness, Field::bend_stiffness).at_least(0.0);
+    check(intestine.stretch_stiffness, Field::stretch_stiffness).at_least(0.0);
+    check(intestine.bend_stiffness, Field::bend_stiffness).at_least(0.0);
     shape(intestine);
 }
 
@@ -145,7 +223,6 @@ void Validator::shape(const IntestineConfig& intestine) const {
         .at_least(static_cast<int32_t>(ShapeKind::line))
         .at_most(static_cast<int32_t>(ShapeKind::points));
     // Neighbouring legs or turns closer than a diameter would start interpenetrated.
-    const std::string diameter = "2 x " + name(Field::radius);
     switch (shape.kind) {
         case ShapeKind::line: {
             check_finite(shape.center, Field::shape_center);
@@ -164,29 +241,31 @@ void Validator::shape(const IntestineConfig& intestine) const {
         case ShapeKind::serpentine:
             check_finite(shape.center, Field::shape_center);
             check(shape.leg_length, Field::shape_leg_length).above(0.0);
-            check(shape.leg_spacing, Field::shape_leg_spacing).at_least(2.0 * intestine.radius, diameter);
+            check(shape.leg_spacing, Field::shape_leg_spacing);
+            relate(shape.leg_spacing, Field::shape_leg_spacing, Relation::at_least, 2.0, intestine.radius, Field::radius);
             break;
         case ShapeKind::helix:
             check_finite(shape.center, Field::shape_center);
             check(shape.helix_radius, Field::shape_helix_radius).above(0.0);
-            check(shape.helix_pitch, Field::shape_helix_pitch).at_least(2.0 * intestine.radius, diameter);
+            check(shape.helix_pitch, Field::shape_helix_pitch);
+            relate(shape.helix_pitch, Field::shape_helix_pitch, Relation::at_least, 2.0, intestine.radius, Field::radius);
             break;
         case ShapeKind::points: {
             const std::size_t n = intestine.control_points;
             const std::string points = name(Field::shape_points);
             if (shape.points.size() != 3 * n && names_.shape_points_nested) {
-                fail(points, "must hold " + format(n) + " points (" + name(Field::control_points) +
-                                 "), got " + format(shape.points.size() / 3));
+                fail(points, "must hold " + format_number(n) + " points (" + name(Field::control_points) +
+                                 "), got " + format_number(shape.points.size() / 3));
             }
             if (shape.points.size() != 3 * n) {
-                fail(points, "must hold " + format(3 * n) + " values (" +
-                                 name(Field::control_points) + " x 3), got " + format(shape.points.size()));
+                fail(points, "must hold " + format_number(3 * n) + " values (" + name(Field::control_points) +
+                                 " x 3), got " + format_number(shape.points.size()));
             }
             for (std::size_t i = 0; i < shape.points.size(); ++i) {
                 const std::string element = names_.shape_points_nested
                                                 ? indexed(indexed(points, i / 3), i % 3)
                                                 : indexed(points, i);
-                Checked<double>(shape.points[i], element, names_.code);
+                check_named(shape.points[i], element);
             }
             break;
         }
@@ -226,56 +305,82 @@ void Validator::pinned(const PinnedConfig& pinned, std::size_t control_points) c
 }
 
 void Validator::collision(const CollisionConfig& collision, double radius) const {
-    check(collision.sphere_spacing, Field::sphere_spacing).at_least(0.0).at_most(radius, name(Field::radius));
+    check(collision.sphere_spacing, Field::sphere_spacing).at_least(0.0);
+    relate(collision.sphere_spacing, Field::sphere_spacing, Relation::at_most, 1.0, radius, Field::radius);
     check(collision.contact.stiffness, Field::contact_stiffness).at_least(0.0);
     check(collision.contact.damping, Field::contact_damping).at_least(0.0);
     check(collision.contact.friction, Field::contact_friction).at_least(0.0);
     check(collision.contact.slip_speed, Field::contact_slip_speed).above(0.0);
 }
 
-void Validator::obstacle(const collision::Obstacle& o, std::size_t index) const {
+void Validator::obstacle(const collision::Obstacle& o, const std::string& base) const {
     using collision::ObstacleKind;
-    const std::string base = indexed(name(Field::obstacle), index);
     const auto field = [&](const char* key) { return base + "." + key; };
-    Checked<int32_t>(static_cast<int32_t>(o.kind), field("kind"), names_.code)
+    check_named(static_cast<int32_t>(o.kind), field("kind"))
         .at_least(static_cast<int32_t>(ObstacleKind::box_inside))
         .at_most(static_cast<int32_t>(ObstacleKind::capsule));
     const auto finite = [&](const Vec3& v, const char* key) {
-        for (std::size_t k = 0; k < 3; ++k) Checked<double>(v[k], indexed(field(key), k), names_.code);
+        for (std::size_t k = 0; k < 3; ++k) check_named(v[k], indexed(field(key), k));
     };
     switch (o.kind) {
         case ObstacleKind::box_inside:
             finite(o.center, "center");
-            for (std::size_t k = 0; k < 3; ++k)
-                Checked<double>(o.extent[k], indexed(field("half_extents"), k), names_.code).above(0.0);
+            for (std::size_t k = 0; k < 3; ++k) check_named(o.extent[k], indexed(field("half_extents"), k)).above(0.0);
             break;
-        case ObstacleKind::plane:
+        case ObstacleKind::plane: {
             finite(o.center, "point");
             finite(o.extent, "normal");
             if (o.extent[0] == 0.0 && o.extent[1] == 0.0 && o.extent[2] == 0.0)
                 fail(field("normal"), "must not be zero, got [0, 0, 0]");
-            {
-                // Its length must be computable to normalise it.
-                const double length2 = o.extent[0] * o.extent[0] + o.extent[1] * o.extent[1] + o.extent[2] * o.extent[2];
-                if (!(length2 > 0.0) || !std::isfinite(length2))
-                    fail(field("normal"), "must have a length between 1e-150 and 1e150, got " + format(o.extent));
-            }
+            // Its length must be computable to normalise it.
+            const double length2 = o.extent[0] * o.extent[0] + o.extent[1] * o.extent[1] + o.extent[2] * o.extent[2];
+            if (!(length2 > 0.0) || !std::isfinite(length2))
+                fail(field("normal"), "must have a length between 1e-150 and 1e150, got " + format(o.extent));
             break;
+        }
         case ObstacleKind::sphere:
             finite(o.center, "center");
-            Checked<double>(o.radius, field("radius"), names_.code).above(0.0);
+            check_named(o.radius, field("radius")).above(0.0);
             break;
         case ObstacleKind::capsule:
             finite(o.center, "start");
             finite(o.extent, "end");
-            Checked<double>(o.radius, field("radius"), names_.code).above(0.0);
+            check_named(o.radius, field("radius")).above(0.0);
             break;
     }
 }
 
-FieldNames make_field_names(ErrorCode code, bool shape_points_nested,
+// Called at 1 kHz for every ent_tool_set_pose: names are made only for a message.
+collision::ToolPose Validator::tool_pose(const collision::ToolPose& pose, const std::string& prefix) const {
+    const ToolFieldNames& n = names_.tool;
+    for (std::size_t c = 0; c < 3; ++c)
+        if (!std::isfinite(pose.position[c])) check_named(pose.position[c], indexed(prefix + n.position, c));
+    double norm2 = 0.0;
+    for (std::size_t c = 0; c < 4; ++c) {
+        if (!std::isfinite(pose.orientation[c])) check_named(pose.orientation[c], indexed(prefix + n.orientation, c));
+        norm2 += pose.orientation[c] * pose.orientation[c];
+    }
+    const double norm = std::sqrt(norm2);
+    if (!(norm > 1e-12) || !std::isfinite(norm))
+        fail(prefix + n.orientation, "must be a non-zero quaternion (w x y z), got one of norm " + format_number(norm));
+    collision::ToolPose unit = pose;
+    for (double& c : unit.orientation) c /= norm;
+    return unit;
+}
+
+void Validator::tool_settings(const collision::ToolSettings& s, const std::string& prefix) const {
+    const ToolFieldNames& n = names_.tool;
+    check_named(s.radius, prefix + n.radius).above(0.0).at_most(kMaxToolRadius);
+    check_named(s.length, prefix + n.length).at_least(0.0).at_most(kMaxToolLength);
+    check_named(s.max_force, prefix + n.max_force).above(0.0);
+    check_named(s.grasp_margin, prefix + n.grasp_margin).at_least(0.0).at_most(kMaxToolRadius);
+    check_named(s.grasp_stiffness, prefix + n.grasp_stiffness).above(0.0);
+    check_named(s.grasp_damping, prefix + n.grasp_damping).at_least(0.0);
+}
+
+FieldNames make_field_names(ErrorCode code, bool shape_points_nested, const ToolFieldNames& tool,
                             std::initializer_list<std::pair<Field, const char*>> entries) {
-    FieldNames names{code, shape_points_nested, {}};
+    FieldNames names{code, shape_points_nested, {}, tool};
     for (const auto& [field, name] : entries) names.names[static_cast<std::size_t>(field)] = name;
     return names;
 }
@@ -285,6 +390,8 @@ FieldNames make_field_names(ErrorCode code, bool shape_points_nested,
 const FieldNames& json_field_names() {
     static const FieldNames names = make_field_names(
         ErrorCode::invalid_scene, true,
+        {"radius", "length", "max_force", "grasp_margin", "grasp_stiffness", "grasp_damping", "position",
+         "orientation"},
         {
             {Field::length, "intestine.length"},
             {Field::radius, "intestine.radius"},
@@ -329,6 +436,8 @@ const FieldNames& json_field_names() {
 const FieldNames& c_field_names() {
     static const FieldNames names = make_field_names(
         ErrorCode::invalid_argument, false,
+        {"radius_m", "length_m", "max_force_N", "grasp_margin_m", "grasp_stiffness_N_per_m",
+         "grasp_damping_N_s_per_m", "position_m", "orientation_wxyz"},
         {
             {Field::length, "length_m"},
             {Field::radius, "radius_m"},
@@ -370,8 +479,8 @@ const FieldNames& c_field_names() {
     return names;
 }
 
-void validate(const SceneConfig& config, const FieldNames& names) {
-    const Validator validator(names);
+SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet& given) {
+    const Validator validator(names, given);
     validator.intestine(config.intestine);
     validator.solver(config.solver);
     if (config.gravity) validator.check_finite(*config.gravity, Field::gravity);
@@ -379,16 +488,66 @@ void validate(const SceneConfig& config, const FieldNames& names) {
     if (config.mesentery) validator.mesentery(*config.mesentery);
     if (config.pinned) validator.pinned(*config.pinned, config.intestine.control_points);
     validator.collision(config.collision, config.intestine.radius);
-    for (std::size_t i = 0; i < config.environment.size(); ++i) validator.obstacle(config.environment[i], i);
+    for (std::size_t i = 0; i < config.environment.size(); ++i)
+        validator.obstacle(config.environment[i], indexed(names[Field::obstacle], i));
     for (std::size_t i = 0; i < config.tools.size(); ++i) {
-        const std::string prefix = "tools[" + std::to_string(i) + "].";
-        collision::validate_tool_settings(config.tools[i].settings, prefix, collision::kJsonToolFields, names.code);
-        (void)collision::normalized_pose(config.tools[i].pose, prefix, collision::kJsonToolFields, names.code);
+        const std::string prefix = indexed("tools", i) + ".";
+        validator.tool_settings(config.tools[i].settings, prefix);
+        config.tools[i].pose = validator.tool_pose(config.tools[i].pose, prefix);
     }
+
+    const std::size_t n = config.intestine.control_points;
+    config.start_points.assign(3 * n, 0.0);
+    build_shape(config.intestine.shape, config.intestine.length, n, config.start_points.data());
+    const StartClearance clearance = start_clearance(config);
+    for (std::size_t i = 0; i < config.environment.size(); ++i)
+        check_clearance(config.environment[i], indexed(names[Field::obstacle], i), names.code,
+                        config.start_points.data(), n, clearance);
+    return config;
 }
 
-void validate_obstacle(const collision::Obstacle& obstacle, std::size_t index, const FieldNames& names) {
-    Validator(names).obstacle(obstacle, index);
+StartClearance start_clearance(const SceneConfig& config) {
+    const double radius = config.intestine.radius;
+    const double spacing = config.collision.sphere_spacing > 0.0 ? config.collision.sphere_spacing : 0.5 * radius;
+    const double sphere_mass = config.intestine.linear_density * spacing;
+    return {radius, std::sqrt(config.collision.contact.stiffness / sphere_mass), config.solver.max_speed};
+}
+
+FieldSet fields_apart_from_defaults(const SceneConfig& config) {
+    const SceneConfig defaults;
+    FieldSet apart;
+    const auto mark = [&](Field field, bool differs) { apart[static_cast<std::size_t>(field)] = differs; };
+    mark(Field::length, config.intestine.length != defaults.intestine.length);
+    mark(Field::radius, config.intestine.radius != defaults.intestine.radius);
+    mark(Field::control_points, config.intestine.control_points != defaults.intestine.control_points);
+    mark(Field::shape_leg_spacing, config.intestine.shape.leg_spacing != defaults.intestine.shape.leg_spacing);
+    mark(Field::shape_helix_pitch, config.intestine.shape.helix_pitch != defaults.intestine.shape.helix_pitch);
+    mark(Field::sphere_spacing, config.collision.sphere_spacing != defaults.collision.sphere_spacing);
+    return apart;
+}
+
+void validate_obstacle(const collision::Obstacle& obstacle, const std::string& name, const FieldNames& names,
+                       const double* control_points, std::size_t count, const StartClearance* clearance) {
+    const FieldSet all = FieldSet().set();
+    Validator(names, all).obstacle(obstacle, name);
+    if (control_points != nullptr && clearance != nullptr)
+        check_clearance(obstacle, name, names.code, control_points, count, *clearance);
+}
+
+collision::ToolConfig validate_tool(const collision::ToolConfig& tool, const std::string& prefix,
+                                    const FieldNames& names) {
+    const FieldSet all = FieldSet().set();
+    const Validator validator(names, all);
+    validator.tool_settings(tool.settings, prefix);
+    collision::ToolConfig valid = tool;
+    valid.pose = validator.tool_pose(tool.pose, prefix);
+    return valid;
+}
+
+collision::ToolPose validate_tool_pose(const collision::ToolPose& pose, const std::string& prefix,
+                                       const FieldNames& names) {
+    const FieldSet all = FieldSet().set();
+    return Validator(names, all).tool_pose(pose, prefix);
 }
 
 }  // namespace enteron::scene

@@ -255,9 +255,9 @@ std::vector<BadInput> table() {
          ENT_OK, nullptr},
         {"ent_last_error", "(takes no input)", [](L) { return ent_last_error() != nullptr ? ENT_OK : ENT_ERROR_INTERNAL; },
          ENT_OK, nullptr},
-        {"ent_status_string", "unknown codes -1, 10, INT32_MIN, INT32_MAX",
+        {"ent_status_string", "unknown codes -1, 11, INT32_MIN, INT32_MAX",
          [](L) {
-             for (ent_status s : {-1, 10, INT32_MIN, INT32_MAX})
+             for (ent_status s : {-1, 11, INT32_MIN, INT32_MAX})
                  if (std::string(ent_status_string(s)) != "unknown status") return ENT_ERROR_INTERNAL;
              return ENT_OK;
          },
@@ -819,6 +819,26 @@ std::vector<BadInput> table() {
              return status;
          },
          ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_feedback", "scene NULL",
+         [](L) {
+             ent_tool_feedback f;
+             f.struct_size = sizeof f;
+             return ent_tool_read_feedback(nullptr, 0, &f);
+         },
+         kArg, "scene"},
+        {"ent_tool_read_feedback", "out NULL", [](L l) { return ent_tool_read_feedback(l.scene, l.tool, nullptr); },
+         kArg, "out"},
+        {"ent_tool_read_feedback", "unknown tool -3",
+         [](L l) {
+             ent_tool_feedback f;
+             std::memset(&f, 0x5a, sizeof f);
+             f.struct_size = sizeof f;
+             const ent_tool_feedback before = f;
+             const ent_status status = ent_tool_read_feedback(l.scene, -3, &f);
+             EXPECT_TRUE(same_bits(&f, &before, sizeof f)) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool -3"},
     };
 
     // Every struct that carries a struct_size, with each size no release has.
@@ -844,6 +864,9 @@ std::vector<BadInput> table() {
         add("ent_skin_create", skin_with([size](ent_skin_desc& d) { d.struct_size = size; }));
         add("ent_tool_desc_init", init_with_size(&ent_tool_desc_init, size));
         add("ent_tool_add", tool_with([size](ent_tool_desc& d) { d.struct_size = size; }));
+        add("ent_tool_read_feedback", out_struct_with_size<ent_tool_feedback>(size, [](L l, ent_tool_feedback* f) {
+                return ent_tool_read_feedback(l.scene, l.tool, f);
+            }));
     }
     for (int32_t effect : {-1, ENT_EFFECT_COUNT, INT32_MAX}) {
         rows.push_back({"ent_scene_effect_stats", "an effect this library does not know",

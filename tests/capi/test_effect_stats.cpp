@@ -38,7 +38,8 @@ TEST(EffectStats, JsonSceneWithOnlyGravityRunsOnlyGravity) {
     for (const char* integrator : {"rk4", "symplectic_euler", "implicit_euler"}) {
         SCOPED_TRACE(integrator);
         const std::string json = std::string(R"({
-            "intestine": { "length": 1.0, "control_points": 20, "shape": { "kind": "line" } },
+            "intestine": { "length": 1.0, "control_points": 20, "shape": { "kind": "line" },
+                           "stretch_stiffness": 0, "bend_stiffness": 0 },
             "solver": { "integrator": ")") + integrator + R"(", "timestep": 0.001 },
             "gravity": [0, 0, -9.81]
         })";

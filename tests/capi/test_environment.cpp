@@ -650,14 +650,15 @@ TEST(Environment, JsonErrorsNameThePath) {
                       "environment[0].end[2] must be a number");
     expect_json_error(R"([{"type": "plane", "normal": [0, 0, 1]}, {"type": "sphere", "radius": -1}])",
                       "environment[1].radius must be > 0, got -1");
-    expect_json_error(R"([{"type": "sphere"}])", "environment[0].radius must be > 0, got 0");
+    expect_json_error(R"([{"type": "sphere", "radius": 0}])", "environment[0].radius must be > 0, got 0");
     expect_json_error(R"([{"type": "plane", "normal": [0, 0, 0]}])", "environment[0].normal must not be zero");
     expect_json_error(R"([{"type": "box_inside", "half_extents": [0.1, -0.1, 0.1]}])",
                       "environment[0].half_extents[1] must be > 0, got -0.1");
     expect_json_error(R"([{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1], "type": "plane"}])",
                       "duplicate key \"type\" in environment[0]");
 
-    expect_json_error("", "collision.sphere_spacing must be <= intestine.radius (0.0125), got 0.02",
+    // The radius was left at its default: the message says so.
+    expect_json_error("", "collision.sphere_spacing must be <= intestine.radius (0.0125, the default), got 0.02",
                       R"({"sphere_spacing": 0.02})");
     expect_json_error("", "collision.sphere_spacing must be >= 0", R"({"sphere_spacing": -0.001})");
     expect_json_error("", "collision.stiffness must be >= 0, got -1", R"({"stiffness": -1})");

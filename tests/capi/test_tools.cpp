@@ -245,10 +245,11 @@ TEST(Tools, AGraspLiftsTheBowelAndAReleaseDropsIt) {
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     const Wrench before = wrench(scene.get(), 0);
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK) << ent_last_error();
-    EXPECT_EQ(grasping(scene.get(), 0), 1);
+    EXPECT_EQ(grasping(scene.get(), 0), 0) << "the grasp is taken by the next step";
     // The grasp spring's rest length is the tool's radius plus the bowel's: holding starts
     // without a jolt to the device.
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
+    EXPECT_EQ(grasping(scene.get(), 0), 1);
     const Wrench after = wrench(scene.get(), 0);
     const double jolt[3] = {after.force[0] - before.force[0], after.force[1] - before.force[1],
                             after.force[2] - before.force[2]};
@@ -263,8 +264,10 @@ TEST(Tools, AGraspLiftsTheBowelAndAReleaseDropsIt) {
     EXPECT_LT(wrench(scene.get(), 0).force[2], -0.1) << "the bowel's weight pulls the tool down";
 
     ASSERT_EQ(ent_tool_release(scene.get(), 0), ENT_OK) << ent_last_error();
+    EXPECT_EQ(grasping(scene.get(), 0), 1) << "the release is taken by the next step";
+    ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     EXPECT_EQ(grasping(scene.get(), 0), 0);
-    ASSERT_TRUE(step_n(scene.get(), 1e-3, 600));
+    ASSERT_TRUE(step_n(scene.get(), 1e-3, 599));
     const double dropped = z_at_middle(scene.get());
     EXPECT_LT(dropped, 2 * kRadius) << "released, it falls back to the plane";
     EXPECT_NEAR(norm3(wrench(scene.get(), 0).force), 0.0, 1e-12);
@@ -278,6 +281,7 @@ TEST(Tools, AGraspOutOfReachHoldsNothing) {
     const double far[3] = {0.0, 0.0, 0.2};
     ASSERT_EQ(add_tool(scene.get(), far), 0);
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK) << ent_last_error();
+    ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     EXPECT_EQ(grasping(scene.get(), 0), 0);
 }
 
@@ -288,6 +292,7 @@ TEST(Tools, AnOverPullSlipsAndIsReportedReleased) {
     const double touch[3] = {0.0, 0.0, 2 * kRadius + 0.004}, high[3] = {0.0, 0.0, 0.3};
     ASSERT_EQ(add_tool(scene.get(), touch, 0.3), 0);
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK) << ent_last_error();
+    ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     ASSERT_EQ(grasping(scene.get(), 0), 1);
     double largest = 0.0;
     bool slipped = false;
@@ -470,10 +475,11 @@ TEST(Tools, BadInputReturnsAStatusAndChangesNothing) {
     }
     const double moved[3] = {0.0, 0.05, 0.05};
     EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, nan_p, kIdentity), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_NE(std::string(ent_last_error()).find("position_m must be finite"), std::string::npos) << ent_last_error();
+    EXPECT_NE(std::string(ent_last_error()).find("position_m[1] must be finite"), std::string::npos)
+        << ent_last_error();
     for (const double* q : {zero_q, nan_q, inf_q}) {
         EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, moved, q), ENT_ERROR_INVALID_ARGUMENT);
-        EXPECT_NE(std::string(ent_last_error()).find("orientation_wxyz must be"), std::string::npos) << ent_last_error();
+        EXPECT_EQ(std::string(ent_last_error()).rfind("orientation_wxyz", 0), 0u) << ent_last_error();
     }
     EXPECT_EQ(ent_tool_set_pose(nullptr, 0, p, kIdentity), ENT_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, nullptr, kIdentity), ENT_ERROR_INVALID_ARGUMENT);
@@ -497,7 +503,7 @@ TEST(Tools, BadInputReturnsAStatusAndChangesNothing) {
     refused(bad, ENT_ERROR_INVALID_ARGUMENT, "max_force_N must be");
     bad = desc;
     bad.position_m[2] = kNaN;
-    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "position_m must be");
+    refused(bad, ENT_ERROR_INVALID_ARGUMENT, "position_m[2] must be");
     bad = desc;
     std::memcpy(bad.orientation_wxyz, zero_q, sizeof zero_q);
     refused(bad, ENT_ERROR_INVALID_ARGUMENT, "orientation_wxyz must be a non-zero quaternion");

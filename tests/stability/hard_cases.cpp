@@ -199,7 +199,7 @@ ent_scene* degenerate(int32_t integrator, bool contacts) {
 // stretch energy. The first end is held, so the bowel unfolds hanging from it. Without
 // contacts: with self-contact, the collision spheres of a zero-length axis all count as
 // neighbours until round-off gives the axis some length, then all collide 2R deep at once
-// and every later step is refused (ENT_ERROR_UNSTABLE, state unchanged; see the README).
+// and every later step is refused (ENT_ERROR_UNSTABLE, state unchanged; see docs/stability.md).
 ent_scene* collapsed(int32_t integrator) {
     constexpr uint32_t n = 24;
     std::vector<double> points(3 * n, 0.0);

@@ -2,11 +2,13 @@
 // while reader threads query the last published state, for a given wall time. Run under
 // ThreadSanitizer by scripts/test (preset `tsan`), where a data race fails it.
 //
-//   enteron_thread_stress [--seconds S] [--readers N] [--skins N]
+//   enteron_thread_stress [--seconds S] [--readers N] [--skins N] [--haptic 0|1]
 //
 // Axis readers (--readers, default 2) query the scene; skin threads (--skins, default 2:
 // a convolution skin, then a tube skin, alternating) each own a skin and update it in a
-// loop, as render threads do.
+// loop, as render threads do; a haptic thread (--haptic, default 1) runs at 1 kHz, as a
+// device's loop does: it posts the tool's pose, grasps and releases, and reads the tool's
+// feedback, wrench and state, without any lock of its own.
 //
 // Every read must be internally consistent, whichever snapshot it saw:
 //   - the control point count never changes, and every coordinate is finite;
@@ -18,11 +20,12 @@
 //   - effect calls never go backwards per reader;
 //   - every skin mesh is whole: vertices and triangles > 0, every index < the vertex
 //     count, every position and normal finite, within reach, time and update count never
-//     going backwards; a convolution skin's metrics say it is watertight.
+//     going backwards; a convolution skin's metrics say it is watertight;
+//   - every tool feedback comes from one snapshot (time_s = steps x dt), never goes back,
+//     is finite, its force within max_force, and agrees with ent_tool_wrench and
+//     ent_tool_state read right after it whenever no step came between.
 // The stepping thread's every step must succeed. The test fails (exit 1) with a count of
 // each kind of violation; it also fails if the readers barely overlapped the stepping.
-//
-// More reader kinds (tool wrench reads) join as more of the API arrives.
 #include <enteron/enteron.h>
 
 #include <atomic>
@@ -42,6 +45,7 @@ constexpr uint32_t kControlPoints = 40;
 constexpr uint32_t kAxisSamples = 64;
 constexpr double kDt = 1e-3;        // s per step
 constexpr double kReachable = 10.0;  // m: nothing of this scene gets this far from the origin
+constexpr double kToolMaxForce = 3.0;  // N
 
 struct Violations {
     std::atomic<long> failed_calls{0};
@@ -52,12 +56,15 @@ struct Violations {
     std::atomic<long> went_backwards{0};
     std::atomic<long> bad_mesh{0};      // empty, or an index past the vertex count
     std::atomic<long> not_watertight{0};
+    std::atomic<long> over_force{0};     // a tool force beyond max_force
+    std::atomic<long> disagreeing{0};    // feedback and wrench/state of one snapshot differ
     std::atomic<long> reads{0};
     std::atomic<long> skin_updates{0};
+    std::atomic<long> haptic_ticks{0};
 
     long total() const {
         return failed_calls + count_changed + not_finite + out_of_reach + torn_stats + went_backwards + bad_mesh +
-               not_watertight;
+               not_watertight + over_force + disagreeing;
     }
 };
 
@@ -185,19 +192,65 @@ void skin_until_done(ent_scene* scene, int32_t method, const std::atomic<bool>& 
     ent_skin_destroy(skin);
 }
 
+// The haptic thread: at 1 kHz, posts the device's pose (the tip circling over the bowel,
+// dipping into it), grasps and releases now and then, and reads what the tool feels.
+void haptic_until_done(ent_scene* scene, const std::atomic<bool>& done, Violations& v) {
+    const double identity[4] = {1.0, 0.0, 0.0, 0.0};
+    uint64_t last_steps = 0;
+    auto next = std::chrono::steady_clock::now();
+    for (long tick = 0; !done.load(std::memory_order_relaxed); ++tick) {
+        const double angle = 2e-3 * double(tick);
+        const double tip[3] = {0.05 * std::cos(angle), 0.05 * std::sin(angle), 0.02 + 0.02 * std::sin(3.0 * angle)};
+        if (ent_tool_set_pose(scene, 0, tip, identity) != ENT_OK) ++v.failed_calls;
+        if (tick % 400 == 100 && ent_tool_grasp(scene, 0) != ENT_OK) ++v.failed_calls;
+        if (tick % 400 == 300 && ent_tool_release(scene, 0) != ENT_OK) ++v.failed_calls;
+        ent_tool_feedback feedback;
+        std::memset(&feedback, 0, sizeof feedback);
+        feedback.struct_size = sizeof feedback;
+        double force[3], torque[3];
+        int32_t grasping = -1;
+        if (ent_tool_read_feedback(scene, 0, &feedback) != ENT_OK || ent_tool_wrench(scene, 0, force, torque) != ENT_OK ||
+            ent_tool_state(scene, 0, &grasping) != ENT_OK) {
+            ++v.failed_calls;
+        } else {
+            ent_tool_feedback again;
+            std::memset(&again, 0, sizeof again);
+            again.struct_size = sizeof again;
+            const bool same_snapshot = ent_tool_read_feedback(scene, 0, &again) == ENT_OK && again.steps == feedback.steps;
+            if (same_snapshot && (std::memcmp(force, feedback.force_N, sizeof force) != 0 ||
+                                  std::memcmp(torque, feedback.torque_Nm, sizeof torque) != 0 ||
+                                  grasping != feedback.grasping))
+                ++v.disagreeing;
+            if (!finite_all(feedback.force_N, 3) || !finite_all(feedback.torque_Nm, 3)) ++v.not_finite;
+            const double magnitude = std::sqrt(feedback.force_N[0] * feedback.force_N[0] +
+                                               feedback.force_N[1] * feedback.force_N[1] +
+                                               feedback.force_N[2] * feedback.force_N[2]);
+            if (!(magnitude <= kToolMaxForce * (1.0 + 1e-12))) ++v.over_force;
+            if (std::fabs(feedback.time_s - double(feedback.steps) * kDt) > 1e-9 * (1.0 + feedback.time_s)) ++v.torn_stats;
+            if (feedback.steps < last_steps) ++v.went_backwards;
+            last_steps = feedback.steps;
+        }
+        ++v.haptic_ticks;
+        next += std::chrono::milliseconds(1);
+        std::this_thread::sleep_until(next);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     double seconds = 2.0;
     int readers = 2;
     int skins = 2;
+    bool haptic = true;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--seconds" && i + 1 < argc) seconds = std::atof(argv[++i]);
         else if (arg == "--readers" && i + 1 < argc) readers = std::atoi(argv[++i]);
         else if (arg == "--skins" && i + 1 < argc) skins = std::atoi(argv[++i]);
+        else if (arg == "--haptic" && i + 1 < argc) haptic = std::atoi(argv[++i]) != 0;
         else {
-            std::fprintf(stderr, "usage: enteron_thread_stress [--seconds S] [--readers N] [--skins N]\n");
+            std::fprintf(stderr, "usage: enteron_thread_stress [--seconds S] [--readers N] [--skins N] [--haptic 0|1]\n");
             return 2;
         }
     }
@@ -218,6 +271,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "thread_stress: ent_scene_create: %s\n", ent_last_error());
         return 1;
     }
+    // The haptic thread's tool, above the helix.
+    ent_tool_desc tool;
+    ent_tool_desc_default(&tool);
+    tool.position_m[2] = 0.1;
+    tool.max_force_N = kToolMaxForce;
+    if (ent_tool_add(scene, &tool, nullptr) != ENT_OK) {
+        std::fprintf(stderr, "thread_stress: ent_tool_add: %s\n", ent_last_error());
+        return 1;
+    }
 
     Violations violations;
     std::atomic<bool> done{false};
@@ -227,6 +289,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < skins; ++k)
         threads.emplace_back(skin_until_done, scene, k % 2 == 0 ? ENT_SKIN_CONVOLUTION : ENT_SKIN_TUBE,
                              std::cref(done), std::ref(violations));
+    if (haptic) threads.emplace_back(haptic_until_done, scene, std::cref(done), std::ref(violations));
 
     long steps = 0, failed_steps = 0;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -247,18 +310,21 @@ int main(int argc, char** argv) {
     ent_scene_destroy(scene);
 
     std::printf("thread_stress: %.1f s, %ld steps (%.0f per s), %d readers made %ld reads, %d skins made %ld "
-                "updates; simulated %.3f s\n",
+                "updates, the haptic thread %ld ticks; simulated %.3f s\n",
                 seconds, steps, double(steps) / seconds, readers, violations.reads.load(), skins,
-                violations.skin_updates.load(), final_stats.time_s);
+                violations.skin_updates.load(), violations.haptic_ticks.load(), final_stats.time_s);
     std::printf("thread_stress: violations: failed calls %ld, count changed %ld, not finite %ld, out of reach %ld, "
-                "torn stats %ld, went backwards %ld, bad mesh %ld, not watertight %ld; failed steps %ld\n",
+                "torn stats %ld, went backwards %ld, bad mesh %ld, not watertight %ld, over max_force %ld, "
+                "feedback disagreeing %ld; failed steps %ld\n",
                 violations.failed_calls.load(), violations.count_changed.load(), violations.not_finite.load(),
                 violations.out_of_reach.load(), violations.torn_stats.load(), violations.went_backwards.load(),
-                violations.bad_mesh.load(), violations.not_watertight.load(), failed_steps);
+                violations.bad_mesh.load(), violations.not_watertight.load(), violations.over_force.load(),
+                violations.disagreeing.load(), failed_steps);
     bool ok = violations.total() == 0 && failed_steps == 0 && stats_ok;
     // A run where the readers hardly ran proves nothing (TSan slows everything ~10x, so
     // the bar is low on purpose).
-    if (steps < 100 || violations.reads.load() < 100L * readers || violations.skin_updates.load() < 10L * skins) {
+    if (steps < 100 || violations.reads.load() < 100L * readers || violations.skin_updates.load() < 10L * skins ||
+        (haptic && violations.haptic_ticks.load() < 100)) {
         std::fprintf(stderr, "thread_stress: too little overlap (%ld steps, %ld reads, %ld skin updates)\n", steps,
                      violations.reads.load(), violations.skin_updates.load());
         ok = false;

@@ -1,5 +1,5 @@
-// Test-side reference of the spline of DESIGN.md, written from the formula and not from
-// lib/spline: the uniform Catmull-Rom segment on explicit phantom points
+// Test-side reference of the spline of docs/architecture.md, written from the formula and
+// not from lib/spline: the uniform Catmull-Rom segment on explicit phantom points
 // q_{-1} = 2 q_0 - q_1 and q_n = 2 q_{n-1} - q_{n-2}, plus helpers shared by the unit tests.
 #pragma once
 
@@ -10,8 +10,8 @@
 
 namespace enteron_test {
 
-// The raw Catmull-Rom polynomials of q_{i-1}, q_i, q_{i+1}, q_{i+2}, as printed in DESIGN.md,
-// and their first and second derivatives in t, derived by hand.
+// The raw Catmull-Rom polynomials of q_{i-1}, q_i, q_{i+1}, q_{i+2}, as printed in
+// docs/architecture.md, and their first and second derivatives in t, derived by hand.
 inline std::array<double, 4> design_weights(double t, int order) {
     const double t2 = t * t, t3 = t2 * t;
     switch (order) {

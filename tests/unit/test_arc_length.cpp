@@ -54,7 +54,7 @@ TEST(ArcLength, CircleLengthApproachesTwoPiR) {
 }
 
 TEST(ArcLength, TotalLengthMatchesAnIndependentIntegral) {
-    // Simpson's rule on |P'(t)| of the DESIGN.md formula, segment by segment (the speed is
+    // Simpson's rule on |P'(t)| of the docs/architecture.md formula, segment by segment (the speed is
     // smooth within a segment). Four points on a full circle (segments turning by 120 degrees)
     // is far coarser than any bowel; there the table's 5-point Gauss rule on eighths of a
     // segment was measured 9.1e-11 off (relative), so it gets a looser bound.

@@ -1,5 +1,5 @@
 // The Catmull-Rom basis of lib/spline: interpolation, C1 joints, partition of unity, the end
-// treatment, and agreement with the formula of DESIGN.md.
+// treatment, and agreement with the formula of docs/architecture.md.
 #include "spline/catmull_rom.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Gram matrices of the spline basis (lib/spline/gram_matrix.h), checked against integrals
-// computed here with Simpson's rule over the formula of DESIGN.md.
+// computed here with Simpson's rule over the formula of docs/architecture.md.
 #include "spline/gram_matrix.h"
 
 #include <gtest/gtest.h>

@@ -72,10 +72,8 @@ TEST(JsonLoader, FullDocumentGivesEveryValue) {
     EXPECT_EQ(c.intestine.radius, 0.01);
     EXPECT_EQ(c.intestine.control_points, 80u);
     EXPECT_EQ(c.intestine.linear_density, 0.25);
-    ASSERT_TRUE(c.intestine.stretch_stiffness.has_value());
-    EXPECT_EQ(*c.intestine.stretch_stiffness, 120.0);
-    ASSERT_TRUE(c.intestine.bend_stiffness.has_value());
-    EXPECT_EQ(*c.intestine.bend_stiffness, 0.002);
+    EXPECT_EQ(c.intestine.stretch_stiffness, 120.0);
+    EXPECT_EQ(c.intestine.bend_stiffness, 0.002);
     EXPECT_EQ(c.intestine.shape.kind, ShapeKind::helix);
     EXPECT_EQ(c.intestine.shape.center, (Vec3{0.1, 0.2, 0.3}));
     EXPECT_EQ(c.intestine.shape.helix_radius, 0.12);
@@ -102,11 +100,12 @@ TEST(JsonLoader, FullDocumentGivesEveryValue) {
     EXPECT_EQ(c.pinned->points, (std::vector<uint32_t>{3, 40}));
 }
 
-TEST(JsonLoader, EmptyDocumentHasDefaultsAndNoEffects) {
+TEST(JsonLoader, EmptyDocumentIsTheDefaultElasticBowelWithNoOtherEffect) {
     const SceneConfig c = load("{}");
     const SceneConfig defaults;
-    EXPECT_FALSE(c.intestine.stretch_stiffness.has_value());
-    EXPECT_FALSE(c.intestine.bend_stiffness.has_value());
+    // One set of defaults for JSON and C: the bowel is elastic unless told otherwise.
+    EXPECT_EQ(c.intestine.stretch_stiffness, 100.0);
+    EXPECT_EQ(c.intestine.bend_stiffness, 2.5e-3);
     EXPECT_FALSE(c.gravity.has_value());
     EXPECT_FALSE(c.damping.has_value());
     EXPECT_FALSE(c.mesentery.has_value());
@@ -127,10 +126,9 @@ TEST(JsonLoader, EachPresentEffectTurnsOnAloneWithItsDefaults) {
     EXPECT_FALSE(damped.mesentery.has_value());
     EXPECT_FALSE(damped.gravity.has_value());
 
-    const SceneConfig bent = load(R"({"intestine": {"bend_stiffness": 0.003}})");
-    EXPECT_FALSE(bent.intestine.stretch_stiffness.has_value());
-    ASSERT_TRUE(bent.intestine.bend_stiffness.has_value());
-    EXPECT_EQ(*bent.intestine.bend_stiffness, 0.003);
+    const SceneConfig bent = load(R"({"intestine": {"stretch_stiffness": 0, "bend_stiffness": 0.003}})");
+    EXPECT_EQ(bent.intestine.stretch_stiffness, 0.0);
+    EXPECT_EQ(bent.intestine.bend_stiffness, 0.003);
     EXPECT_FALSE(bent.damping.has_value());
 
     const SceneConfig hung = load(R"({"mesentery": {"stiffness": 2}})");
@@ -308,12 +306,14 @@ TEST(JsonLoader, ToolsGiveEveryValue) {
 
 TEST(JsonLoader, CollisionAndEnvironmentGiveEveryValue) {
     using collision::ObstacleKind;
+    // A short bowel that starts inside the box and above the plane.
     const SceneConfig c = load(R"({
+      "intestine": { "length": 0.05, "shape": { "kind": "line", "center": [0.1, 0.2, 0.3] } },
       "collision": { "sphere_spacing": 0.005, "stiffness": 800, "damping": 0.7, "friction": 0.4,
                      "slip_speed": 0.02 },
       "environment": [
         { "type": "box_inside", "center": [0.1, 0.2, 0.3], "half_extents": [0.11, 0.12, 0.13] },
-        { "type": "plane", "point": [1, 2, 3], "normal": [0, 0, 2] },
+        { "type": "plane", "point": [1, 2, 0.2], "normal": [0, 0, 2] },
         { "type": "sphere", "center": [4, 5, 6], "radius": 0.07 },
         { "type": "capsule", "start": [7, 8, 9], "end": [10, 11, 12], "radius": 0.03 }
       ]
@@ -328,7 +328,7 @@ TEST(JsonLoader, CollisionAndEnvironmentGiveEveryValue) {
     EXPECT_EQ(c.environment[0].center, (Vec3{0.1, 0.2, 0.3}));
     EXPECT_EQ(c.environment[0].extent, (Vec3{0.11, 0.12, 0.13}));
     EXPECT_EQ(c.environment[1].kind, ObstacleKind::plane);
-    EXPECT_EQ(c.environment[1].center, (Vec3{1, 2, 3}));
+    EXPECT_EQ(c.environment[1].center, (Vec3{1, 2, 0.2}));
     EXPECT_EQ(c.environment[1].extent, (Vec3{0, 0, 2}));  // normalised when the scene is built
     EXPECT_EQ(c.environment[2].kind, ObstacleKind::sphere);
     EXPECT_EQ(c.environment[2].center, (Vec3{4, 5, 6}));

@@ -1,10 +1,12 @@
-"""Numpy arrays over memory: copies into fresh arrays, and views of library-owned buffers.
+"""Numpy arrays of what the library hands over: always arrays that own their memory.
 
 The C API copies the axis and the control points into the caller's memory: the binding
 hands the library a fresh numpy array to fill (one copy, as in C). Where the C API lends a
-buffer it owns, valid until some later call (the skin mesh of ent_skin_mesh, valid until
-the next ent_skin_update), the binding must not copy: view() wraps the library's memory
-in a read-only numpy array that keeps its owner (the Python handle) alive.
+buffer it owns (the skin mesh of ent_skin_mesh, valid until the next ent_skin_update or
+ent_skin_destroy), the binding copies it out at once: a numpy array cannot be revoked,
+and one that still pointed into the library's memory after that memory was reused or
+freed would read garbage or crash the interpreter. A Python user can never touch freed
+memory through the package.
 """
 import ctypes
 
@@ -17,21 +19,17 @@ def new_array(rows, columns, dtype=np.float64):
     return array, array.ctypes.data_as(ctypes.POINTER(np.ctypeslib.as_ctypes_type(dtype)))
 
 
-def view(address, shape, ctype, owner):
-    """A read-only numpy array over `shape` elements of `ctype` at `address`, owned by the
-    library, without copying. The array keeps `owner` alive, so the handle that lent the
-    memory cannot be collected while the view exists. The data is valid only as long as
-    the C API says (e.g. until the next update); the view sees every change in place.
-    """
+def copy(address, shape, ctype):
+    """A read-only numpy array of its own holding `shape` elements of `ctype` copied from
+    `address` (memory the library lends for the duration of the call)."""
     count = 1
     for extent in shape:
         count *= extent
+    array = np.empty(shape, dtype=np.dtype(ctype))
     if count == 0:
-        return np.empty(shape, dtype=np.dtype(ctype))
+        return array
     if not address:
-        raise ValueError("cannot view a NULL buffer")
-    memory = (ctype * count).from_address(address)
-    memory._enteron_owner = owner  # lives as long as any array over it
-    array = np.ctypeslib.as_array(memory).reshape(shape)
+        raise ValueError("cannot copy a NULL buffer")
+    ctypes.memmove(array.ctypes.data, address, count * ctypes.sizeof(ctype))
     array.flags.writeable = False
     return array

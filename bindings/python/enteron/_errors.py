@@ -11,6 +11,7 @@ ERROR_OUT_OF_MEMORY = 6
 ERROR_NOT_FOUND = 7
 ERROR_BUFFER_TOO_SMALL = 8
 ERROR_INTERNAL = 9
+ERROR_BUSY = 10  # another thread is in a driving call (step, add_obstacle, add_tool) on the scene
 
 
 def status_string(status):

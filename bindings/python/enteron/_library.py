@@ -96,6 +96,7 @@ _declare("ent_tool_wrench", _status, _scene_p, ctypes.c_int32, _double_p, _doubl
 _declare("ent_tool_grasp", _status, _scene_p, ctypes.c_int32)
 _declare("ent_tool_release", _status, _scene_p, ctypes.c_int32)
 _declare("ent_tool_state", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(ctypes.c_int32))
+_declare("ent_tool_read_feedback", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_tool_feedback))
 _skin_p = ctypes.c_void_p
 _declare("ent_skin_desc_init", _status, ctypes.POINTER(s.ent_skin_desc), ctypes.c_uint32)
 _declare("ent_skin_create", _status, _scene_p, ctypes.POINTER(s.ent_skin_desc), ctypes.POINTER(_skin_p))

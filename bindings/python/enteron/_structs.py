@@ -171,5 +171,17 @@ class ent_tool_desc(ctypes.Structure):
     ]
 
 
+class ent_tool_feedback(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("grasping", ctypes.c_int32),
+        ("force_N", _vec3),
+        ("torque_Nm", _vec3),
+        ("contacts", ctypes.c_uint32),
+        ("time_s", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+    ]
+
+
 ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_obstacle_desc, ent_tool_desc,
-       ent_skin_desc, ent_mesh_view, ent_skin_metrics)
+       ent_tool_feedback, ent_skin_desc, ent_mesh_view, ent_skin_metrics)

@@ -3,13 +3,14 @@
     with enteron.Scene(...) as scene, enteron.Skin(scene, "convolution", segments=24) as skin:
         scene.step(0.001)
         skin.update()
-        mesh = skin.mesh()        # numpy views of the library's buffers: no copy
+        mesh = skin.mesh()        # numpy arrays of the mesh
         draw(mesh.positions, mesh.normals, mesh.indices)
 
-The arrays of mesh() view the skin's own buffers, without copying; they are read-only and
-keep the Skin alive, but they are valid only until the next update() or close() of the
-skin (the library may reuse or move its buffers then). Call mesh() again after each
-update(); copy (numpy.array(view)) what must outlive it.
+The arrays of mesh() are copies of the skin's buffers (the C API's view is valid only
+until the next update or destroy): read-only, and valid for as long as they live, after
+the skin's next update(), its close() or its scene's close(). Copying costs a memcpy of
+the mesh (27 us measured for the default convolution skin of the 6 m bowel, 15474
+vertices, against milliseconds for its update); call mesh() once per update.
 """
 import ctypes
 import dataclasses
@@ -45,8 +46,8 @@ def skin_method(method):
 class Mesh:
     """One ent_skin_mesh: positions (V, 3) float32 in m, normals (V, 3) float32 (unit,
     outward), u (V,) float32 (axis arc length / total length, in [0, 1]), indices (T, 3)
-    uint32 (counter-clockwise seen from outside). The arrays view the skin's buffers:
-    valid until the skin's next update() or close()."""
+    uint32 (counter-clockwise seen from outside). The arrays are read-only copies that stay
+    valid after the skin's next update() or close()."""
     positions: np.ndarray
     normals: np.ndarray
     u: np.ndarray
@@ -119,7 +120,7 @@ class Skin(OwnedHandle):
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
-        """Destroys the skin (ent_skin_destroy); views of its mesh become invalid.
+        """Destroys the skin (ent_skin_destroy); meshes already taken stay valid (copies).
         Idempotent; later calls of other methods raise ValueError."""
         handle, self._handle = getattr(self, "_handle", None), None
         if handle:
@@ -128,20 +129,20 @@ class Skin(OwnedHandle):
     # ---- the mesh -------------------------------------------------------------------------
     def update(self):
         """Rebuilds the mesh from the scene's last published state (ent_skin_update).
-        Invalidates the arrays of earlier mesh() calls."""
+        The arrays of earlier mesh() calls keep the mesh they copied."""
         check(lib.ent_skin_update(self._live()), "ent_skin_update")
 
     def mesh(self):
-        """The current mesh as a Mesh of numpy arrays that view the library's buffers
-        (ent_skin_mesh), without copying; valid until the next update() or close()."""
+        """The current mesh (ent_skin_mesh) as a Mesh of numpy arrays copied out of the
+        library's buffers, which the next update() may reuse and close() frees."""
         raw = s.ent_mesh_view()
         raw.struct_size = ctypes.sizeof(raw)
         check(lib.ent_skin_mesh(self._live(), ctypes.byref(raw)), "ent_skin_mesh")
         v, t = raw.vertex_count, raw.triangle_count
-        return Mesh(positions=_buffers.view(raw.positions_xyz_m, (v, 3), ctypes.c_float, self),
-                    normals=_buffers.view(raw.normals_xyz, (v, 3), ctypes.c_float, self),
-                    u=_buffers.view(raw.axis_u, (v,), ctypes.c_float, self),
-                    indices=_buffers.view(raw.indices, (t, 3), ctypes.c_uint32, self),
+        return Mesh(positions=_buffers.copy(raw.positions_xyz_m, (v, 3), ctypes.c_float),
+                    normals=_buffers.copy(raw.normals_xyz, (v, 3), ctypes.c_float),
+                    u=_buffers.copy(raw.axis_u, (v,), ctypes.c_float),
+                    indices=_buffers.copy(raw.indices, (t, 3), ctypes.c_uint32),
                     time_s=raw.time_s, updates=raw.updates)
 
     def metrics(self):

@@ -7,13 +7,18 @@ and grasp the bowel (ent_tool_*).
             tool.set_pose((0.0, 0.05 - 1e-4 * i, 0.0125))   # where the tip is at the end of the step
             scene.step(0.001)
             force, torque = tool.wrench()   # on the tool: N, and N m about the tip (render it)
-        if tool.grasp():                    # True if something was within reach
+        tool.grasp()                        # taken by the next step
+        scene.step(0.001)
+        if tool.grasping:                   # something was within reach
             ...
         tool.release()
 
 The tip is at the pose's position; the shaft runs from the tip back along the
-orientation's local +z axis (w x y z; identity: a vertical tool, tip lowest). Every call is
-a driving call, as in C: make it from the thread that steps the scene.
+orientation's local +z axis (w x y z; identity: a vertical tool, tip lowest).
+Threads, as in C: set_pose, grasp and release post to the tool's mailbox, which the next
+step takes, and wrench, grasping and feedback read the last published state; all of them
+are safe from any thread (a haptic thread) while another steps, and never wait for it.
+scene.add_tool is a driving call: from the thread that steps.
 """
 import ctypes
 import typing
@@ -35,6 +40,18 @@ SETTINGS = {
 }
 
 IDENTITY = (1.0, 0.0, 0.0, 0.0)
+
+
+class ToolFeedback(typing.NamedTuple):
+    """ent_tool_feedback: what a tool felt and did in the last published step. force (3,)
+    in N and torque (3,) about the tip in N m on the tool, bounded by its max_force;
+    grasping; contacts (collision spheres touching it); time_s and steps of that state."""
+    force: np.ndarray
+    torque: np.ndarray
+    grasping: bool
+    contacts: int
+    time_s: float
+    steps: int
 
 
 class Wrench(typing.NamedTuple):
@@ -98,31 +115,44 @@ class Tool:
     def set_pose(self, position, orientation=IDENTITY):
         """Sets where the tool is at the end of the next step (ent_tool_set_pose): the tip's
         position (3 numbers, m) and the orientation (w, x, y, z; normalised by the library).
-        The tool moves continuously there across the step's substeps. Allocates nothing."""
+        The tool moves continuously there across the step's substeps. Any thread: the
+        library takes it without a lock, and the last pose set before a step wins."""
         check(lib.ent_tool_set_pose(self._scene._live(), self._id, _numbers(position, 3, "position"),
                                     _numbers(orientation, 4, "orientation")), "ent_tool_set_pose")
 
     def wrench(self):
         """The force (N) and the torque about the tip (N m) the bowel exerted on the tool in
-        the last step (ent_tool_wrench), as a Wrench of two new (3,) float64 arrays.
-        Zero before the first step; |force| never exceeds max_force."""
+        the last published step (ent_tool_wrench), as a Wrench of two new (3,) float64
+        arrays. Zero before the first step; |force| never exceeds max_force. Any thread."""
         check(lib.ent_tool_wrench(self._scene._live(), self._id, self._force, self._torque), "ent_tool_wrench")
         return Wrench(np.array(self._force[:]), np.array(self._torque[:]))
 
+    def feedback(self):
+        """ent_tool_read_feedback as a ToolFeedback: wrench, grasp and contacts of the last
+        published step, with its time and step count, read at once. Any thread."""
+        raw = s.ent_tool_feedback()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_tool_read_feedback(self._scene._live(), self._id, ctypes.byref(raw)),
+              "ent_tool_read_feedback")
+        return ToolFeedback(np.array(raw.force_N[:]), np.array(raw.torque_Nm[:]), bool(raw.grasping),
+                            raw.contacts, raw.time_s, raw.steps)
+
     def grasp(self):
-        """Grasps the collision sphere nearest the tip if it is within reach (ent_tool_grasp);
-        returns whether the tool now holds the bowel. Grasping again picks anew."""
+        """Grasps, at the start of the next step, the collision sphere nearest the tip if it
+        is within reach (ent_tool_grasp); grasping shows whether it holds once that step is
+        done. Grasping again picks anew. Any thread."""
         check(lib.ent_tool_grasp(self._scene._live(), self._id), "ent_tool_grasp")
-        return self.grasping
 
     def release(self):
-        """Releases what the tool holds (ent_tool_release); nothing held: no effect."""
+        """Releases what the tool holds at the start of the next step (ent_tool_release);
+        nothing held: no effect. Any thread."""
         check(lib.ent_tool_release(self._scene._live(), self._id), "ent_tool_release")
 
     @property
     def grasping(self):
-        """True while a grasp holds; False after a release, a grasp with nothing in reach, or
-        a slip (a hold that needed more than max_force) (ent_tool_state)."""
+        """True while a grasp holds in the last published state; False after a release, a
+        grasp with nothing in reach, or a slip (a hold that needed more than max_force)
+        (ent_tool_state). Any thread."""
         check(lib.ent_tool_state(self._scene._live(), self._id, ctypes.byref(self._grasping_flag)),
               "ent_tool_state")
         return bool(self._grasping_flag.value)

@@ -1,48 +1,29 @@
-"""The zero-copy view of library-owned memory (for buffers the C API lends, such as the
-skin mesh): the view sees changes in place, is read-only and keeps its owner alive."""
+"""Arrays of memory the library lends (the skin mesh): copies that own their data, so that
+they stay valid whatever the library does with its buffer afterwards."""
 import ctypes
-import gc
 import unittest
-import weakref
 
 from enteron import _buffers
 
 
-class Owner:
-    """Stands in for the handle that lends the memory (e.g. a Skin)."""
-
-    def __init__(self, count):
-        self.memory = (ctypes.c_float * count)()
-
-
-class View(unittest.TestCase):
-    def test_view_sees_updates_without_copying(self):
-        owner = Owner(12)
-        array = _buffers.view(ctypes.addressof(owner.memory), (4, 3), ctypes.c_float, owner)
+class Copy(unittest.TestCase):
+    def test_copy_owns_its_data(self):
+        memory = (ctypes.c_float * 12)(*range(12))
+        array = _buffers.copy(ctypes.addressof(memory), (4, 3), ctypes.c_float)
         self.assertEqual(array.shape, (4, 3))
-        self.assertEqual(array.ctypes.data, ctypes.addressof(owner.memory))  # the same memory
-        owner.memory[7] = 2.5  # the "library" updates its buffer
-        self.assertEqual(array[2, 1], 2.5)
+        self.assertNotEqual(array.ctypes.data, ctypes.addressof(memory))
+        self.assertTrue(array.flags.owndata)
+        memory[7] = 99.0  # the library reuses its buffer...
+        self.assertEqual(array[2, 1], 7.0)  # ...the copy keeps what was lent
         with self.assertRaises(ValueError):
-            array[0, 0] = 1.0  # read-only: the library owns it
-
-    def test_view_keeps_its_owner_alive(self):
-        owner = Owner(6)
-        owner.memory[5] = 4.0
-        alive = weakref.ref(owner)
-        array = _buffers.view(ctypes.addressof(owner.memory), (2, 3), ctypes.c_float, owner)
-        del owner
-        gc.collect()
-        self.assertIsNotNone(alive())
-        self.assertEqual(array[1, 2], 4.0)
-        del array
-        gc.collect()
-        self.assertIsNone(alive())
+            array[0, 0] = 1.0  # read-only, as the C view is const
+        del memory  # the library frees its buffer: the copy is unaffected
+        self.assertEqual(float(array.sum()), float(sum(range(12))))
 
     def test_null_and_empty(self):
         with self.assertRaises(ValueError):
-            _buffers.view(0, (2, 3), ctypes.c_float, None)
-        self.assertEqual(_buffers.view(0, (0, 3), ctypes.c_float, None).shape, (0, 3))
+            _buffers.copy(0, (2, 3), ctypes.c_float)
+        self.assertEqual(_buffers.copy(0, (0, 3), ctypes.c_float).shape, (0, 3))
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ H = 1e-3                 # s
 # discrete solution dq = g (t^2 + h t) / 2 with t = k h.
 FREE_FALL = {
     "intestine": {"length": 1.0, "control_points": 20, "linear_density": 0.3,
+                  "stretch_stiffness": 0, "bend_stiffness": 0,  # a rigid fall: no elasticity
                   "shape": {"kind": "line", "center": [0.1, -0.2, 0.3], "direction": [1, 1, 0]}},
     "solver": {"integrator": "symplectic_euler", "timestep": H},
     "gravity": list(G),

@@ -102,8 +102,14 @@ class Grasp(unittest.TestCase):
             touch, high = (0.0, 0.0, 2 * R + 0.004), (0.0, 0.0, 0.1)
             tool = scene.add_tool(position=touch)
             self.assertFalse(tool.grasping)
-            self.assertTrue(tool.grasp())
+            tool.grasp()
+            self.assertFalse(tool.grasping, "the grasp is taken by the next step")
+            scene.step(H)
             self.assertTrue(tool.grasping)
+            feedback = tool.feedback()
+            self.assertTrue(feedback.grasping)
+            self.assertEqual(feedback.steps, scene.stats().steps)
+            self.assertGreater(feedback.contacts, 0, "the tool rests on the bowel")
             largest = drive(tool, touch, high, 500)
             largest = max(largest, drive(tool, high, high, 300))
             self.assertTrue(tool.grasping)
@@ -112,6 +118,7 @@ class Grasp(unittest.TestCase):
             self.assertLess(tool.wrench().force[2], -0.1, "the bowel's weight pulls the tool down")
 
             tool.release()
+            scene.step(H)
             self.assertFalse(tool.grasping)
             for _ in range(600):
                 scene.step(H)
@@ -121,9 +128,12 @@ class Grasp(unittest.TestCase):
     def test_a_grasp_out_of_reach_holds_nothing(self):
         with bowel_on_floor() as scene:
             tool = scene.add_tool(position=(0.0, 0.0, 0.2))
-            self.assertFalse(tool.grasp())
+            tool.grasp()
+            scene.step(H)
             self.assertFalse(tool.grasping)
+            self.assertEqual(tool.feedback().contacts, 0)
             tool.release()  # nothing held: no effect, no error
+            scene.step(H)
             self.assertFalse(tool.grasping)
 
 
@@ -213,7 +223,7 @@ class BadInput(unittest.TestCase):
         scene = bowel_on_floor()
         tool = scene.add_tool()
         scene.close()
-        for call in (lambda: tool.set_pose((0, 0, 0)), tool.wrench, tool.grasp, tool.release,
+        for call in (lambda: tool.set_pose((0, 0, 0)), tool.wrench, tool.grasp, tool.release, tool.feedback,
                      lambda: tool.grasping):
             with self.assertRaises(ValueError):
                 call()

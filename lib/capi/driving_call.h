@@ -1,0 +1,33 @@
+// The guard of the driving calls (ent_scene_step, ent_scene_add_obstacle, ent_tool_add):
+// one atomic exchange detects a driving call on the same scene that is still running on
+// another thread, and the call then fails with ENT_ERROR_BUSY before it touches anything.
+// Two threads stepping one scene at once used to hang in the near-pair search or publish
+// garbage; now the second gets an error and the first goes on.
+#pragma once
+
+#include <string>
+
+#include "base/error.h"
+#include "capi/scene_handle.h"
+
+namespace enteron::capi {
+
+class DrivingCall {
+public:
+    // `call` names the entry point ("ent_scene_step"), for the message.
+    DrivingCall(SceneHandle& handle, const char* call) : handle_(handle) {
+        if (handle.driving.exchange(true, std::memory_order_acquire))
+            throw Error(ErrorCode::busy, std::string(call) +
+                                             ": another thread is in a driving call on this scene (ent_scene_step, "
+                                             "ent_scene_add_obstacle or ent_tool_add); driving calls on one scene "
+                                             "must not overlap. Nothing was done: call again once it has returned");
+    }
+    ~DrivingCall() { handle_.driving.store(false, std::memory_order_release); }
+    DrivingCall(const DrivingCall&) = delete;
+    DrivingCall& operator=(const DrivingCall&) = delete;
+
+private:
+    SceneHandle& handle_;
+};
+
+}  // namespace enteron::capi

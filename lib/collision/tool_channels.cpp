@@ -1,0 +1,31 @@
+#include "collision/tool_channels.h"
+
+namespace enteron::collision {
+
+ToolChannels::ToolChannels(std::pmr::memory_resource* memory)
+    : memory_(memory), mailboxes_(memory), tables_(memory), outputs_(memory) {
+    tables_.push_back(make_owned<Table>(memory, memory));
+    table_.store(tables_.back().get(), std::memory_order_release);
+}
+
+ToolMailbox* ToolChannels::mailbox(std::size_t index) {
+    const Table& table = *table_.load(std::memory_order_acquire);
+    return index < table.size() ? table[index] : nullptr;
+}
+
+std::size_t ToolChannels::add() {
+    // Everything that can fail is made before anything changes.
+    mailboxes_.reserve(mailboxes_.size() + 1);
+    tables_.reserve(tables_.size() + 1);
+    outputs_.reserve(outputs_.size() + 1);
+    Owned<ToolMailbox> mailbox = make_owned<ToolMailbox>(memory_);
+    Owned<Table> table = make_owned<Table>(memory_, *tables_.back(), memory_);
+    table->push_back(mailbox.get());
+    mailboxes_.push_back(std::move(mailbox));
+    outputs_.emplace_back();
+    tables_.push_back(std::move(table));
+    table_.store(tables_.back().get(), std::memory_order_release);
+    return outputs_.size() - 1;
+}
+
+}  // namespace enteron::collision

@@ -1,0 +1,178 @@
+// Calls in the wrong order (issue 16, defect 2): a skin that outlives its scene used to read
+// freed memory and return ENT_OK; now it shares the published snapshots and keeps building
+// from the last state the scene published. The scene's memory, allocator callbacks
+// included, goes with the last of the scene and its skins. Run under AddressSanitizer by
+// scripts/test, which turns any read of freed memory into a failure.
+#include "capi_test_support.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <map>
+#include <mutex>
+#include <thread>
+
+using namespace capi_test;
+
+namespace {
+
+struct SkinDeleter {
+    void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
+};
+using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
+
+SkinPtr make_skin(ent_scene* scene, int32_t method) {
+    ent_skin_desc desc;
+    ent_skin_desc_default(&desc);
+    desc.method = method;
+    ent_skin* skin = nullptr;
+    EXPECT_EQ(ent_skin_create(scene, &desc, &skin), ENT_OK) << ent_last_error();
+    return SkinPtr(skin);
+}
+
+ent_scene_desc falling_desc() {
+    ent_scene_desc desc = default_desc();
+    desc.control_points = 30;
+    desc.length_m = 0.6;
+    desc.shape_helix_radius_m = 0.04;
+    return desc;
+}
+
+std::vector<float> positions(const ent_skin* skin, double* time_s = nullptr) {
+    ent_mesh_view view;
+    std::memset(&view, 0, sizeof view);
+    view.struct_size = sizeof view;
+    EXPECT_EQ(ent_skin_mesh(skin, &view), ENT_OK) << ent_last_error();
+    if (time_s != nullptr) *time_s = view.time_s;
+    return std::vector<float>(view.positions_xyz_m, view.positions_xyz_m + 3 * std::size_t{view.vertex_count});
+}
+
+TEST(Lifetimes, ASkinOutlivesItsSceneOnTheLastPublishedState) {
+    for (int32_t method : {ENT_SKIN_TUBE, ENT_SKIN_POINT_SKELETON, ENT_SKIN_CONVOLUTION}) {
+        SCOPED_TRACE(method);
+        ent_scene* scene = nullptr;
+        const ent_scene_desc desc = falling_desc();
+        ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
+        SkinPtr skin = make_skin(scene, method);
+        ASSERT_TRUE(step_n(scene, 1e-3, 50));
+        ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
+        double before_s = 0.0;
+        const std::vector<float> before = positions(skin.get(), &before_s);
+        ASSERT_FALSE(before.empty());
+
+        ent_scene_destroy(scene);
+        // The skin keeps working: the last published state (t = 50 ms), as often as asked.
+        for (int i = 0; i < 3; ++i) {
+            ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
+            double after_s = 0.0;
+            const std::vector<float> after = positions(skin.get(), &after_s);
+            EXPECT_EQ(after_s, before_s);
+            EXPECT_EQ(after, before) << "the same state gives the same mesh";
+        }
+        struct ent_skin_metrics metrics;
+        std::memset(&metrics, 0, sizeof metrics);
+        metrics.struct_size = sizeof metrics;
+        EXPECT_EQ(ent_skin_metrics(skin.get(), &metrics), ENT_OK) << ent_last_error();
+        EXPECT_GT(metrics.vertex_count, 0u);
+    }
+}
+
+TEST(Lifetimes, ASkinMadeBeforeAnyUpdateOutlivesItsSceneToo) {
+    ent_scene* scene = nullptr;
+    const ent_scene_desc desc = falling_desc();
+    ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
+    SkinPtr a = make_skin(scene, ENT_SKIN_TUBE), b = make_skin(scene, ENT_SKIN_CONVOLUTION);
+    ent_scene_destroy(scene);
+    a.reset();  // the skins go in any order; the last one frees the snapshots
+    ASSERT_EQ(ent_skin_update(b.get()), ENT_OK) << ent_last_error();
+    EXPECT_FALSE(positions(b.get()).empty());
+}
+
+// Counts the caller's allocator: the scene's memory goes with the last of it and its skins.
+struct Heap {
+    std::mutex mutex;
+    std::map<void*, size_t> live;
+};
+void* heap_allocate(void* user, size_t size, size_t alignment) {
+    Heap& heap = *static_cast<Heap*>(user);
+    const size_t a = alignment < sizeof(void*) ? sizeof(void*) : alignment;
+    void* p = std::aligned_alloc(a, (size + a - 1) / a * a + a);
+    std::lock_guard<std::mutex> lock(heap.mutex);
+    heap.live[p] = size;
+    return p;
+}
+void heap_release(void* user, void* memory, size_t, size_t) {
+    Heap& heap = *static_cast<Heap*>(user);
+    {
+        std::lock_guard<std::mutex> lock(heap.mutex);
+        heap.live.erase(memory);
+    }
+    std::free(memory);
+}
+
+TEST(Lifetimes, TheScenesMemoryGoesWithTheLastOfTheSceneAndItsSkins) {
+    Heap heap;
+    ent_callbacks callbacks;
+    ent_callbacks_default(&callbacks);
+    callbacks.allocate = heap_allocate;
+    callbacks.release = heap_release;
+    callbacks.user_data = &heap;
+    ent_scene_desc desc = falling_desc();
+    desc.callbacks = &callbacks;
+    ent_scene* scene = nullptr;
+    ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
+    SkinPtr skin = make_skin(scene, ENT_SKIN_TUBE);
+    ASSERT_TRUE(step_n(scene, 1e-3, 10));
+    const std::size_t with_scene = heap.live.size();
+    ent_scene_destroy(scene);
+    EXPECT_LT(heap.live.size(), with_scene) << "the simulation is freed at once";
+    EXPECT_FALSE(heap.live.empty()) << "the snapshots stay for the skin";
+    ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
+    skin.reset();
+    EXPECT_TRUE(heap.live.empty()) << heap.live.size() << " blocks left after the last skin";
+}
+
+TEST(Lifetimes, ADestroyedSceneThatItsSkinsKeepIsRefusedNotRead) {
+    ent_scene* scene = nullptr;
+    const ent_scene_desc desc = falling_desc();
+    ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
+    SkinPtr skin = make_skin(scene, ENT_SKIN_TUBE);
+    ent_scene_destroy(scene);
+    // Using a destroyed scene is the caller's mistake; while its skins keep the handle, the
+    // library can tell, and says so instead of reading what is gone.
+    double axis[6];
+    EXPECT_EQ(ent_scene_axis(scene, 2, axis), ENT_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(ent_last_error()).find("destroyed"), std::string::npos) << ent_last_error();
+    EXPECT_EQ(ent_scene_step(scene, 1e-3), ENT_ERROR_INVALID_ARGUMENT);
+    ent_skin* another = nullptr;
+    ent_skin_desc skin_desc;
+    ent_skin_desc_default(&skin_desc);
+    EXPECT_EQ(ent_skin_create(scene, &skin_desc, &another), ENT_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(another, nullptr);
+}
+
+TEST(Lifetimes, ASceneDestroyedWhileARenderThreadUpdatesItsSkinIsSafe) {
+    // The render thread owns the skin and updates it in a loop; the main thread steps and then
+    // destroys the scene under it. No call of the skin may fail or read freed memory.
+    ent_scene* scene = nullptr;
+    const ent_scene_desc desc = falling_desc();
+    ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
+    SkinPtr skin = make_skin(scene, ENT_SKIN_CONVOLUTION);
+    std::atomic<bool> destroyed{false}, done{false};
+    std::atomic<long> failures{0}, updates_after{0};
+    std::thread render([&] {
+        while (!done.load()) {
+            const bool after = destroyed.load();
+            if (ent_skin_update(skin.get()) != ENT_OK) ++failures;
+            if (after) ++updates_after;
+        }
+    });
+    ASSERT_TRUE(step_n(scene, 1e-3, 100));
+    ent_scene_destroy(scene);
+    destroyed = true;
+    while (updates_after.load() < 5) std::this_thread::yield();
+    done = true;
+    render.join();
+    EXPECT_EQ(failures.load(), 0);
+}
+
+}  // namespace

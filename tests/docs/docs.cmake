@@ -1,0 +1,28 @@
+# ---- the documentation says what the code does (label "docs"; tests/docs/check_docs.py) -----
+#   docs.header          every exported function has a doc comment
+#   docs.json_keys       every key the JSON loader accepts is in docs/scene-json.md (asks the
+#                        built library, so not under sanitizers: their runtimes cannot be
+#                        loaded into a plain python3)
+#   docs.links           every relative link of README.md and docs/*.md resolves
+#   docs.readme_example  the C program of README.md is examples/minimal.c
+# Python 3's standard library only.
+if(EXISTS /usr/bin/python3)
+  set(_enteron_docs_python /usr/bin/python3)
+else()
+  find_program(_enteron_docs_python python3)
+endif()
+if(NOT _enteron_docs_python)
+  message(WARNING "no python3: the documentation tests (label docs) are not registered")
+  return()
+endif()
+set(_enteron_check_docs ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_docs.py --root ${PROJECT_SOURCE_DIR})
+foreach(check IN ITEMS header links readme_example)
+  add_test(NAME docs.${check} COMMAND ${_enteron_check_docs} ${check})
+endforeach()
+set(_enteron_docs_tests docs.header docs.links docs.readme_example)
+if(NOT ENTERON_SANITIZE)
+  add_test(NAME docs.json_keys COMMAND ${_enteron_check_docs} --library $<TARGET_FILE:enteron> json_keys)
+  list(APPEND _enteron_docs_tests docs.json_keys)
+endif()
+set_tests_properties(${_enteron_docs_tests} PROPERTIES LABELS docs TIMEOUT 60
+  ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

@@ -1,0 +1,124 @@
+// Dynamics around the step (lib/mechanics/dynamics.h): the effects' step hooks run in order
+// and in the right sequence, and the guard's report finds the effect behind a failure.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <memory_resource>
+#include <string>
+#include <vector>
+
+#include "base/memory.h"
+#include "mechanics/dynamics.h"
+#include "mechanics/gravity_force.h"
+#include "mechanics/state.h"
+
+namespace enteron::mechanics {
+namespace {
+
+constexpr std::size_t kPoints = 5;
+
+AxisModel model() {
+    AxisModel m;
+    m.control_points = kPoints;
+    m.rest_segment_length = 0.1;
+    m.linear_density = 0.3;
+    return m;
+}
+
+// Records its hook calls in a shared log; pushes control point `point` with `force` (N) and
+// stores `energy` per metre the point has moved along +x.
+class Recorder final : public Effect {
+public:
+    Recorder(EffectId id, std::vector<std::string>& log, bool changes_energy, std::size_t point = 0,
+             double force = 0.0, double energy_per_m = 0.0)
+        : id_(id), log_(log), changes_energy_(changes_energy), point_(point), force_(force),
+          energy_per_m_(energy_per_m) {}
+    EffectId id() const override { return id_; }
+    void evaluate(const State&, double* force, const Linearization*) override { force[3 * point_] += force_; }
+    double potential_energy(const State& state) const override { return energy_per_m_ * state.q[3 * point_]; }
+    bool begin_step(const State&, double dt) override {
+        log_.push_back(name() + " begin_step " + std::to_string(dt));
+        return changes_energy_;
+    }
+    void begin_attempt() override { log_.push_back(name() + " begin_attempt"); }
+    void end_step(bool accepted) override { log_.push_back(name() + (accepted ? " accepted" : " aborted")); }
+
+private:
+    std::string name() const { return effect_name(id_); }
+    EffectId id_;
+    std::vector<std::string>& log_;
+    bool changes_energy_;
+    std::size_t point_;
+    double force_;
+    double energy_per_m_;
+};
+
+TEST(Dynamics, StepHooksRunForEveryEffectInOrder) {
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    std::vector<std::string> log;
+    Dynamics dynamics(model(), memory);
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::tools, log, false));
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, false));
+    dynamics.finalize();
+    State state;
+    state.resize(kPoints);
+
+    EXPECT_FALSE(dynamics.begin_step(state, 0.5)) << "no effect changed its energy";
+    dynamics.begin_attempt();
+    dynamics.begin_attempt();
+    dynamics.end_step(false);
+    dynamics.end_step(true);
+    const std::vector<std::string> expected = {
+        "tools begin_step 0.500000",    "environment begin_step 0.500000", "tools begin_attempt",
+        "environment begin_attempt",    "tools begin_attempt",             "environment begin_attempt",
+        "tools aborted",                "environment aborted",             "tools accepted",
+        "environment accepted"};
+    EXPECT_EQ(log, expected);
+}
+
+TEST(Dynamics, BeginStepReportsAnEffectThatChangedItsEnergy) {
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    std::vector<std::string> log;
+    Dynamics dynamics(model(), memory);
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::stretch, log, false));
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::tools, log, true));
+    dynamics.finalize();
+    State state;
+    state.resize(kPoints);
+    EXPECT_TRUE(dynamics.begin_step(state, 1e-3));
+    EXPECT_EQ(log.size(), 2u) << "every effect's hook runs, also after one reported a change";
+}
+
+TEST(Dynamics, TheStrongestForceOnAPointAndTheLargestEnergyGainNameTheirEffects) {
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    std::vector<std::string> log;
+    Dynamics dynamics(model(), memory);
+    dynamics.add_effect(make_owned<GravityForce>(memory, model(), std::array<double, 3>{0.0, 0.0, -9.81}, memory));
+    // Pushes point 3 with 100 N, far more than its weight (about 0.3 N); stores 5 J/m.
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, false, 3, 100.0, 5.0));
+    // Pushes point 1 with 0.01 N; stores 1 J/m of point 1's x.
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::mesentery, log, false, 1, 0.01, 1.0));
+    dynamics.finalize();
+    State before;
+    before.resize(kPoints);
+
+    const Dynamics::Culprit at_3 = dynamics.strongest_force_at(before, 3);
+    ASSERT_TRUE(at_3.found);
+    EXPECT_EQ(at_3.effect, EffectId::environment);
+    EXPECT_NEAR(at_3.amount, 100.0, 1e-12);
+    const Dynamics::Culprit at_1 = dynamics.strongest_force_at(before, 1);
+    ASSERT_TRUE(at_1.found);
+    EXPECT_EQ(at_1.effect, EffectId::gravity) << "gravity's weight on point 1 beats 0.01 N";
+
+    State after = before;
+    after.q[3 * 3] = 0.1;  // environment: +0.5 J
+    after.q[3 * 1] = 0.2;  // mesentery: +0.2 J
+    const Dynamics::Culprit gain = dynamics.largest_energy_gain(before, after);
+    ASSERT_TRUE(gain.found);
+    EXPECT_EQ(gain.effect, EffectId::environment);
+    EXPECT_NEAR(gain.amount, 0.5, 1e-12);
+    EXPECT_FALSE(dynamics.largest_energy_gain(after, before).found) << "every effect lost energy";
+}
+
+}  // namespace
+}  // namespace enteron::mechanics

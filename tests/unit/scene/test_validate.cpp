@@ -1,0 +1,131 @@
+// What validate() (lib/scene/validate.h) adds to the checks of each value: messages that
+// blame what the caller wrote, scenes refused because they cannot start, and the normalised
+// config it returns. The checks of single values are in tests/unit/test_json_loader.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "base/error.h"
+#include "scene/json_loader.h"
+#include "scene/shape_builder.h"
+#include "scene/validate.h"
+
+namespace enteron::scene {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string json_error(const std::string& text) {
+    try {
+        load_scene_json(text.data(), text.size());
+    } catch (const Error& error) {
+        EXPECT_EQ(error.code(), ErrorCode::invalid_scene);
+        return error.what();
+    }
+    ADD_FAILURE() << "no error for " << text;
+    return "";
+}
+
+TEST(Validate, ARadiusInCentimetresIsBlamedNotTheDefaultPitchItClashesWith) {
+    // Before: "intestine.shape.helix_pitch must be >= 2 x intestine.radius (2.5), got 0.03",
+    // a value the user never wrote.
+    const std::string message = json_error(R"({"intestine": {"radius": 1.25}})");
+    EXPECT_EQ(message.rfind("intestine.radius (1.25) does not fit the default intestine.shape.helix_pitch (0.03)", 0),
+              0u)
+        << message;
+    EXPECT_TRUE(contains(message, "give intestine.shape.helix_pitch too, or check intestine.radius")) << message;
+    EXPECT_TRUE(contains(message, "was it given in centimetres?")) << message;
+    // The same mistake from C names the C fields.
+    SceneConfig config;
+    config.intestine.radius = 1.25;
+    try {
+        validate(config, c_field_names(), fields_apart_from_defaults(config));
+        ADD_FAILURE() << "no error";
+    } catch (const Error& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("radius_m (1.25) does not fit the default shape_helix_pitch_m", 0), 0u)
+            << error.what();
+    }
+}
+
+TEST(Validate, AFieldTheCallerWroteIsBlamedAndADefaultBoundSaysSo) {
+    // Both written: the checked one is blamed, as always.
+    EXPECT_EQ(json_error(R"({"intestine": {"radius": 0.0125, "shape": {"helix_pitch": 0.01}}})"),
+              "intestine.shape.helix_pitch must be >= 2 x intestine.radius (0.025), got 0.01");
+    // The pitch written, the radius its default.
+    EXPECT_EQ(json_error(R"({"intestine": {"shape": {"helix_pitch": 0.01}}})"),
+              "intestine.shape.helix_pitch must be >= 2 x intestine.radius (0.025, from its default 0.0125), got 0.01");
+    // A length shorter than the default radius: the length is what the user wrote.
+    EXPECT_EQ(json_error(R"({"intestine": {"length": 0.01}})").rfind(
+                  "intestine.length (0.01) does not fit the default intestine.radius (0.0125), which must be < "
+                  "intestine.length",
+                  0),
+              0u);
+}
+
+TEST(Validate, ABowelThatStartsFarOutsideItsCavityIsRefusedNamingThePoints) {
+    // The default helix (0.29 m high, radius 0.1 m) and a 24 cm box a metre away.
+    const std::string away = json_error(
+        R"({"environment": [{"type": "box_inside", "center": [1, 0, 0], "half_extents": [0.12, 0.12, 0.12]}]})");
+    EXPECT_EQ(away.rfind("environment[0] (box_inside) has control points 0-239 (240 of 240) outside it", 0), 0u)
+        << away;
+    EXPECT_TRUE(contains(away, "past the guard's max_speed (50 m/s)")) << away;
+    EXPECT_TRUE(contains(away, "so that the bowel starts within the cavity")) << away;
+
+    // A 50 m helix in a 30 cm box: most of it far above the lid.
+    const std::string tall = json_error(R"({"intestine": {"length": 50, "control_points": 400},
+        "environment": [{"type": "box_inside", "half_extents": [0.15, 0.15, 0.15]}]})");
+    EXPECT_EQ(tall.rfind("environment[0] (box_inside) has control points ", 0), 0u) << tall;
+
+    // An organ that holds the whole bowel.
+    const std::string organ = json_error(
+        R"({"environment": [{"type": "plane", "normal": [0, 0, 1], "point": [0, 0, -1]},
+                            {"type": "sphere", "center": [0, 0, 0.15], "radius": 0.5}]})");
+    EXPECT_EQ(organ.rfind("environment[1] (sphere) has control points 0-239 (240 of 240) inside it", 0), 0u) << organ;
+    EXPECT_TRUE(contains(organ, "outside every organ")) << organ;
+}
+
+TEST(Validate, ABowelThatStartsALittleOutsideIsPushedInNotRefused) {
+    // Draped 5 cm over the rim (the contact throws it in at about 30 m/s): a scene that works.
+    const std::string text = R"({"intestine": {"length": 1.2, "control_points": 48,
+        "shape": {"kind": "serpentine", "leg_length": 0.12, "center": [0, 0, -0.05]}},
+        "environment": [{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1]}]})";
+    EXPECT_NO_THROW(load_scene_json(text.data(), text.size()));
+    // Softer contacts throw gentler: the same bowel 10 cm out, with stiffness 100 N/m.
+    const std::string soft = R"({"intestine": {"shape": {"center": [0, 0, -0.1]}},
+        "collision": {"stiffness": 100},
+        "environment": [{"type": "plane", "normal": [0, 0, 1]}]})";
+    EXPECT_NO_THROW(load_scene_json(soft.data(), soft.size()));
+    // ...but not with the default 500 N/m.
+    EXPECT_TRUE(contains(json_error(R"({"intestine": {"shape": {"center": [0, 0, -0.1]}},
+        "environment": [{"type": "plane", "normal": [0, 0, 1]}]})"), "(plane) has control points"));
+}
+
+TEST(Validate, TheConfigReturnedIsNormalised) {
+    SceneConfig config;
+    config.intestine.control_points = 10;
+    config.intestine.length = 0.5;
+    collision::ToolConfig tool;
+    tool.pose.orientation = {2.0, 0.0, 0.0, 0.0};
+    config.tools.push_back(tool);
+    const SceneConfig valid = validate(config, json_field_names());
+    EXPECT_EQ(valid.tools[0].pose.orientation, (std::array<double, 4>{1.0, 0.0, 0.0, 0.0}));
+    std::vector<double> expected(30);
+    build_shape(config.intestine.shape, config.intestine.length, 10, expected.data());
+    EXPECT_EQ(valid.start_points, expected);
+
+    const collision::ToolPose unit = validate_tool_pose(tool.pose, "", c_field_names());
+    EXPECT_EQ(unit.orientation[0], 1.0);
+    tool.pose.orientation = {0.0, 0.0, 0.0, 0.0};
+    try {
+        validate_tool(tool, "", c_field_names());
+        ADD_FAILURE() << "a zero quaternion was accepted";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.code(), ErrorCode::invalid_argument);
+        EXPECT_EQ(std::string(error.what()).rfind("orientation_wxyz must be a non-zero quaternion", 0), 0u);
+    }
+}
+
+}  // namespace
+}  // namespace enteron::scene
