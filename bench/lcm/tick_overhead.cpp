@@ -166,8 +166,8 @@ int main(int argc, char** argv) {
                                                                    device.sent_ns[static_cast<std::size_t>(seq)]));
     ent_lcm_bridge_destroy(bridge);
 
-    std::printf("In-process over memq, %s, %.0f s measured after %.0f s of settling (tool in the pile: %lld of %zu ticks "
-                "with contacts), %lld late ticks of this thread:\n\n",
+    std::printf("In-process over memq, %s, %.0f s measured after %.0f s of settling (the tool in the pile from 2.6 s; "
+                "contacts in %lld of %zu ticks), %lld ticks of this thread late:\n\n",
                 argv[1], measured_s, settle_s, static_cast<long long>(contacts), step.values.size(),
                 static_cast<long long>(missed));
     std::printf("| %-58s | %8s | %8s | %8s |\n|---|---:|---:|---:|\n", "per tick (us)", "median", "p99", "max");
