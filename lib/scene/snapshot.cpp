@@ -1,5 +1,6 @@
 #include "scene/snapshot.h"
 
+#include <algorithm>
 #include <thread>
 
 namespace enteron::scene {
@@ -41,9 +42,15 @@ void SnapshotPublisher::reserve_tools(std::size_t count) {
         wait_unread(slot);
         slots_[slot].tools.reserve(count);
     }
-    const std::size_t moved = (old_latest + 1) % kSlots;
-    slots_[moved] = slots_[old_latest];  // within the capacity just reserved
-    publish(&slots_[moved]);
+    // The same state in another slot, within the capacities it has: values only, never a
+    // vector's own fields (control_points() reads those from any thread).
+    Snapshot& moved = slots_[(old_latest + 1) % kSlots];
+    const Snapshot& latest = slots_[old_latest];
+    std::copy(latest.control_points.begin(), latest.control_points.end(), moved.control_points.begin());
+    moved.stats = latest.stats;
+    moved.effects = latest.effects;
+    moved.tools.assign(latest.tools.begin(), latest.tools.end());
+    publish(&moved);
     wait_unread(old_latest);
     slots_[old_latest].tools.reserve(count);
 }
