@@ -66,8 +66,15 @@ TEST(ToolMailbox, ConcurrentPostsNeverTearAPose) {
     long taken_count = 0, torn = 0, backwards = 0;
     double last[kPosters] = {0.0, 0.0, 0.0};
     ToolPose taken;
-    while (running.load() > 0 || mailbox.take_pose(taken)) {
-        if (!mailbox.take_pose(taken)) continue;
+    for (;;) {
+        // Read before the take: once every poster is done, one last take sees their last post
+        // (the condition used to take it and throw it away, and a taker that started late
+        // then took nothing).
+        const bool posters_done = running.load() == 0;
+        if (!mailbox.take_pose(taken)) {
+            if (posters_done) break;
+            continue;
+        }
         ++taken_count;
         const double x = taken.position[0];
         const int t = static_cast<int>(taken.orientation[0] - 1.0 + 0.5);
