@@ -7,9 +7,10 @@
  * how long it is, its contacts and their deepest penetration, how many rollbacks the
  * stability guard made, the largest force on the tool, and the wall time per step). The
  * tool waits above the pile while it settles, then goes down into it, sweeps across the
- * cavity and rises again (tool_path below), as a haptic device would drive it. Then writes the final
- * axis as axis.obj (an OBJ polyline) and axis.csv, and the bowel's surface (convolution
- * skin of the last frame) as bowel.obj.
+ * cavity and rises again (the scene and the path are in demo_scene.h, shared with
+ * enteron-viewer), as a haptic device would drive it. Then writes the final axis as
+ * axis.obj (an OBJ polyline) and axis.csv, and the bowel's surface (convolution skin of
+ * the last frame) as bowel.obj.
  *
  * Usage: enteron_demo [--seconds S] [--out DIR]
  *   --seconds S  simulated time, s (default 5)
@@ -31,57 +32,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
-/* The bowel, as a surgery simulator would load it. No pinned ends: the bowel is dropped
- * freely into the abdominal cavity (the inside of a 30 cm box), its folds pile up on each
- * other (self-collision) and its mesentery (tension-only springs to a 15 cm root along x
- * at z = 0) holds it up. The helix starts near the floor, so the root runs through the
- * coil. */
-static const char scene_json[] =
-    "{\n"
-    "  \"intestine\": {\n"
-    "    \"length\": 6.0,\n"
-    "    \"radius\": 0.0125,\n"
-    "    \"control_points\": 240,\n"
-    "    \"linear_density\": 0.3,\n"
-    "    \"stretch_stiffness\": 100,\n"
-    "    \"bend_stiffness\": 2.5e-3,\n"
-    "    \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, -0.13],\n"
-    "              \"helix_radius\": 0.1, \"helix_pitch\": 0.025}\n"
-    "  },\n"
-    "  \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001},\n"
-    "  \"gravity\": [0, 0, -9.81],\n"
-    "  \"damping\": {\"drag\": 0.05, \"stretch\": 0.05, \"bend\": 0},\n"
-    "  \"mesentery\": {\"root\": [[-0.075, 0, 0], [0.075, 0, 0]],\n"
-    "                \"stiffness\": 5, \"attachments\": 60, \"rest_length\": 0},\n"
-    "  \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0],\n"
-    "                    \"half_extents\": [0.15, 0.15, 0.15]}],\n"
-    "  \"self_collision\": {},\n"
-    "  \"tools\": [{\"radius\": 0.005, \"length\": 0.3, \"max_force\": 5,\n"
-    "              \"position\": [-0.1, 0, 0.3], \"orientation\": [1, 0, 0, 0]}]\n"
-    "}\n";
-
-/* The tool's tip at simulated time t (s): a vertical grasper waiting above the cavity
- * while the bowel settles, down into the pile (2 to 2.6 s), across the cavity along +x
- * (2.6 to 4 s), and up again (4 to 4.6 s). */
-static void tool_path(double t, double tip[3]) {
-    static const double keys[][4] = {/* t_s, x, y, z */
-                                     {0.0, -0.1, 0.0, 0.3},
-                                     {2.0, -0.1, 0.0, 0.3},
-                                     {2.6, -0.1, 0.0, -0.08},
-                                     {4.0, 0.1, 0.0, -0.08},
-                                     {4.6, 0.1, 0.0, 0.3}};
-    const size_t count = sizeof keys / sizeof keys[0];
-    size_t k;
-    for (k = 1; k < count && t > keys[k][0]; ++k) {
-    }
-    if (k == count) {
-        tip[0] = keys[count - 1][1], tip[1] = keys[count - 1][2], tip[2] = keys[count - 1][3];
-    } else {
-        const double a = (t - keys[k - 1][0]) / (keys[k][0] - keys[k - 1][0]);
-        int c;
-        for (c = 0; c < 3; ++c) tip[c] = (1.0 - a) * keys[k - 1][c + 1] + a * keys[k][c + 1];
-    }
-}
+#include "demo_scene.h"
 
 #define STEP_S 0.001           /* one ent_scene_step, s */
 #define STEPS_PER_REPORT 1000  /* one report line per simulated second */
@@ -351,7 +302,7 @@ int main(int argc, char** argv) {
     }
     if (make_directories(out_dir) != 0) return 1;
 
-    status = ent_scene_create_json(scene_json, strlen(scene_json), &scene);
+    status = ent_scene_create_json(demo_scene_json, strlen(demo_scene_json), &scene);
     if (status != ENT_OK) return report_failure("ent_scene_create_json", status);
 
     total_steps = lround(seconds / STEP_S);
@@ -374,7 +325,7 @@ int main(int argc, char** argv) {
         double start;
         /* Where the device puts the tool at the end of this step; it moves there
          * continuously during the step. */
-        tool_path((double)step * STEP_S, tip);
+        path_at(demo_tool_keys, DEMO_TOOL_KEY_COUNT, (double)step * STEP_S, tip);
         status = ent_tool_set_pose(scene, 0, tip, upright);
         if (status != ENT_OK) {
             ent_scene_destroy(scene);

@@ -1,0 +1,173 @@
+// The viewer without a display (--headless): an OpenGL 3.3 core context from EGL on Mesa's
+// surfaceless platform (software rendering with llvmpipe: no X server, no GPU), frames
+// drawn into a Canvas at a fixed rate in simulated time. The physics thread still runs on
+// its own, up to a gate the render thread moves one frame at a time, so every frame shows
+// exactly the simulated time it is stamped with, however slow the rendering.
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+#include "run.h"
+
+namespace viewer {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Longer than this without reaching a frame's time means the physics thread is stuck.
+constexpr double kFrameTimeoutS = 60.0;
+
+class OffscreenContext {
+public:
+    ~OffscreenContext() {
+        if (display_ == EGL_NO_DISPLAY) return;
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+        eglTerminate(display_);
+    }
+
+    bool create(std::string& error) {
+        // Mesa's surfaceless platform first (any machine with libegl-mesa0), then the
+        // default display (a GPU driver's EGL).
+        if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
+            display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (display_ == EGL_NO_DISPLAY) display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+        EGLint major = 0, minor = 0;
+        if (display_ == EGL_NO_DISPLAY || eglInitialize(display_, &major, &minor) != EGL_TRUE) {
+            error = "EGL has no display here (eglInitialize failed, EGL error 0x" + hex(eglGetError()) +
+                    "); Mesa's software renderer for EGL is in libegl-mesa0, or run the viewer in a window, under "
+                    "xvfb-run if there is no display";
+            display_ = EGL_NO_DISPLAY;
+            return false;
+        }
+        if (!epoxy_has_egl_extension(display_, "EGL_KHR_surfaceless_context")) {
+            error = "EGL on this display cannot make a context current without a surface";
+            return false;
+        }
+        const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
+        EGLConfig config = nullptr;
+        EGLint configs = 0;
+        if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE ||
+            eglChooseConfig(display_, config_attributes, &config, 1, &configs) != EGL_TRUE || configs == 0) {
+            error = "EGL offers no desktop OpenGL configuration";
+            return false;
+        }
+        const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                             EGL_NONE};
+        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attributes);
+        if (context_ == EGL_NO_CONTEXT || eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE) {
+            error = "EGL cannot make an OpenGL 3.3 core context (error 0x" + hex(eglGetError()) + ")";
+            return false;
+        }
+        renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        return true;
+    }
+
+    const std::string& renderer() const { return renderer_; }
+
+private:
+    static std::string hex(EGLint value) {
+        char text[16];
+        std::snprintf(text, sizeof text, "%x", static_cast<unsigned>(value));
+        return text;
+    }
+    EGLDisplay display_ = EGL_NO_DISPLAY;
+    EGLContext context_ = EGL_NO_CONTEXT;
+    std::string renderer_;
+};
+
+int capture(Viewer& viewer, RunOptions& options) {
+    std::string error;
+    Canvas canvas;
+    FrameOutputs outputs;
+    // Pictures are made once and kept: multisampled even on a software renderer.
+    if (!viewer.init_renderer(error) || !canvas.resize(options.width, options.height, 4, error)) {
+        std::fprintf(stderr, "enteron-viewer: no renderer: %s\n", error.c_str());
+        return kExitNoRenderer;
+    }
+    if (!outputs.open(options, options.width, options.height, error)) {
+        std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
+        return kExitFailed;
+    }
+    Session& session = *viewer.session();
+    viewer.set_window_size(options.width, options.height);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(static_cast<float>(options.width), static_cast<float>(options.height));
+    io.DeltaTime = static_cast<float>(1.0 / options.fps);
+    // The text keeps its share of the picture (fonts are made for 720 lines), down to a size
+    // still legible.
+    io.FontGlobalScale = std::clamp(static_cast<float>(options.height) / 720.0f, 0.75f, 2.0f);
+
+    // Dear ImGui sizes a new auto-sized window on its first frame and shows it from the
+    // second: that first frame is made here, not captured.
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    viewer.build_ui();
+    ImGui::EndFrame();
+
+    const auto start = Clock::now();
+    const long frames = std::max(1L, std::lround(options.seconds * options.fps));
+    auto frame_time = [&options](long k) { return options.start_s + static_cast<double>(k) / options.fps; };
+    int status = kExitOk;
+    for (long k = 1; k <= frames && status == kExitOk; ++k) {
+        const double time_s = frame_time(k);
+        session.set_gate(time_s);
+        const auto waiting = Clock::now();
+        while (!session.at_gate(time_s)) {
+            if (std::chrono::duration<double>(Clock::now() - waiting).count() > kFrameTimeoutS) {
+                std::fprintf(stderr, "enteron-viewer: the simulation did not reach t = %.3f s in %.0f s\n", time_s,
+                             kFrameTimeoutS);
+                return kExitFailed;
+            }
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+        std::vector<std::string> screenshots;
+        options.script.play(time_s, viewer, screenshots);
+        viewer.update();  // the snapshot at exactly time_s: the skin, the stats, the tools
+        // The physics goes on to the next frame's time while this one is drawn and saved.
+        if (k < frames) session.set_gate(frame_time(k + 1));
+        draw_frame(viewer, canvas);
+        if (!outputs.add(canvas, screenshots, error)) {
+            std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
+            status = kExitFailed;
+        }
+        if (viewer.frame().problem.count > 0) status = kExitFailed;  // reported by Viewer::update
+    }
+    if (!outputs.finish(error)) {
+        std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
+        status = kExitFailed;
+    }
+    print_summary(viewer, outputs.frames(), std::chrono::duration<double>(Clock::now() - start).count());
+    return status;
+}
+
+}  // namespace
+
+int run_headless(Viewer& viewer, RunOptions& options) {
+    OffscreenContext context;
+    std::string error;
+    if (!context.create(error)) {
+        std::fprintf(stderr, "enteron-viewer: no renderer: %s\n", error.c_str());
+        return kExitNoRenderer;
+    }
+    std::printf("enteron-viewer: headless, OpenGL on %s\n", context.renderer().c_str());
+    create_imgui();
+    ImGui_ImplOpenGL3_Init("#version 330");
+    const int status = capture(viewer, options);
+    viewer.release_renderer();  // its GL objects go with the context
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext();
+    return status;
+}
+
+}  // namespace viewer

@@ -1,0 +1,140 @@
+#include "scene_layout.h"
+
+#include <enteron/enteron.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace viewer {
+
+namespace {
+
+using nlohmann::json;
+
+// Copies a JSON [x, y, z] (or [w, x, y, z]) into out when the key is present.
+template <std::size_t N>
+void read_vector(const json& object, const char* key, double (&out)[N]) {
+    const auto it = object.find(key);
+    if (it == object.end() || !it->is_array() || it->size() != N) return;
+    for (std::size_t c = 0; c < N; ++c) out[c] = (*it)[c].get<double>();
+}
+
+void read_number(const json& object, const char* key, double& out) {
+    const auto it = object.find(key);
+    if (it != object.end() && it->is_number()) out = it->get<double>();
+}
+
+void normalise(double* v, int n) {
+    double norm = 0.0;
+    for (int c = 0; c < n; ++c) norm += v[c] * v[c];
+    norm = std::sqrt(norm);
+    if (norm > 0.0)
+        for (int c = 0; c < n; ++c) v[c] /= norm;
+}
+
+ObstacleShape read_obstacle(const json& item) {
+    ent_obstacle_desc desc;
+    ent_obstacle_desc_default(&desc);
+    ObstacleShape shape;
+    const std::string type = item.value("type", "");
+    shape.kind = type == "plane" ? ENT_OBSTACLE_PLANE
+                 : type == "sphere" ? ENT_OBSTACLE_SPHERE
+                 : type == "capsule" ? ENT_OBSTACLE_CAPSULE
+                                     : ENT_OBSTACLE_BOX_INSIDE;
+    std::copy(desc.center_m, desc.center_m + 3, shape.center_m);
+    std::copy(desc.normal, desc.normal + 3, shape.normal);
+    std::copy(desc.start_m, desc.start_m + 3, shape.start_m);
+    std::copy(desc.end_m, desc.end_m + 3, shape.end_m);
+    shape.radius_m = desc.radius_m;
+    read_vector(item, shape.kind == ENT_OBSTACLE_PLANE ? "point" : "center", shape.center_m);
+    read_vector(item, "half_extents", shape.half_extents_m);
+    read_vector(item, "normal", shape.normal);
+    normalise(shape.normal, 3);
+    read_vector(item, "start", shape.start_m);
+    read_vector(item, "end", shape.end_m);
+    read_number(item, "radius", shape.radius_m);
+    return shape;
+}
+
+ToolShape read_tool(const json& item) {
+    ent_tool_desc desc;
+    ent_tool_desc_default(&desc);
+    ToolShape tool;
+    tool.radius_m = desc.radius_m;
+    tool.length_m = desc.length_m;
+    tool.max_force_N = desc.max_force_N;
+    std::copy(desc.position_m, desc.position_m + 3, tool.initial.position_m);
+    std::copy(desc.orientation_wxyz, desc.orientation_wxyz + 4, tool.initial.orientation_wxyz);
+    read_number(item, "radius", tool.radius_m);
+    read_number(item, "length", tool.length_m);
+    read_number(item, "max_force", tool.max_force_N);
+    read_vector(item, "position", tool.initial.position_m);
+    read_vector(item, "orientation", tool.initial.orientation_wxyz);
+    normalise(tool.initial.orientation_wxyz, 4);
+    return tool;
+}
+
+}  // namespace
+
+bool read_scene_layout(const std::string& text, SceneLayout& layout, std::string& error) {
+    const json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (document.is_discarded() || !document.is_object()) {
+        error = "the scene description is not a JSON object";
+        return false;
+    }
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    layout = SceneLayout();
+    layout.length_m = desc.length_m;
+    layout.radius_m = desc.radius_m;
+    layout.control_points = desc.control_points;
+    layout.timestep_s = desc.timestep_s;
+    std::copy(desc.mesentery_root_start_m, desc.mesentery_root_start_m + 3, layout.root_start_m);
+    std::copy(desc.mesentery_root_end_m, desc.mesentery_root_end_m + 3, layout.root_end_m);
+    layout.attachments = desc.mesentery_attachments;
+
+    const json empty = json::object();
+    const json& intestine = document.contains("intestine") ? document["intestine"] : empty;
+    read_number(intestine, "length", layout.length_m);
+    read_number(intestine, "radius", layout.radius_m);
+    if (intestine.contains("control_points")) layout.control_points = intestine["control_points"].get<std::uint32_t>();
+    if (intestine.contains("shape") && intestine["shape"].contains("points"))
+        layout.control_points = static_cast<std::uint32_t>(intestine["shape"]["points"].size());
+    if (document.contains("solver")) read_number(document["solver"], "timestep", layout.timestep_s);
+
+    double spacing = 0.0;  // 0: R / 2
+    if (document.contains("collision")) read_number(document["collision"], "sphere_spacing", spacing);
+    if (spacing <= 0.0) spacing = 0.5 * layout.radius_m;
+    layout.collision_spheres = static_cast<std::uint32_t>(std::lround(layout.length_m / spacing)) + 1;
+
+    if (document.contains("mesentery")) {
+        const json& mesentery = document["mesentery"];
+        layout.mesentery = true;
+        if (mesentery.contains("root") && mesentery["root"].size() == 2) {
+            for (int c = 0; c < 3; ++c) {
+                layout.root_start_m[c] = mesentery["root"][0][c].get<double>();
+                layout.root_end_m[c] = mesentery["root"][1][c].get<double>();
+            }
+        }
+        if (mesentery.contains("attachments")) layout.attachments = mesentery["attachments"].get<std::uint32_t>();
+    }
+    if (document.contains("environment"))
+        for (const json& item : document["environment"]) layout.obstacles.push_back(read_obstacle(item));
+    if (document.contains("tools"))
+        for (const json& item : document["tools"]) layout.tools.push_back(read_tool(item));
+
+    // The camera frames the cavity if there is one, else it is framed on the first
+    // frame by the bowel itself (scene_size_m 0).
+    layout.scene_size_m = 0.0;
+    for (const ObstacleShape& obstacle : layout.obstacles) {
+        if (obstacle.kind != ENT_OBSTACLE_BOX_INSIDE) continue;
+        std::copy(obstacle.center_m, obstacle.center_m + 3, layout.scene_center_m);
+        layout.scene_size_m = 2.0 * *std::max_element(obstacle.half_extents_m, obstacle.half_extents_m + 3);
+        break;
+    }
+    return true;
+}
+
+}  // namespace viewer

@@ -1,0 +1,61 @@
+// A scripted session: what a user's hands would do, at given simulated times, so that
+// pictures, videos and tests can be made without anyone at the mouse. One event a line:
+//
+//   # time_s  event       arguments
+//   1.0       mouse       640 360 down   pointer at pixel (640, 360), left button held;
+//   2.0       mouse       900 360 down   between two mouse lines the pointer moves in a
+//   2.1       mouse       900 360 up     straight line (a drag, through the same code as
+//                                        the real mouse)
+//   1.5       wheel       -3             wheel notches (forward > 0: the tool goes deeper)
+//   0.5       key         G              a key, as typed (G grasps; see docs/viewer.md)
+//   0.9       screenshot  before.png     this frame as a PNG
+//   2.0       tool        0.1 0 -0.08    tool 0's tip in m: tool 0 then follows the path
+//                                        through its tool lines instead of the mouse,
+//                                        played on the physics thread like a device
+//
+// Times are simulated seconds, so a script plays the same at any frame rate; a pause stops
+// its clock too, so a script that pauses resumes at the same time ("3 key space" twice).
+// "demo" instead of a file name is the demo's tool path (examples/demo_scene.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "physics_thread.h"
+
+namespace viewer {
+
+class Viewer;
+
+class Script {
+public:
+    // Parses script text; false with "FILE:LINE: what is wrong".
+    bool parse(const std::string& text, const std::string& name, std::string& error);
+    bool load(const std::string& path_or_demo, std::string& error);
+
+    const ToolPathKeys& tool_path() const { return tool_path_; }
+    // Render thread, once a frame at simulated time time_s: the input events due go to
+    // the viewer, the pointer moves along its path; the screenshots due are appended.
+    void play(double time_s, Viewer& viewer, std::vector<std::string>& screenshots);
+
+private:
+    struct MouseKey {
+        double time_s, x, y;
+        bool down;
+    };
+    struct Event {
+        double time_s;
+        enum class Kind { wheel, key, screenshot } kind;
+        double notches;
+        int key;
+        std::string path;
+    };
+    std::vector<MouseKey> mouse_;
+    std::vector<Event> events_;
+    ToolPathKeys tool_path_;
+    std::size_t next_mouse_ = 0, next_event_ = 0;
+    bool button_down_ = false;
+    double pointer_x_ = -1.0, pointer_y_ = -1.0;
+};
+
+}  // namespace viewer

@@ -1,0 +1,108 @@
+// Where the picture comes from and where the tool commands go. The viewer draws whatever a
+// Session gives it once a frame and sends it the tools' targets; it does not know whether
+// the scene runs here (LocalSession: a physics thread and a skin in this process) or
+// somewhere else (a remote session over the LCM bridge would publish the same state and
+// mesh, and take the same commands).
+#pragma once
+
+#include <enteron/enteron.h>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "physics_thread.h"
+#include "scene_layout.h"
+#include "tool_exchange.h"
+
+namespace viewer {
+
+// The ENT_ERROR_* name of a status, as enteron.h spells it.
+inline const char* status_name(ent_status status) {
+    switch (status) {
+        case ENT_OK: return "ENT_OK";
+        case ENT_ERROR_INVALID_ARGUMENT: return "ENT_ERROR_INVALID_ARGUMENT";
+        case ENT_ERROR_VERSION: return "ENT_ERROR_VERSION";
+        case ENT_ERROR_PARSE: return "ENT_ERROR_PARSE";
+        case ENT_ERROR_INVALID_SCENE: return "ENT_ERROR_INVALID_SCENE";
+        case ENT_ERROR_UNSTABLE: return "ENT_ERROR_UNSTABLE";
+        case ENT_ERROR_OUT_OF_MEMORY: return "ENT_ERROR_OUT_OF_MEMORY";
+        case ENT_ERROR_NOT_FOUND: return "ENT_ERROR_NOT_FOUND";
+        case ENT_ERROR_BUFFER_TOO_SMALL: return "ENT_ERROR_BUFFER_TOO_SMALL";
+        case ENT_ERROR_INTERNAL: return "ENT_ERROR_INTERNAL";
+        case ENT_ERROR_BUSY: return "ENT_ERROR_BUSY";
+        default: return "ENT_ERROR_?";
+    }
+}
+
+// A failed library call, as the status line shows it.
+struct Problem {
+    std::uint64_t count = 0;     // failures so far (a change means a new one)
+    ent_status status = ENT_OK;
+    std::string call;            // "ent_scene_step"
+    std::string message;         // its ent_last_error()
+    double time_s = 0.0;         // simulated time it happened at
+};
+
+// What to read besides the mesh and the stats (each costs a copy from the snapshot).
+struct FrameRequest {
+    bool axis = false;
+    bool control_points = false;
+    bool spheres = false;
+};
+
+// One frame's view of the scene, filled by Session::read on the render thread.
+struct FrameState {
+    double time_s = 0.0;                       // simulated time of the physics report
+    ent_stats stats{};                         // of the snapshot read this frame
+    ent_effect_stats effects[ENT_EFFECT_COUNT]{};
+    std::vector<double> axis_xyz_m;            // evenly spaced in arc length
+    std::vector<double> control_points_xyz_m;
+    std::vector<double> spheres_xyz_m;         // the collision spheres' centres
+    ent_mesh_view mesh{};                      // the skin; valid until the next read
+    double skin_update_ms = 0.0;               // wall time of this frame's ent_skin_update
+    std::uint32_t tool_count = 0;
+    ToolReadback tools[kMaxTools];
+    bool paused = false;
+    double gate_reached_s = -1.0;              // capture: the gate the physics waits at
+    std::vector<StepSample> new_steps;         // every step since the last read, oldest first
+    std::uint64_t dropped_steps = 0;           // steps the plots missed (the reader stalled)
+    Problem problem;                           // the newest failure, if any
+};
+
+class Session {
+public:
+    virtual ~Session() = default;
+
+    virtual std::string name() const = 0;            // for the title bar and the status line
+    virtual const SceneLayout& layout() const = 0;
+
+    // Render thread, once a frame: the newest state and a fresh mesh.
+    virtual void read(const FrameRequest& request, FrameState& frame) = 0;
+    // Render thread: where the tools should go (newest wins).
+    virtual void send(const ToolCommands& commands) = 0;
+
+    // Controls of the simulation itself (a remote session would not have them all).
+    virtual void set_paused(bool paused) = 0;
+    virtual bool paused() const = 0;
+    virtual void step_once() = 0;
+    virtual void set_rate(double real_time_factor) = 0;
+    virtual double rate() const = 0;
+    virtual void set_step(double step_s) = 0;
+    virtual double step() const = 0;
+    // Back to the initial state; false with a message if the scene cannot be made again.
+    virtual bool reset(std::string& error) = 0;
+    // Frame-exact capture: the simulation never passes time_s (infinity: real time again);
+    // at_gate says when it waits there (or has stopped on a failure).
+    virtual void set_gate(double time_s) = 0;
+    virtual bool at_gate(double time_s) = 0;
+
+    // The skin: method and resolution. On failure the old skin stays and error says why.
+    virtual bool set_skin(const ent_skin_desc& desc, std::string& error) = 0;
+    virtual const ent_skin_desc& skin() const = 0;
+    // The mesh's accuracy (costs more than an update; for a panel, not every frame).
+    virtual bool skin_metrics(struct ent_skin_metrics& metrics) = 0;
+};
+
+}  // namespace viewer
