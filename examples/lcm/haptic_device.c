@@ -106,6 +106,7 @@ typedef struct {
     long feedback, missed_ticks, bad_feedback;
     int64_t last_tick, last_echoed_seq;
     double* round_trip_us;  /* one per command whose feedback came back */
+    double* system_us;      /* the same less its wait for the tick: the system's own latency */
     long round_trips, over_one_tick;
     double force[3], largest_force;
     int32_t status;
@@ -191,14 +192,21 @@ static int by_value(const void* a, const void* b) {
     return (x > y) - (x < y);
 }
 
+/* Sorts values and gives their median and 99th percentile. */
+static void percentiles(double* values, long count, double* median, double* p99) {
+    qsort(values, (size_t)count, sizeof *values, by_value);
+    *median = values[count / 2];
+    *p99 = values[(long)(0.99 * (double)(count - 1))];
+}
+
 /* The lead: what 99 % of the last commands needed, plus a margin, within [50 us, 0.9 period]. */
 static void adapt_lead(device* d) {
     double sorted[NEEDED_WINDOW];
     const long count = d->needed_count < NEEDED_WINDOW ? d->needed_count : NEEDED_WINDOW;
-    double lead_us;
+    double median, lead_us;
     memcpy(sorted, d->needed_us, (size_t)count * sizeof *sorted);
-    qsort(sorted, (size_t)count, sizeof *sorted, by_value);
-    lead_us = sorted[(long)(0.99 * (double)(count - 1))] + LEAD_MARGIN_US;
+    percentiles(sorted, count, &median, &lead_us);
+    lead_us += LEAD_MARGIN_US;
     lead_us = lead_us < 50.0 ? 50.0 : lead_us > 0.9e-3 * PERIOD_NS ? 0.9e-3 * PERIOD_NS : lead_us;
     d->lead_ns = (int64_t)(1e3 * lead_us);
 }
@@ -233,12 +241,13 @@ static void on_feedback(const lcm_recv_buf_t* buffer, const char* channel, void*
     if (feedback.command_seq > d->last_echoed_seq && feedback.command_seq <= d->seq) {
         const double round_trip_us = 1e-3 * (double)(arrival_ns - d->sent_ns[feedback.command_seq]);
         d->last_echoed_seq = feedback.command_seq;
+        d->system_us[d->round_trips] = round_trip_us - feedback.command_age_us;
         d->round_trip_us[d->round_trips++] = round_trip_us;
         if (round_trip_us > 1e-3 * PERIOD_NS) ++d->over_one_tick;
         if (feedback.tick > d->aimed_tick[feedback.command_seq]) ++d->late_commands;
         /* What this command needed as lead: its round trip less the time it waited for its
            tick (measured by the server). Both are durations on one clock each: no clock sync. */
-        d->needed_us[d->needed_count++ % NEEDED_WINDOW] = round_trip_us - feedback.command_age_us;
+        d->needed_us[d->needed_count++ % NEEDED_WINDOW] = d->system_us[d->round_trips - 1];
         if (d->needed_count % (NEEDED_WINDOW / 4) == 0) adapt_lead(d);
     }
     /* Phase lock: the next feedback is due one period after this one. */
@@ -299,8 +308,9 @@ int main(int argc, char** argv) {
     d.sent_ns = calloc((size_t)expected * 2, sizeof *d.sent_ns); /* before the loop: it never allocates */
     d.aimed_tick = calloc((size_t)expected * 2, sizeof *d.aimed_tick);
     d.round_trip_us = calloc((size_t)expected * 2, sizeof *d.round_trip_us);
+    d.system_us = calloc((size_t)expected * 2, sizeof *d.system_us);
     d.lcm = lcm_create(d.url);
-    if (d.sent_ns == NULL || d.aimed_tick == NULL || d.round_trip_us == NULL || d.lcm == NULL) {
+    if (d.sent_ns == NULL || d.aimed_tick == NULL || d.round_trip_us == NULL || d.system_us == NULL || d.lcm == NULL) {
         fprintf(stderr, "haptic_device: cannot open LCM at %s\n", d.url);
         return 1;
     }
@@ -352,14 +362,14 @@ int main(int argc, char** argv) {
     }
 
     if (d.round_trips > 0) {
-        double median, p99;
-        qsort(d.round_trip_us, (size_t)d.round_trips, sizeof *d.round_trip_us, by_value);
-        median = d.round_trip_us[d.round_trips / 2];
-        p99 = d.round_trip_us[(long)(0.99 * (double)(d.round_trips - 1))];
+        double median, p99, system_median, system_p99;
+        percentiles(d.system_us, d.round_trips, &system_median, &system_p99);
+        percentiles(d.round_trip_us, d.round_trips, &median, &p99);
         printf("haptic_device: %ld commands, %ld feedback ticks (%ld missed), round trip median %.0f us, p99 %.0f us, "
-               "max %.0f us (%ld over one tick, %ld late for their tick, lead %.0f us), largest |F| %.3f N",
+               "max %.0f us (%ld over one tick, %ld late for their tick, lead %.0f us; without the wait for the tick: "
+               "median %.0f us, p99 %.0f us), largest |F| %.3f N",
                d.commands, d.feedback, d.missed_ticks, median, p99, d.round_trip_us[d.round_trips - 1], d.over_one_tick,
-               d.late_commands, 1e-3 * (double)d.lead_ns, d.largest_force);
+               d.late_commands, 1e-3 * (double)d.lead_ns, system_median, system_p99, d.largest_force);
         if (!d.sweep)
             printf(", grasped %s, held through the lift %s", d.grasped ? "yes" : "no", d.held_through_lift ? "yes" : "no");
         printf("\n");
@@ -372,5 +382,6 @@ int main(int argc, char** argv) {
     free(d.sent_ns);
     free(d.aimed_tick);
     free(d.round_trip_us);
+    free(d.system_us);
     return d.feedback > 0 ? 0 : 1;
 }
