@@ -9,12 +9,8 @@
 #include <new>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 namespace enteron {
-
-template <class T>
-using Buffer = std::pmr::vector<T>;
 
 // A memory resource that forwards to C allocate/release callbacks.
 class CallbackMemoryResource final : public std::pmr::memory_resource {

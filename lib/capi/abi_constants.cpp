@@ -16,7 +16,7 @@ constexpr int value(Enum e) {
     return static_cast<int>(e);
 }
 
-using enteron::EffectId;
+using enteron::mechanics::EffectId;
 using enteron::ErrorCode;
 using enteron::LogLevel;
 using enteron::collision::ObstacleKind;
@@ -50,7 +50,7 @@ static_assert(ENT_EFFECT_PINNED == value(EffectId::pinned));
 static_assert(ENT_EFFECT_ENVIRONMENT == value(EffectId::environment));
 static_assert(ENT_EFFECT_SELF_COLLISION == value(EffectId::self_collision));
 static_assert(ENT_EFFECT_TOOLS == value(EffectId::tools));
-static_assert(ENT_EFFECT_COUNT == enteron::kEffectCount);
+static_assert(ENT_EFFECT_COUNT == enteron::mechanics::kEffectCount);
 
 static_assert(ENT_SHAPE_LINE == value(ShapeKind::line));
 static_assert(ENT_SHAPE_SERPENTINE == value(ShapeKind::serpentine));

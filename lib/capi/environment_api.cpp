@@ -12,7 +12,7 @@
 
 namespace {
 
-enteron::collision::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
+enteron::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
 
 // The obstacle in the library's terms: centre/point/start, extent (half extents, normal or
 // end) and radius.

@@ -15,7 +15,7 @@ namespace {
 // Larger inputs than these are refused before anything is copied from the caller's arrays.
 constexpr uint32_t kMaxControlPoints = 100000;
 
-scene::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
+Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
 
 // The defaults of the current ent_scene_desc, whole: those of a default SceneConfig (one
 // set for JSON and C), with gravity and damping turned on.

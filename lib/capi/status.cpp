@@ -40,7 +40,7 @@ ENT_API const char* ent_last_error(void) { return last_error; }
 
 ENT_API const char* ent_effect_name(int32_t effect) {
     if (effect < 0 || effect >= ENT_EFFECT_COUNT) return nullptr;
-    return enteron::effect_name(static_cast<enteron::EffectId>(effect));
+    return enteron::mechanics::effect_name(static_cast<enteron::mechanics::EffectId>(effect));
 }
 
 }  // extern "C"

@@ -41,7 +41,7 @@ const double* CollisionSpheres::velocities(const double* v) {
         return velocities_.data();
     std::memcpy(velocities_for_.data(), v, bytes);
     velocities_placement_ = placement_;
-    for (std::size_t i = 0; i < spheres_.size(); ++i) spline::evaluate(v, spheres_[i].weights, &velocities_[3 * i]);
+    for (std::size_t i = 0; i < spheres_.size(); ++i) point_at(velocities_.data(), i) = spline::evaluate(v, spheres_[i].weights);
     return velocities_.data();
 }
 
@@ -61,23 +61,18 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
     double* arcs = sample_arc_.data();
     // The last sample stays in registers: reloading it from the stores that wrote it cost a
     // store-forwarding stall per segment.
-    double last[3];
-    spline::evaluate(control_points, weights[0], last);
+    Vec3 last = spline::evaluate(control_points, weights[0]);
     double arc = 0.0;
     for (std::size_t segment = 0; segment < segments; ++segment) {
         const std::size_t first = segment * kPerSegment;
-        double* p = &points[3 * first];
         // A segment starts where the one before ends (the spline interpolates its points).
-        for (int c = 0; c < 3; ++c) p[c] = last[c];
+        point_at(points, first) = last;
         arcs[first] = arc;  // the first sample repeats the last of the segment before
         for (std::size_t k = 1; k < kPerSegment; ++k) {
-            p += 3;
-            double next[3];
-            spline::evaluate(control_points, weights[first + k], next);
-            const double d[3] = {next[0] - last[0], next[1] - last[1], next[2] - last[2]};
-            arc += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            const Vec3 next = spline::evaluate(control_points, weights[first + k]);
+            arc += (next - last).norm();
             arcs[first + k] = arc;
-            for (int c = 0; c < 3; ++c) p[c] = last[c] = next[c];
+            point_at(points, first + k) = last = next;
         }
     }
     // The spheres, evenly spread over the length: walk the polyline's intervals (never the
@@ -108,13 +103,12 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
         Sphere& sphere = spheres[j];
         sphere.weights.first = w0.first;
         for (int c = 0; c < 4; ++c) sphere.weights.w[c] = (1.0 - t) * w0.w[c] + t * w1.w[c];
-        const double* p0 = &points[3 * interval];
-        for (int c = 0; c < 3; ++c) sphere.center[c] = (1.0 - t) * p0[c] + t * p0[3 + c];
+        sphere.center = (1.0 - t) * point_at(points, interval) + t * point_at(points, interval + 1);
         sphere.arc_length = target;
     }
 }
 
-void CollisionSpheres::add_weight_products(double scale, spline::ScalarBandMatrix& bound) const {
+void CollisionSpheres::add_weight_products(double scale, numerics::ScalarBandMatrix& bound) const {
     for (const Sphere& sphere : spheres_) {
         const spline::SegmentWeights& sw = sphere.weights;
         for (int j = 0; j < 4; ++j)

@@ -13,6 +13,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
 #include "spline/catmull_rom.h"
 #include "spline/gram_matrix.h"
 
@@ -20,7 +21,7 @@ namespace enteron::collision {
 
 struct Sphere {
     spline::SegmentWeights weights;  // of the centre, on four control points
-    double center[3];                // m
+    Vec3 center = Vec3::Zero();      // m
     double arc_length;               // from the first end, m
 };
 
@@ -50,7 +51,7 @@ public:
 
     // bound += scale * sum over spheres of w w^T (per coordinate): the stiffness bound of
     // a law of stiffness `scale` acting on every sphere at once.
-    void add_weight_products(double scale, spline::ScalarBandMatrix& bound) const;
+    void add_weight_products(double scale, numerics::ScalarBandMatrix& bound) const;
 
 private:
     static constexpr std::size_t kSamplesPerSegment = 4;  // polyline intervals per segment

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/geometry.h"
+
 namespace enteron::collision {
 
 struct ContactParameters {
@@ -31,25 +33,25 @@ inline double friction_damping_bound(const ContactParameters& p, double radius) 
 // Also the linearisation: normal stiffness k, normal damping c (0 when separating) and the
 // tangential friction damping c_t, so that H = k n n^T and C = c n n^T + c_t (I - n n^T).
 struct ContactForce {
-    double force[3];
+    Vec3 force;           // N
     double normal_force;  // N, >= 0
     double stiffness;
     double damping;
     double friction_damping;
 };
 
-inline ContactForce contact_force(const ContactParameters& p, double depth, const double n[3], const double v[3]) {
+inline ContactForce contact_force(const ContactParameters& p, double depth, const Vec3& n, const Vec3& v) {
     ContactForce out{};
-    const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+    const double vn = v.dot(n);
     const double approach = std::max(0.0, -vn);
     const double fade = depth < p.damping_depth ? depth / p.damping_depth : 1.0;
     out.normal_force = std::max(0.0, p.stiffness * depth + fade * p.damping * approach);
     out.stiffness = p.stiffness;
     out.damping = approach > 0.0 ? fade * p.damping : 0.0;
-    const double vt[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
-    const double slip = std::sqrt(vt[0] * vt[0] + vt[1] * vt[1] + vt[2] * vt[2] + p.slip_speed * p.slip_speed);
+    const Vec3 vt = v - vn * n;  // tangential velocity
+    const double slip = std::sqrt(vt.squaredNorm() + p.slip_speed * p.slip_speed);
     out.friction_damping = p.friction * out.normal_force / slip;
-    for (int c = 0; c < 3; ++c) out.force[c] = out.normal_force * n[c] - out.friction_damping * vt[c];
+    out.force = out.normal_force * n - out.friction_damping * vt;
     return out;
 }
 

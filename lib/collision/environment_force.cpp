@@ -8,13 +8,12 @@ namespace enteron::collision {
 
 EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParameters& contact,
                                    const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
-                                   std::pmr::memory_resource* memory, SphereLoads* shared_loads)
+                                   std::pmr::memory_resource* memory, SphereLoads& loads)
     : spheres_(spheres),
       contact_(contact),
       obstacles_(memory),
       contacts_(memory),
-      own_loads_(shared_loads != nullptr ? nullptr : make_owned<SphereLoads>(memory, spheres_, memory)),
-      loads_(shared_loads != nullptr ? *shared_loads : *own_loads_) {
+      loads_(loads) {
     obstacles_.reserve(obstacles.size());
     for (const Obstacle& obstacle : obstacles) add_obstacle(obstacle);
     spheres_.update(initial.q.data());  // the stability bounds use the spheres' weights
@@ -22,10 +21,7 @@ EnvironmentForce::EnvironmentForce(CollisionSpheres& spheres, const ContactParam
 
 void EnvironmentForce::add_obstacle(const Obstacle& obstacle) {
     Obstacle o = obstacle;
-    if (o.kind == ObstacleKind::plane) {
-        const double norm = std::sqrt(o.extent[0] * o.extent[0] + o.extent[1] * o.extent[1] + o.extent[2] * o.extent[2]);
-        for (double& c : o.extent) c /= norm;
-    }
+    if (o.kind == ObstacleKind::plane) o.extent /= o.extent.norm();
     // Room first (this may throw and must then change nothing): every sphere touching every
     // obstacle as often as it can, six walls for a box narrower than a sphere.
     std::size_t per_sphere = o.kind == ObstacleKind::box_inside ? 6 : 1;
@@ -49,25 +45,23 @@ void EnvironmentForce::find_contacts(const mechanics::State& state) const {
                 Contact& contact = contacts_.emplace_back();
                 contact.sphere = static_cast<uint32_t>(i);
                 contact.contact.depth = c.depth;
-                contact.contact.normal[0] = c.normal[0];
-                contact.contact.normal[1] = c.normal[1];
-                contact.contact.normal[2] = c.normal[2];
+                contact.contact.normal = c.normal;
             });
     contacts_for_ = spheres_.placement();
 }
 
-void EnvironmentForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
+// The forces reach `force` when the owner of loads_ applies them, after every contact effect.
+void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/, const mechanics::Linearization* lin) {
     find_contacts(state);
     last_ = {};
-    if (own_loads_) own_loads_->clear();
     // The velocity of the spheres in contact only (in sphere order: once per sphere); most
     // spheres touch nothing.
     std::size_t have_velocity = spheres_.size();  // the sphere whose velocity v holds
-    double v[3] = {0.0, 0.0, 0.0};
+    Vec3 v = Vec3::Zero();
     for (const Contact& contact : contacts_) {
         const std::size_t i = contact.sphere;
         const ObstacleContact& c = contact.contact;
-        if (have_velocity != i) spline::evaluate(state.v.data(), spheres_[i].weights, v), have_velocity = i;
+        if (have_velocity != i) v = spline::evaluate(state.v.data(), spheres_[i].weights), have_velocity = i;
         const ContactForce f = contact_force(contact_, c.depth, c.normal, v);
         last_.count += 1;
         last_.max_penetration = std::max(last_.max_penetration, c.depth);
@@ -75,11 +69,9 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* force, co
             loads_.add_force(i, f.force);
             continue;
         }
-        double block[6];
-        SphereLoads::contact_block(c.normal, contact_linearization(f, lin->h), block);
-        loads_.add(i, f.force, c.normal, block, f.stiffness, v);
+        loads_.add(i, f.force, c.normal, SphereLoads::contact_block(c.normal, contact_linearization(f, lin->h)),
+                   f.stiffness, v);
     }
-    if (own_loads_) own_loads_->apply(force, lin);
 }
 
 double EnvironmentForce::potential_energy(const mechanics::State& state) const {
@@ -95,11 +87,11 @@ double EnvironmentForce::max_contacts_per_sphere() const {
     return contacts;
 }
 
-void EnvironmentForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void EnvironmentForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     spheres_.add_weight_products(contact_.stiffness * max_contacts_per_sphere(), bound);
 }
 
-void EnvironmentForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void EnvironmentForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     const double friction = friction_damping_bound(contact_, spheres_.radius());
     spheres_.add_weight_products((contact_.damping + friction) * max_contacts_per_sphere(), bound);
 }

@@ -12,7 +12,6 @@
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
 #include "collision/sphere_loads.h"
-#include "base/memory.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
@@ -20,18 +19,18 @@ namespace enteron::collision {
 
 class EnvironmentForce final : public mechanics::Effect {
 public:
-    // `spheres` are shared with the other contact effects and must outlive this one. With
-    // `shared_loads` (the scene's, on the same spheres; it must outlive this effect), the
-    // contact loads go there and Dynamics applies them; without, the effect applies its own.
+    // `spheres` and `loads` (on the same spheres) are shared with the other contact effects
+    // and must outlive this one. evaluate() adds the contact loads to `loads`, which their
+    // owner clears before the effects and applies after them (Dynamics: SharedLoads).
     EnvironmentForce(CollisionSpheres& spheres, const ContactParameters& contact,
                      const std::vector<Obstacle>& obstacles, const mechanics::State& initial,
-                     std::pmr::memory_resource* memory, SphereLoads* shared_loads = nullptr);
+                     std::pmr::memory_resource* memory, SphereLoads& loads);
 
-    EffectId id() const override { return EffectId::environment; }
+    mechanics::EffectId id() const override { return mechanics::EffectId::environment; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
     double potential_energy(const mechanics::State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override { summary_add(summary); }
 
     // Adds an obstacle (validated; a plane's normal is normalised here). The caller
@@ -57,8 +56,7 @@ private:
     // every sphere touching every obstacle as often as it can, so no step allocates.
     mutable std::pmr::vector<Contact> contacts_;
     mutable uint64_t contacts_for_ = 0;
-    Owned<SphereLoads> own_loads_;  // without shared loads
-    SphereLoads& loads_;            // the shared loads or own_loads_
+    SphereLoads& loads_;  // shared with the other contact effects
     mechanics::ContactSummary last_;
 };
 

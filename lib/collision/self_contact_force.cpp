@@ -9,7 +9,6 @@
 namespace enteron::collision {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // A sphere touches at most this many others at once in a dense pile (a bound for the
 // explicit integrators' stable substep).
 constexpr double kMaxContactsPerSphere = 6.0;
@@ -28,7 +27,7 @@ constexpr double kCellRadii = (2.0 + kNearMargin + kMoveLimit) * 1.001;  // a ha
 
 SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact,
                                    const mechanics::State& initial, std::pmr::memory_resource* memory,
-                                   SphereLoads* shared_loads)
+                                   SphereLoads& loads)
     : spheres_(spheres),
       centers_(3 * spheres_.size(), 0.0, memory),
       positions_(3 * spheres_.size(), 0.0, memory),
@@ -39,8 +38,7 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
       near_pairs_(memory),
       touching_(memory),
       contacts_(memory),
-      own_loads_(shared_loads != nullptr ? nullptr : make_owned<SphereLoads>(memory, spheres_, memory)),
-      loads_(shared_loads != nullptr ? *shared_loads : *own_loads_),
+      loads_(loads),
       contact_(contact),
       neighbour_spheres_(static_cast<std::size_t>(std::ceil(kPi * spheres_.radius() / spheres_.rest_spacing() - 1e-9))) {
     // Room for the densest pile: spheres of radius R whose centres lie within 2.5R of one
@@ -63,11 +61,10 @@ void SelfContactForce::find_near_pairs() const {
         const double limit = kMoveLimit * spheres_.radius();
         moved_.clear();
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
-            const double* p = &positions_[3 * i];
-            const double d[3] = {p[0] - centers_[3 * i], p[1] - centers_[3 * i + 1], p[2] - centers_[3 * i + 2]};
+            const double moved2 = (point_at(positions_.data(), i) - point_at(centers_.data(), i)).squaredNorm();
             // Not within the limit, a non-finite distance included: a sphere filed at a NaN
             // (a blown-up stage, then rolled back) searches again once it is finite.
-            if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= limit * limit)) moved_.push_back(static_cast<uint32_t>(i));
+            if (!(moved2 <= limit * limit)) moved_.push_back(static_cast<uint32_t>(i));
         }
         if (moved_.empty()) return;
         // A sphere's own search visits 27 cells, the search of all only the forward half.
@@ -89,10 +86,7 @@ void SelfContactForce::search_all_near_pairs() const {
     grid_.for_each_candidate_pair([&](std::size_t i, std::size_t j) {
         if (i > j) std::swap(i, j);  // the same orientation of every pair, run to run
         if (neighbours(i, j)) return;
-        const double* a = &positions_[3 * i];
-        const double* b = &positions_[3 * j];
-        const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-        if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < near * near)) return;
+        if (!((point_at(positions_.data(), i) - point_at(positions_.data(), j)).squaredNorm() < near * near)) return;
         if (near_pairs_.size() == near_pairs_.capacity()) {
             near_pairs_complete_ = false;  // never grow during a step (see search_contacts)
             return;
@@ -112,23 +106,22 @@ void SelfContactForce::search_moved_near_pairs() const {
     // Refile the moved spheres where they are now, all of them before any searches: a pair
     // of two moved spheres must find the other at its new place.
     for (const uint32_t i : moved_) {
-        for (int c = 0; c < 3; ++c) centers_[3 * i + c] = positions_[3 * i + c];
-        grid_.move(i, &centers_[3 * i]);
+        point_at(centers_.data(), i) = point_at(positions_.data(), i);
+        grid_.move(i, point_at(centers_.data(), i));
     }
     moved_searches_ += 1;
     const double near = (2.0 + kNearMargin) * spheres_.radius();
     const double near2 = near * near;
     for (const uint32_t i : moved_) {
-        const double* pa = &positions_[3 * i];
+        const Vec3 pa = point_at(positions_.data(), i);
         // The partners first, without a branch per candidate (near or not is a coin toss
         // for a branch predictor), then the pairs.
         std::size_t found = 0;
         grid_.for_each_neighbour(i, [&](std::size_t j) {
-            const double* pb = &positions_[3 * j];
-            const double d[3] = {pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]};
+            const double distance2 = (pa - point_at(positions_.data(), j)).squaredNorm();
             // Near, outside the neighbour window (which holds j == i), and not a pair of two
             // moved spheres, which the first of them lists.
-            const bool listed = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < near2) & !neighbours(i, j) &
+            const bool listed = (distance2 < near2) & !neighbours(i, j) &
                                 !((is_moved_[j] != 0) & (j < i));
             partners_[found] = static_cast<uint32_t>(j);
             found += listed ? 1 : 0;
@@ -147,21 +140,12 @@ template <class Visit>
 void SelfContactForce::search_contacts(Visit&& visit) const {
     const double reach = 2.0 * spheres_.radius();
     const auto contact = [&](std::size_t i, std::size_t j) {
-        const double* a = &positions_[3 * i];
-        const double* b = &positions_[3 * j];
-        const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-        const double distance2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const Vec3 d = point_at(positions_.data(), i) - point_at(positions_.data(), j);
+        const double distance2 = d.squaredNorm();
         if (!(distance2 < reach * reach)) return;
         const double distance = std::sqrt(distance2);
         // Coincident centres have no direction: any will do, the spring still separates them.
-        if (!(distance > 1e-12)) {
-            const double up[3] = {0.0, 0.0, 1.0};
-            visit(i, j, reach - distance, up);
-            return;
-        }
-        const double inverse = 1.0 / distance;
-        const double n[3] = {d[0] * inverse, d[1] * inverse, d[2] * inverse};
-        visit(i, j, reach - distance, n);
+        visit(i, j, reach - distance, distance > 1e-12 ? Vec3(d * (1.0 / distance)) : Vec3::UnitZ());
     };
     if (near_pairs_complete_) {
         // First the listed pairs that touch, without a branch per pair (about one in six
@@ -170,11 +154,11 @@ void SelfContactForce::search_contacts(Visit&& visit) const {
         const double reach2 = reach * reach;
         std::size_t touching = 0;
         for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
-            const double* a = &positions_[3 * near_pairs_[k].first];
-            const double* b = &positions_[3 * near_pairs_[k].second];
-            const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+            const double distance2 =
+                (point_at(positions_.data(), near_pairs_[k].first) - point_at(positions_.data(), near_pairs_[k].second))
+                    .squaredNorm();
             touching_[touching] = static_cast<uint32_t>(k);
-            touching += d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < reach2 ? 1 : 0;
+            touching += distance2 < reach2 ? 1 : 0;
         }
         for (std::size_t t = 0; t < touching; ++t) {
             const auto& [i, j] = near_pairs_[touching_[t]];
@@ -194,17 +178,16 @@ void SelfContactForce::search_contacts(Visit&& visit) const {
 void SelfContactForce::find_contacts(const mechanics::State& state) const {
     spheres_.update(state.q.data());
     if (contacts_for_ == spheres_.placement()) return;
-    for (std::size_t i = 0; i < spheres_.size(); ++i)
-        for (int c = 0; c < 3; ++c) positions_[3 * i + c] = spheres_[i].center[c];
+    for (std::size_t i = 0; i < spheres_.size(); ++i) point_at(positions_.data(), i) = spheres_[i].center;
     find_near_pairs();
     contacts_.clear();
     contacts_complete_ = true;
-    search_contacts([&](std::size_t i, std::size_t j, double depth, const double n[3]) {
+    search_contacts([&](std::size_t i, std::size_t j, double depth, const Vec3& n) {
         if (contacts_.size() == contacts_.capacity()) {
             contacts_complete_ = false;  // never grow during a step (see for_each_contact)
             return;
         }
-        contacts_.push_back(Contact{static_cast<uint32_t>(i), static_cast<uint32_t>(j), depth, {n[0], n[1], n[2]}});
+        contacts_.push_back(Contact{static_cast<uint32_t>(i), static_cast<uint32_t>(j), depth, n});
     });
     contacts_for_ = spheres_.placement();
 }
@@ -218,17 +201,15 @@ void SelfContactForce::for_each_contact(Visit&& visit) const {
     for (const Contact& c : contacts_) visit(c.a, c.b, c.depth, c.normal);
 }
 
-void SelfContactForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
+// The forces reach `force` when the owner of loads_ applies them, after every contact effect.
+void SelfContactForce::evaluate(const mechanics::State& state, double* /*force*/, const mechanics::Linearization* lin) {
     last_ = {};
     find_contacts(state);
-    if (own_loads_) own_loads_->clear();
     const double* velocities = contacts_.empty() && contacts_complete_ ? nullptr : spheres_.velocities(state.v.data());
-    for_each_contact([&](std::size_t i, std::size_t j, double depth, const double n[3]) {
-        const double* va = &velocities[3 * i];
-        const double* vb = &velocities[3 * j];
-        const double relative[3] = {va[0] - vb[0], va[1] - vb[1], va[2] - vb[2]};
-        const ContactForce f = contact_force(contact_, depth, n, relative);
-        const double opposite[3] = {-f.force[0], -f.force[1], -f.force[2]};
+    for_each_contact([&](std::size_t i, std::size_t j, double depth, const Vec3& n) {
+        const Eigen::Map<const Vec3> va = point_at(velocities, i), vb = point_at(velocities, j);
+        const ContactForce f = contact_force(contact_, depth, n, va - vb);
+        const Vec3 opposite = -f.force;
         last_.count += 1;
         last_.max_penetration = std::max(last_.max_penetration, depth);
         if (lin == nullptr) {
@@ -237,29 +218,27 @@ void SelfContactForce::evaluate(const mechanics::State& state, double* force, co
             return;
         }
         // Each sphere's own share of the linearisation; the cross terms stay explicit.
-        double block[6];
-        SphereLoads::contact_block(n, contact_linearization(f, lin->h), block);
+        const SphereLoads::LowerTriangle block = SphereLoads::contact_block(n, contact_linearization(f, lin->h));
         loads_.add(i, f.force, n, block, f.stiffness, va);
         loads_.add(j, opposite, n, block, f.stiffness, vb);
     });
-    if (own_loads_) own_loads_->apply(force, lin);
 }
 
 double SelfContactForce::potential_energy(const mechanics::State& state) const {
     find_contacts(state);
     double energy = 0.0;
-    for_each_contact([&](std::size_t, std::size_t, double depth, const double*) {
+    for_each_contact([&](std::size_t, std::size_t, double depth, const Vec3&) {
         energy += 0.5 * contact_.stiffness * depth * depth;
     });
     return energy;
 }
 
-void SelfContactForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void SelfContactForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // A pair's stiffness k (w_a - w_b)(w_a - w_b)^T is at most 2k (w_a w_a^T + w_b w_b^T).
     spheres_.add_weight_products(2.0 * contact_.stiffness * kMaxContactsPerSphere, bound);
 }
 
-void SelfContactForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void SelfContactForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     const double friction = friction_damping_bound(contact_, spheres_.radius());
     spheres_.add_weight_products(2.0 * (contact_.damping + friction) * kMaxContactsPerSphere, bound);
 }

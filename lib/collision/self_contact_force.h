@@ -16,11 +16,11 @@
 #include <utility>
 #include <vector>
 
+#include "base/geometry.h"
 #include "collision/collision_spheres.h"
 #include "collision/contact_model.h"
 #include "collision/spatial_hash.h"
 #include "collision/sphere_loads.h"
-#include "base/memory.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
@@ -28,17 +28,17 @@ namespace enteron::collision {
 
 class SelfContactForce final : public mechanics::Effect {
 public:
-    // `spheres` are shared with the other contact effects and must outlive this one. With
-    // `shared_loads` (the scene's, on the same spheres; it must outlive this effect), the
-    // contact loads go there and Dynamics applies them; without, the effect applies its own.
+    // `spheres` and `loads` (on the same spheres) are shared with the other contact effects
+    // and must outlive this one. evaluate() adds the contact loads to `loads`, which their
+    // owner clears before the effects and applies after them (Dynamics: SharedLoads).
     SelfContactForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
-                     std::pmr::memory_resource* memory, SphereLoads* shared_loads = nullptr);
+                     std::pmr::memory_resource* memory, SphereLoads& loads);
 
-    EffectId id() const override { return EffectId::self_collision; }
+    mechanics::EffectId id() const override { return mechanics::EffectId::self_collision; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
     double potential_energy(const mechanics::State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
 
     // How many times the grid was searched: for every sphere (the list of near pairs
@@ -51,7 +51,7 @@ private:
     struct Contact {
         uint32_t a, b;
         double depth;
-        double normal[3];
+        Vec3 normal;
     };
 
     // Makes sure the list holds every pair of the placed spheres (outside the neighbour
@@ -93,8 +93,7 @@ private:
     mutable std::pmr::vector<Contact> contacts_;
     mutable uint64_t contacts_for_ = 0;
     mutable bool contacts_complete_ = false;
-    Owned<SphereLoads> own_loads_;  // without shared loads
-    SphereLoads& loads_;            // the shared loads or own_loads_
+    SphereLoads& loads_;  // shared with the other contact effects
     ContactParameters contact_;
     std::size_t neighbour_spheres_;  // fewer spheres apart than this (pi R at rest): neighbours, never a contact
     bool neighbours(std::size_t i, std::size_t j) const {

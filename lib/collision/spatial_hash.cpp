@@ -49,8 +49,8 @@ void SpatialHash::build(const double* points, std::size_t count, std::size_t str
     }
 }
 
-void SpatialHash::move(std::size_t i, const double p[3]) {
-    const std::array<int64_t, 3> cell = cell_of(p);
+void SpatialHash::move(std::size_t i, const Vec3& p) {
+    const std::array<int64_t, 3> cell = cell_of(p.data());
     if (cell == point_cell_[i]) return;
     // Unlink from the old bucket (its list is a few points long); a point that was never
     // filed is only linked.

@@ -11,6 +11,8 @@
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
+
 namespace enteron::collision {
 
 class SpatialHash {
@@ -22,7 +24,7 @@ public:
     void build(const double* points, std::size_t count, std::size_t stride);
 
     // Refiles point i (already filed) at position p.
-    void move(std::size_t i, const double p[3]);
+    void move(std::size_t i, const Vec3& p);
 
     // Calls visit(i, j) once for every unordered pair of points in the same or
     // neighbouring cells (a superset of the pairs closer than a cell); i and j in any order.

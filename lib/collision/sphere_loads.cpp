@@ -18,17 +18,14 @@ void SphereLoads::apply(double* force, const mechanics::Linearization* lin) cons
     mechanics::SegmentBlock block;
     constexpr std::size_t kNone = ~std::size_t{0};
     std::size_t first = kNone;
-    // Per control point of the segment: the force, then H v (zero without a linearisation).
-    double sums[4][6] = {};
+    // Per control point of the segment (a column each): the force, then H v (zero without a
+    // linearisation).
+    Eigen::Matrix<double, 6, 4> sums;
     const auto flush = [&] {
         if (first == kNone) return;
-        double* f = force + 3 * first;
-        for (int k = 0; k < 4; ++k)
-            for (int c = 0; c < 3; ++c) f[3 * k + c] += sums[k][c];
+        Eigen::Map<Eigen::Matrix<double, 3, 4>>(force + 3 * first) += sums.topRows<3>();
         if (lin == nullptr) return;
-        double* hv = lin->stiffness_times_velocity + 3 * first;
-        for (int k = 0; k < 4; ++k)
-            for (int c = 0; c < 3; ++c) hv[3 * k + c] += sums[k][3 + c];
+        Eigen::Map<Eigen::Matrix<double, 3, 4>>(lin->stiffness_times_velocity + 3 * first) += sums.bottomRows<3>();
         block.add_to(*lin->system);
     };
     for (std::size_t i = 0; i < touched_.size(); ++i) {
@@ -38,13 +35,11 @@ void SphereLoads::apply(double* force, const mechanics::Linearization* lin) cons
         if (weights.first != first) {
             flush();
             first = weights.first;
-            for (auto& sum : sums)
-                for (double& v : sum) v = 0.0;
+            sums.setZero();
             if (lin != nullptr) block.reset(first);
         }
-        const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
-        for (int k = 0; k < 4; ++k)
-            for (int e = 0; e < 6; ++e) sums[k][e] += w[k] * load.force_and_hv[e];
+        const Eigen::Map<const Vec6> force_and_hv(load.force_and_hv);
+        for (int k = 0; k < 4; ++k) sums.col(k) += weights.w[k] * force_and_hv;
         if (lin != nullptr) block.add(weights, load.block);
     }
     flush();

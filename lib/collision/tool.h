@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdint>
 
+#include "base/geometry.h"
+
 namespace enteron::collision {
 
 // The defaults of ent_tool_desc and of a JSON tool.
@@ -21,8 +23,8 @@ struct ToolSettings {
 };
 
 struct ToolPose {
-    std::array<double, 3> position{};                       // tip, m
-    std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // w x y z, unit
+    Vec3 position = Vec3::Zero();                           // tip, m
+    std::array<double, 4> orientation{1.0, 0.0, 0.0, 0.0};  // w x y z, unit (the ABI's order)
 };
 
 struct ToolConfig {
@@ -31,8 +33,8 @@ struct ToolConfig {
 };
 
 struct ToolWrench {
-    double force[3] = {0.0, 0.0, 0.0};   // N, on the tool
-    double torque[3] = {0.0, 0.0, 0.0};  // N m, on the tool about its tip
+    Vec3 force = Vec3::Zero();   // N, on the tool
+    Vec3 torque = Vec3::Zero();  // N m, on the tool about its tip
 };
 
 // What a tool reports after each step: published in the scene's snapshot, so that any
@@ -44,9 +46,9 @@ struct ToolOutput {
 };
 
 // The unit local +z axis of a unit quaternion (w x y z) in world coordinates.
-inline std::array<double, 3> quaternion_z_axis(const std::array<double, 4>& q) {
+inline Vec3 quaternion_z_axis(const std::array<double, 4>& q) {
     const double w = q[0], x = q[1], y = q[2], z = q[3];
-    return {2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y)};
+    return Vec3(2.0 * (x * z + w * y), 2.0 * (y * z - w * x), 1.0 - 2.0 * (x * x + y * y));
 }
 
 }  // namespace enteron::collision

@@ -19,6 +19,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
 #include "collision/collision_spheres.h"
 #include "collision/contact_model.h"
 #include "collision/tool.h"
@@ -35,11 +36,11 @@ public:
     ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
                ToolChannels& channels, std::pmr::memory_resource* memory);
 
-    EffectId id() const override { return EffectId::tools; }
+    mechanics::EffectId id() const override { return mechanics::EffectId::tools; }
     void evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) override;
     double potential_energy(const mechanics::State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
     double external_work_bound() const override;
 
@@ -73,13 +74,16 @@ private:
     struct Hit {
         std::size_t sphere;
         ContactForce force;  // on the bowel
-        double normal[3];
+        Vec3 normal;
         double depth;
-        double point[3];  // contact point on the tool's surface
+        Vec3 point;  // contact point on the tool's surface
     };
-    // Tip, back end of the shaft, and their velocities at time t.
-    void segment_at(const Tool& tool, double t, double tip[3], double tail[3], double tip_v[3],
-                    double tail_v[3]) const;
+    // A tool's shaft at one instant: its tip and back end, and their velocities.
+    struct Segment {
+        Vec3 tip, tail;                    // m
+        Vec3 tip_velocity, tail_velocity;  // m/s
+    };
+    Segment segment_at(const Tool& tool, double t) const;
     double fraction_of_step(double t) const;
     // Grasps the axis point nearest the tip within reach, if any.
     void grasp(Tool& tool, const mechanics::State& state);

@@ -12,11 +12,11 @@ void AxialBlocks::add_to(SystemMatrix& system) const {
         // A node no law reached (or whose tangent vanished) adds nothing.
         const bool live[2] = {has_tangent(first), has_tangent(first + 1)};
         if (!live[0] && !live[1]) continue;
-        static constexpr double kNone[3] = {0.0, 0.0, 0.0};
+        const Vec3 none = Vec3::Zero();
         const Block& b0 = blocks_[first];
         const Block& b1 = blocks_[first + 1];
-        add_axial_block_pair(system, nodes_[first].weights, live[0] ? b0.u : kNone, live[0] ? b0.a : 0.0,
-                             live[0] ? b0.b : 0.0, nodes_[first + 1].weights, live[1] ? b1.u : kNone,
+        add_axial_block_pair(system, nodes_[first].weights, live[0] ? b0.u : none, live[0] ? b0.a : 0.0,
+                             live[0] ? b0.b : 0.0, nodes_[first + 1].weights, live[1] ? b1.u : none,
                              live[1] ? b1.a : 0.0, live[1] ? b1.b : 0.0);
     }
 }

@@ -32,10 +32,10 @@ public:
 
     // Adds a u u^T + b I at node k, u its unit tangent: the first law to add at a node
     // sets it, the others share it (the same axis, the same weights) and u is not read.
-    void add(std::size_t k, const double u[3], double a, double b) {
+    void add(std::size_t k, const Vec3& u, double a, double b) {
         Block& block = blocks_[k];
         if (block.round != round_) {
-            for (int c = 0; c < 3; ++c) block.u[c] = u[c];
+            block.u = u;
             block.a = block.b = 0.0;
             block.round = round_;
         }
@@ -48,10 +48,10 @@ public:
 
 private:
     struct Block {
-        double u[3];
-        double a;
-        double b;
-        uint64_t round;  // of the last add; the block counts only in the current round
+        Vec3 u = Vec3::Zero();
+        double a = 0.0;
+        double b = 0.0;
+        uint64_t round = 0;  // of the last add; the block counts only in the current round
     };
     std::pmr::vector<spline::QuadratureNode> nodes_;
     std::pmr::vector<Block> blocks_;

@@ -33,7 +33,7 @@ double BendForce::potential_energy(const State& state) const {
     return 0.5 * energy;
 }
 
-void BendForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void BendForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     bound.add_scaled(stiffness_, 1.0);
 }
 

@@ -22,10 +22,10 @@ public:
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     void add_constant_linearization(double h, SystemMatrix& system) const override;
     double potential_energy(const State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
 
 private:
-    spline::ScalarBandMatrix stiffness_;  // K_b
+    numerics::ScalarBandMatrix stiffness_;  // K_b
     PerCoordinateMatrix stiffness_products_;  // K_b again, for K_b q and K_b v
     mutable std::pmr::vector<double> scratch_;  // K_b q for the energy
 };

@@ -46,26 +46,23 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
     const std::size_t count = nodes_.size();
     for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
-        double d[2][3], length2[2], inv2[2], f[2][3] = {};
+        Vec3 d[2];  // dP/dt at the two nodes
+        Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()};
+        double length2[2], inv2[2];
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
-            spline::evaluate(state.q.data(), node[m].weights, d[m]);
-            length2[m] = d[m][0] * d[m][0] + d[m][1] * d[m][1] + d[m][2] * d[m][2];
+            d[m] = spline::evaluate(state.q.data(), node[m].weights);
+            length2[m] = d[m].squaredNorm();
             inv2[m] = 1.0 / std::max(length2[m], tiny2);
         }
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
             if (!(length2[m] > tiny2)) continue;  // no direction: the node adds nothing
-            double rate[3];
-            spline::evaluate(state.v.data(), node[m].weights, rate);
-            // node.weight c (u . rate) / l0 along u, as a multiple of d
-            const double scale =
-                node[m].weight * c_per_l0 * (d[m][0] * rate[0] + d[m][1] * rate[1] + d[m][2] * rate[2]) * inv2[m];
-            for (int k = 0; k < 3; ++k) f[m][k] = -scale * d[m][k];
+            const Vec3 d_rate = spline::evaluate(state.v.data(), node[m].weights);  // d(dP/dt)/dt
+            // node.weight c (u . d_rate) / l0 along u, as a multiple of d
+            const double scale = node[m].weight * c_per_l0 * d[m].dot(d_rate) * inv2[m];
+            f[m] = -scale * d[m];
             if (lin == nullptr) continue;
-            double u[3] = {0.0, 0.0, 0.0};
-            if (blocks == nullptr || !blocks->has_tangent(first + m)) {
-                const double inverse_length = 1.0 / std::sqrt(length2[m]);
-                for (int k = 0; k < 3; ++k) u[k] = d[m][k] * inverse_length;
-            }
+            Vec3 u = Vec3::Zero();
+            if (blocks == nullptr || !blocks->has_tangent(first + m)) u = d[m] * (1.0 / std::sqrt(length2[m]));
             const double a = lin->h * node[m].weight * c_per_l0;
             if (blocks != nullptr)
                 blocks->add(first + m, u, a, 0.0);
@@ -80,7 +77,7 @@ void DampingForce::add_constant_linearization(double h, SystemMatrix& system) co
     add_per_coordinate(constant_, h, system);
 }
 
-void DampingForce::add_damping_bound(spline::ScalarBandMatrix& bound) const {
+void DampingForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     bound.add_scaled(constant_, 1.0);
     spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
                             coefficients_.stretch / model_.rest_segment_length, bound);

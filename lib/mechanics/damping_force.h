@@ -30,12 +30,12 @@ public:
     EffectId id() const override { return EffectId::damping; }
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     void add_constant_linearization(double h, SystemMatrix& system) const override;
-    void add_damping_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
 
 private:
     AxisModel model_;
     DampingCoefficients coefficients_;
-    spline::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
+    numerics::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
     PerCoordinateMatrix constant_products_;  // the same, for its product with v
     std::pmr::vector<spline::QuadratureNode> nodes_;
 };

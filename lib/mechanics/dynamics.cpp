@@ -61,7 +61,7 @@ void Dynamics::finalize() {
     if (!mass_factor_.factor()) throw Error(ErrorCode::internal, "the mass matrix is not positive definite");
 
     const std::size_t n = model_.control_points;
-    spline::ScalarBandMatrix stiffness(memory_), damping(memory_);
+    numerics::ScalarBandMatrix stiffness(memory_), damping(memory_);
     stiffness.resize(n);
     damping.resize(n);
     for (const Owned<Effect>& effect : effects_) {
@@ -77,7 +77,7 @@ void Dynamics::finalize() {
     constant_system_h_ = -1.0;
 }
 
-double Dynamics::largest_eigenvalue(const spline::ScalarBandMatrix& bound) const {
+double Dynamics::largest_eigenvalue(const numerics::ScalarBandMatrix& bound) const {
     // Power iteration on M^-1 B, started from the most oscillating vector (the top modes of
     // a chain alternate in sign), with the Rayleigh quotient x^T B x / x^T M x as estimate.
     const std::size_t n = model_.control_points;

@@ -96,7 +96,7 @@ public:
     double explicit_substep_limit(double stability_interval) const;
 
 private:
-    double largest_eigenvalue(const spline::ScalarBandMatrix& bound) const;
+    double largest_eigenvalue(const numerics::ScalarBandMatrix& bound) const;
 
     AxisModel model_;
     std::pmr::memory_resource* memory_;
@@ -105,9 +105,9 @@ private:
     std::pmr::vector<std::pair<SharedLoads*, EffectId>> shared_loads_;
     std::array<bool, kEffectCount> enabled_{};
     std::array<EffectCounters, kEffectCount> counters_{};
-    spline::ScalarBandMatrix mass_;          // M per coordinate, unfactored
+    numerics::ScalarBandMatrix mass_;          // M per coordinate, unfactored
     PerCoordinateMatrix mass_products_;      // M again, for M v
-    spline::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
+    numerics::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
     SystemMatrix constant_system_;
     double constant_system_h_ = -1.0;
     double max_frequency_ = 0.0;      // rad/s, bound on sqrt(eig(M^-1 K))

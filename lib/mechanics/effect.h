@@ -65,8 +65,8 @@ public:
 
     // Upper bounds (per coordinate, n x n) of the stiffness and damping this effect can
     // reach; the explicit integrators' stable substep follows from them.
-    virtual void add_stiffness_bound(spline::ScalarBandMatrix& /*bound*/) const {}
-    virtual void add_damping_bound(spline::ScalarBandMatrix& /*bound*/) const {}
+    virtual void add_stiffness_bound(numerics::ScalarBandMatrix& /*bound*/) const {}
+    virtual void add_damping_bound(numerics::ScalarBandMatrix& /*bound*/) const {}
 
     // Adds the contacts of the last evaluation (effects that make contacts only).
     virtual void add_contacts(ContactSummary& /*summary*/) const {}

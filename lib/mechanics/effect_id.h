@@ -3,7 +3,7 @@
 
 #include <cstddef>
 
-namespace enteron {
+namespace enteron::mechanics {
 
 enum class EffectId : int {
     stretch = 0,
@@ -27,4 +27,4 @@ inline const char* effect_name(EffectId id) {
     return names[static_cast<std::size_t>(id)];
 }
 
-}  // namespace enteron
+}  // namespace enteron::mechanics

@@ -2,11 +2,11 @@
 
 namespace enteron::mechanics {
 
-GravityForce::GravityForce(const AxisModel& model, const std::array<double, 3>& gravity,
+GravityForce::GravityForce(const AxisModel& model, const Vec3& gravity,
                            std::pmr::memory_resource* memory)
     : gravity_(gravity), lumped_mass_(memory) {
     const std::size_t n = model.control_points;
-    spline::ScalarBandMatrix mass(memory);
+    numerics::ScalarBandMatrix mass(memory);
     mass.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value,
                             model.linear_density * model.rest_segment_length, mass);
@@ -17,7 +17,7 @@ GravityForce::GravityForce(const AxisModel& model, const std::array<double, 3>& 
 
 void GravityForce::evaluate(const State& /*state*/, double* force, const Linearization* /*lin*/) {
     for (std::size_t j = 0; j < lumped_mass_.size(); ++j)
-        for (int c = 0; c < 3; ++c) force[3 * j + c] += lumped_mass_[j] * gravity_[c];
+        point_at(force, j) += lumped_mass_[j] * gravity_;
 }
 
 double GravityForce::potential_energy(const State& state) const {

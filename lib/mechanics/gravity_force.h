@@ -2,10 +2,10 @@
 // the mass matrix (the basis weights sum to one), so a free axis falls exactly with g.
 #pragma once
 
-#include <array>
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
@@ -13,7 +13,7 @@ namespace enteron::mechanics {
 
 class GravityForce final : public Effect {
 public:
-    GravityForce(const AxisModel& model, const std::array<double, 3>& gravity,
+    GravityForce(const AxisModel& model, const Vec3& gravity,
                  std::pmr::memory_resource* memory);
 
     EffectId id() const override { return EffectId::gravity; }
@@ -22,7 +22,7 @@ public:
     double potential_energy(const State& state) const override;
 
 private:
-    std::array<double, 3> gravity_;
+    Vec3 gravity_;  // m/s^2
     std::pmr::vector<double> lumped_mass_;  // m_j, kg
 };
 

@@ -8,18 +8,18 @@
 // positive semi-definite; a slack spring adds nothing.
 #pragma once
 
-#include <array>
 #include <memory_resource>
 #include <vector>
 
+#include "base/geometry.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 
 namespace enteron::mechanics {
 
 struct MesenteryParameters {
-    std::array<double, 3> root_start{};  // m
-    std::array<double, 3> root_end{};    // m
+    Vec3 root_start = Vec3::Zero();  // m
+    Vec3 root_end = Vec3::Zero();    // m
     std::size_t attachments = 0;
     double stiffness = 0.0;    // N/m per spring
     double rest_length = 0.0;  // m; 0: each spring's length in `initial`
@@ -33,16 +33,16 @@ public:
     EffectId id() const override { return EffectId::mesentery; }
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     double potential_energy(const State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
 
 private:
     struct Spring {
         spline::SegmentWeights weights;  // of the attachment point on the axis
-        std::array<double, 3> root;      // m
+        Vec3 root;                       // m
         double rest_length;              // m
     };
-    // Vector from the root to the attachment point, and its length.
-    double stretch_vector(const State& state, const Spring& spring, double d[3]) const;
+    // The vector from the root to the attachment point.
+    static Vec3 stretch_vector(const State& state, const Spring& spring);
 
     double stiffness_;
     std::pmr::vector<Spring> springs_;

@@ -6,7 +6,7 @@ namespace enteron::mechanics {
 
 namespace {
 
-constexpr int kP = spline::ScalarBandMatrix::kHalfBandwidth;
+constexpr int kP = numerics::ScalarBandMatrix::kHalfBandwidth;
 
 // The rows away from the ends: one loop over k with the seven diagonals unrolled. The
 // pointers are restrict (the outputs never overlap the inputs), so that it vectorises with
@@ -80,7 +80,7 @@ ENTERON_HOT_KERNEL void product_two(const double* diagonals, std::size_t m, cons
 
 }  // namespace
 
-void PerCoordinateMatrix::assign(const spline::ScalarBandMatrix& b) {
+void PerCoordinateMatrix::assign(const numerics::ScalarBandMatrix& b) {
     const std::size_t n = b.size();
     coordinates_ = 3 * n;
     diagonals_.assign(kDiagonals * coordinates_, 0.0);

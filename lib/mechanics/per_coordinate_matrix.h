@@ -20,7 +20,7 @@ public:
     explicit PerCoordinateMatrix(std::pmr::memory_resource* memory) : diagonals_(memory) {}
 
     // Takes the entries of b (allocates; call when the scene is made).
-    void assign(const spline::ScalarBandMatrix& b);
+    void assign(const numerics::ScalarBandMatrix& b);
 
     std::size_t coordinates() const { return coordinates_; }
 
@@ -35,7 +35,7 @@ public:
                       double* y1) const;
 
 private:
-    static constexpr int kHalfBandwidth = spline::ScalarBandMatrix::kHalfBandwidth;
+    static constexpr int kHalfBandwidth = numerics::ScalarBandMatrix::kHalfBandwidth;
     static constexpr int kDiagonals = 2 * kHalfBandwidth + 1;
 
     std::size_t coordinates_ = 0;  // 3n

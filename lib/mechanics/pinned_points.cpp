@@ -13,7 +13,7 @@ void PinnedPoints::evaluate(const State& /*state*/, double* force, const Lineari
     }
 }
 
-void PinnedPoints::constrain(spline::ScalarBandMatrix& per_point) const {
+void PinnedPoints::constrain(numerics::ScalarBandMatrix& per_point) const {
     for (uint32_t p : points_) per_point.make_identity_row(p);
 }
 

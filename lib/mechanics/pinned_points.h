@@ -24,7 +24,7 @@ public:
     void evaluate(const State& state, double* force, const Linearization* lin) override;
 
     // Makes the pinned rows of a per-point matrix (the mass matrix) identity rows.
-    void constrain(spline::ScalarBandMatrix& per_point) const;
+    void constrain(numerics::ScalarBandMatrix& per_point) const;
     // Makes the pinned rows of the coordinate system identity rows.
     void constrain(SystemMatrix& system) const;
     // Zeroes the pinned entries of a 3n vector.

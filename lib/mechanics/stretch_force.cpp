@@ -9,11 +9,6 @@ namespace enteron::mechanics {
 
 namespace {
 constexpr std::size_t kNodesPerSegment = 2;  // see stretch_force.h
-
-// dP/dt at a node: sum_k w_k q_{first+k}.
-inline void tangent(const double* points, const spline::SegmentWeights& sw, double d[3]) {
-    spline::evaluate(points, sw, d);
-}
 }  // namespace
 
 StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
@@ -30,7 +25,7 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     const double ea = stiffness_;
     // A tangent shorter than this has no direction: the node adds nothing (degenerate shape).
     const double tiny = 1e-12 * l0;
-    const double h2 = lin != nullptr ? lin->h * lin->h : 0.0;
+    const double h_squared = lin != nullptr ? lin->h * lin->h : 0.0;
     // The nodes of one segment share their four control points: their forces are added
     // together (one read and write per coordinate). The square roots and divisions of both
     // nodes come before any store, so they overlap. The stiffness blocks go to the axial
@@ -42,28 +37,27 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     const std::size_t count = nodes_.size();
     for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
-        double d[2][3], len[2], inv[2];
+        Vec3 d[2];  // dP/dt at the two nodes
+        double len[2], inv[2];
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
-            tangent(q, node[m].weights, d[m]);
-            len[m] = std::sqrt(d[m][0] * d[m][0] + d[m][1] * d[m][1] + d[m][2] * d[m][2]);
+            d[m] = spline::evaluate(q, node[m].weights);
+            len[m] = d[m].norm();
             inv[m] = 1.0 / std::max(len[m], tiny);
         }
-        double f[2][3] = {}, hr[2][3] = {};
+        Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()}, hr[2] = {Vec3::Zero(), Vec3::Zero()};
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
             if (!(len[m] > tiny)) continue;  // no direction: the node adds nothing
-            double u[3];
-            for (int c = 0; c < 3; ++c) u[c] = d[m][c] * inv[m];
+            const Vec3 u = d[m] * inv[m];
             const double strain = len[m] * inverse_l0 - 1.0;
             const double tension = ea * strain;  // N
             const double scale = node[m].weight * tension;
-            for (int c = 0; c < 3; ++c) f[m][c] = -scale * u[c];
+            f[m] = -scale * u;
             if (lin != nullptr) {
                 const double transverse = ea * std::max(strain, 0.0) * inv[m];
                 const double axial = ea * inverse_l0 - transverse;
-                double rate[3];
-                tangent(state.v.data(), node[m].weights, rate);
-                axial_times(u, node[m].weight * axial, node[m].weight * transverse, rate, hr[m]);
-                const double a = h2 * node[m].weight * axial, b = h2 * node[m].weight * transverse;
+                const Vec3 d_rate = spline::evaluate(state.v.data(), node[m].weights);  // d(dP/dt)/dt
+                hr[m] = axial_times(u, node[m].weight * axial, node[m].weight * transverse, d_rate);
+                const double a = h_squared * node[m].weight * axial, b = h_squared * node[m].weight * transverse;
                 if (blocks != nullptr)
                     blocks->add(first + m, u, a, b);
                 else
@@ -80,15 +74,13 @@ double StretchForce::potential_energy(const State& state) const {
     const double l0 = model_.rest_segment_length;
     double energy = 0.0;
     for (const spline::QuadratureNode& node : nodes_) {
-        double d[3];
-        tangent(state.q.data(), node.weights, d);
-        const double strain = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / l0 - 1.0;
+        const double strain = spline::evaluate(state.q.data(), node.weights).norm() / l0 - 1.0;
         energy += node.weight * 0.5 * stiffness_ * strain * strain * l0;
     }
     return energy;
 }
 
-void StretchForce::add_stiffness_bound(spline::ScalarBandMatrix& bound) const {
+void StretchForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // At a node H <= EA/l0 I: the transverse factor eps/|P'| = eps / (l0 (1 + eps)) stays
     // below 1/l0. Per coordinate that is EA/l0 times the first-derivative Gram matrix.
     spline::add_gram_matrix(model_.control_points, spline::Derivative::first,

@@ -25,7 +25,7 @@ public:
     EffectId id() const override { return EffectId::stretch; }
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     double potential_energy(const State& state) const override;
-    void add_stiffness_bound(spline::ScalarBandMatrix& bound) const override;
+    void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
 
 private:
     AxisModel model_;

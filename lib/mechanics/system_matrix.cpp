@@ -10,11 +10,11 @@ namespace {
 // four control points, in one pass over the band (fixed trip counts, unrolled).
 template <int Count>
 void add_axial_blocks(SystemMatrix& system, std::size_t first, const spline::SegmentWeights* const weights[],
-                      const double* const u[], const double a[], const double b[]) {
+                      const Vec3* const u[], const double a[], const double b[]) {
     double g[Count][12];
     for (int m = 0; m < Count; ++m)
         for (int k = 0; k < 4; ++k)
-            for (int c = 0; c < 3; ++c) g[m][3 * k + c] = weights[m]->w[k] * u[m][c];
+            for (int c = 0; c < 3; ++c) g[m][3 * k + c] = weights[m]->w[k] * (*u[m])[c];
     // Entry (r, c) of the block, c <= r, is 11 r + c after its first diagonal entry: band
     // rows are 12 long and each starts one column later than the one above.
     constexpr int kStep = static_cast<int>(SystemMatrix::kRowStride) - 1;
@@ -50,17 +50,18 @@ void add_axial_blocks(SystemMatrix& system, std::size_t first, const spline::Seg
 
 }  // namespace
 
-ENTERON_HOT_KERNEL void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const double u[3],
-                     double a, double b, double scale) {
+ENTERON_HOT_KERNEL void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const Vec3& u,
+                                        double a, double b, double scale) {
     const spline::SegmentWeights* const w[1] = {&weights};
-    const double* const directions[1] = {u};
+    const Vec3* const directions[1] = {&u};
     const double sa[1] = {scale * a}, sb[1] = {scale * b};
     add_axial_blocks<1>(system, weights.first, w, directions, sa, sb);
 }
 
-ENTERON_HOT_KERNEL void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0, const double u0[3],
-                          double a0, double b0, const spline::SegmentWeights& weights1, const double u1[3],
-                          double a1, double b1) {
+ENTERON_HOT_KERNEL void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0,
+                                             const Vec3& u0, double a0, double b0,
+                                             const spline::SegmentWeights& weights1, const Vec3& u1, double a1,
+                                             double b1) {
     // The same as add_axial_blocks<2>, written out: GCC pairs the columns of this form
     // better (about 15 % faster).
     double g0[12], g1[12];
@@ -134,7 +135,7 @@ ENTERON_HOT_KERNEL void SegmentBlock::add_to(SystemMatrix& system) const {
 
 namespace enteron::mechanics {
 
-void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemMatrix& system) {
+void add_per_coordinate(const numerics::ScalarBandMatrix& b, double scale, SystemMatrix& system) {
     for (std::size_t i = 0; i < b.size(); ++i) {
         const std::size_t j0 = i >= 3 ? i - 3 : 0;
         for (std::size_t j = j0; j <= i; ++j) {

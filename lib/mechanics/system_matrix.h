@@ -5,6 +5,7 @@
 
 #include <cstddef>
 
+#include "base/geometry.h"
 #include "numerics/banded_matrix.h"
 #include "spline/catmull_rom.h"
 #include "spline/gram_matrix.h"
@@ -19,17 +20,16 @@ using SystemMatrix = numerics::BandedSpdMatrix<11>;
 // The 12 coordinates of the four points are contiguous, so each row of the block is a
 // contiguous run of the band: a rank-one update of g = w (x) u plus b on the diagonal
 // coordinates.
-void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const double u[3],
-                     double a, double b, double scale);
+void add_axial_block(SystemMatrix& system, const spline::SegmentWeights& weights, const Vec3& u, double a, double b,
+                     double scale);
 
 // The axial blocks of two spline points on the same four control points (the two Gauss
 // nodes of a segment): the sum of two add_axial_block calls with a = a_k * scale and
 // b = b_k * scale already multiplied out, in one pass over the band. A point that adds
 // nothing (a degenerate direction) passes a = b = 0. Only the product a u u^T matters, so
 // with b = 0 u need not be a unit vector (a d d^T / |d|^2 without the square root).
-void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0, const double u0[3],
-                          double a0, double b0, const spline::SegmentWeights& weights1, const double u1[3],
-                          double a1, double b1);
+void add_axial_block_pair(SystemMatrix& system, const spline::SegmentWeights& weights0, const Vec3& u0, double a0,
+                          double b0, const spline::SegmentWeights& weights1, const Vec3& u1, double a1, double b1);
 
 // The blocks of several spline points on the same four control points, each with its own
 // symmetric 3 x 3 matrix S_m (a point that sums several contacts): collects
@@ -49,17 +49,14 @@ private:
     double sums_[10][6] = {};  // point pairs (j, k <= j) by sums_[j (j + 1) / 2 + k]
 };
 
-// out = a (u . x) u + b x: H x for H = a u u^T + b I.
-inline void axial_times(const double u[3], double a, double b, const double x[3], double out[3]) {
-    const double along = a * (u[0] * x[0] + u[1] * x[1] + u[2] * x[2]);
-    for (int c = 0; c < 3; ++c) out[c] = along * u[c] + b * x[c];
-}
+// H x = a (u . x) u + b x for H = a u u^T + b I.
+inline Vec3 axial_times(const Vec3& u, double a, double b, const Vec3& x) { return (a * u.dot(x)) * u + b * x; }
 
 // out[first + k] += w_k f for the four points of a spline point: a force f at that point
-// as generalised forces (3n vector).
-// The weights and f are copied first: the compiler may then assume that no store to `out`
-// changes them (it reloaded both after every store, a third of a contact's cost).
-inline void add_point_force(const spline::SegmentWeights& weights, const double f[3], double* out) {
+// as generalised forces (3n vector). A tuned kernel, raw loops: the weights and f are
+// copied first, so the compiler may assume that no store to `out` changes them (it
+// reloaded both after every store, a third of a contact's cost).
+inline void add_point_force(const spline::SegmentWeights& weights, const Vec3& f, double* out) {
     const double w[4] = {weights.w[0], weights.w[1], weights.w[2], weights.w[3]};
     const double g[3] = {f[0], f[1], f[2]};
     double* o = out + 3 * weights.first;
@@ -69,8 +66,8 @@ inline void add_point_force(const spline::SegmentWeights& weights, const double 
 
 // add_point_force for two spline points on the same four control points (the two Gauss
 // nodes of a segment): each coordinate of `out` is read and written once.
-inline void add_point_force_pair(const spline::SegmentWeights& weights0, const double f0[3],
-                                 const spline::SegmentWeights& weights1, const double f1[3], double* out) {
+inline void add_point_force_pair(const spline::SegmentWeights& weights0, const Vec3& f0,
+                                 const spline::SegmentWeights& weights1, const Vec3& f1, double* out) {
     const double w0[4] = {weights0.w[0], weights0.w[1], weights0.w[2], weights0.w[3]};
     const double w1[4] = {weights1.w[0], weights1.w[1], weights1.w[2], weights1.w[3]};
     const double g0[3] = {f0[0], f0[1], f0[2]}, g1[3] = {f1[0], f1[1], f1[2]};
@@ -85,6 +82,6 @@ namespace enteron::mechanics {
 
 // Adds scale * (B (x) I3) to the system: a per-coordinate matrix B (n x n, the same for
 // x, y and z) such as the mass, bending or drag matrix.
-void add_per_coordinate(const spline::ScalarBandMatrix& b, double scale, SystemMatrix& system);
+void add_per_coordinate(const numerics::ScalarBandMatrix& b, double scale, SystemMatrix& system);
 
 }  // namespace enteron::mechanics

@@ -342,4 +342,8 @@ private:
     bool factored_ = false;
 };
 
+// The per-coordinate matrices of the spline, one row per control point and the same for x,
+// y and z (mass, bending, drag, the stability bounds): a segment couples four points.
+using ScalarBandMatrix = BandedSpdMatrix<3>;
+
 }  // namespace enteron::numerics

@@ -104,7 +104,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     if (config.self_collision)
         dynamics_.add_effect(make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact,
                                                                      state_, memory,
-                                                                     &contact_loads(EffectId::self_collision)));
+                                                                     contact_loads(EffectId::self_collision)));
 
     integrator_ = make_integrator(solver_.integrator, 3 * n, memory);
     published_.reserve_tools(tool_channels_.size());
@@ -175,7 +175,7 @@ collision::SphereLoads& Scene::contact_loads(EffectId owner) {
 void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
     dynamics_.add_effect(make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact,
                                                                  obstacles, state_, memory_,
-                                                                 &contact_loads(EffectId::environment)));
+                                                                 contact_loads(EffectId::environment)));
     obstacles_ += obstacles.size();
 }
 

@@ -79,7 +79,7 @@ private:
     // The contact loads that the self-contact and the environment share (sphere_loads.h),
     // made on first use and registered with the dynamics, their time counted as the
     // `owner` of that first use.
-    collision::SphereLoads& contact_loads(EffectId owner);
+    collision::SphereLoads& contact_loads(mechanics::EffectId owner);
     // Starts the environment effect with these obstacles.
     void add_environment(const std::vector<collision::Obstacle>& obstacles);
     // Adds a tool, creating the tools effect with the first; no refinalize.

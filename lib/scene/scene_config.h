@@ -10,14 +10,13 @@
 #include <optional>
 #include <vector>
 
+#include "base/geometry.h"
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
 #include "collision/tool.h"
 #include "mechanics/integrator_kind.h"
 
 namespace enteron::scene {
-
-using Vec3 = std::array<double, 3>;
 
 enum class ShapeKind : int32_t { line = 0, serpentine = 1, helix = 2, points = 3 };
 using mechanics::IntegratorKind;

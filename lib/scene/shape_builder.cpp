@@ -3,18 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 
 namespace enteron::scene {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double distance(const Vec3& a, const Vec3& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                     (a[2] - b[2]) * (a[2] - b[2]));
-}
 
 // Walks along a curve given by its arc-length parametrisation and drops a point each time
 // the straight distance from the previous point reaches `chord` (found by bisection
@@ -23,21 +15,21 @@ void place_by_chord(const std::function<Vec3(double)>& curve, double chord, std:
                     double* out_xyz) {
     const double fine = chord / 64.0;
     Vec3 previous = curve(0.0);
-    std::copy(previous.begin(), previous.end(), out_xyz);
+    point_at(out_xyz, 0) = previous;
     double s = 0.0;
     for (std::size_t i = 1; i < count; ++i) {
         double lo = s, hi = s;
-        while (distance(curve(hi), previous) < chord) {
+        while ((curve(hi) - previous).norm() < chord) {
             lo = hi;
             hi += fine;
         }
         for (int iteration = 0; iteration < 60; ++iteration) {
             const double mid = 0.5 * (lo + hi);
-            (distance(curve(mid), previous) < chord ? lo : hi) = mid;
+            ((curve(mid) - previous).norm() < chord ? lo : hi) = mid;
         }
         s = hi;
         previous = curve(s);
-        std::copy(previous.begin(), previous.end(), out_xyz + 3 * i);
+        point_at(out_xyz, i) = previous;
     }
 }
 
@@ -45,8 +37,7 @@ Vec3 helix_point(const ShapeConfig& shape, double s) {
     // Arc length per radian: sqrt(r^2 + (pitch / 2 pi)^2).
     const double rise = shape.helix_pitch / (2.0 * kPi);
     const double theta = s / std::sqrt(shape.helix_radius * shape.helix_radius + rise * rise);
-    return {shape.center[0] + shape.helix_radius * std::cos(theta),
-            shape.center[1] + shape.helix_radius * std::sin(theta), shape.center[2] + rise * theta};
+    return shape.center + Vec3(shape.helix_radius * std::cos(theta), shape.helix_radius * std::sin(theta), rise * theta);
 }
 
 // Legs along x joined by half circles, stacked in +y from the origin; centred afterwards.
@@ -59,22 +50,17 @@ Vec3 serpentine_point(const ShapeConfig& shape, double s) {
     const double local = s - index * period;
     const bool forward = static_cast<long long>(index) % 2 == 0;
     const double y0 = index * shape.leg_spacing;
-    if (local <= leg) return {forward ? local : leg - local, y0, 0.0};
+    if (local <= leg) return Vec3(forward ? local : leg - local, y0, 0.0);
     const double angle = (local - leg) / turn_radius;  // 0 .. pi around the turn
     const double x = forward ? leg + turn_radius * std::sin(angle) : -turn_radius * std::sin(angle);
-    return {x, y0 + turn_radius * (1.0 - std::cos(angle)), 0.0};
+    return Vec3(x, y0 + turn_radius * (1.0 - std::cos(angle)), 0.0);
 }
 
+// Moves the points so that the middle of their bounding box is `center`.
 void centre_on(const Vec3& center, std::size_t count, double* xyz) {
-    for (int c = 0; c < 3; ++c) {
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (std::size_t i = 0; i < count; ++i) {
-            lo = std::min(lo, xyz[3 * i + c]);
-            hi = std::max(hi, xyz[3 * i + c]);
-        }
-        const double shift = center[c] - 0.5 * (lo + hi);
-        for (std::size_t i = 0; i < count; ++i) xyz[3 * i + c] += shift;
-    }
+    Eigen::Map<Eigen::Matrix3Xd> points(xyz, 3, static_cast<Eigen::Index>(count));
+    const Vec3 middle = 0.5 * (points.rowwise().minCoeff() + points.rowwise().maxCoeff());
+    points.colwise() += center - middle;
 }
 
 }  // namespace
@@ -83,11 +69,9 @@ void build_shape(const ShapeConfig& shape, double length, std::size_t count, dou
     const double chord = length / static_cast<double>(count - 1);
     switch (shape.kind) {
         case ShapeKind::line: {
-            const Vec3& d = shape.direction;
-            const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            const Vec3 direction = shape.direction / shape.direction.norm();
             for (std::size_t i = 0; i < count; ++i)
-                for (int c = 0; c < 3; ++c)
-                    out_xyz[3 * i + c] = shape.center[c] + d[c] / norm * chord * static_cast<double>(i);
+                point_at(out_xyz, i) = shape.center + direction * chord * static_cast<double>(i);
             return;
         }
         case ShapeKind::helix:

@@ -47,7 +47,7 @@ struct Snapshot {
     explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory) {}
     std::pmr::vector<double> control_points;  // x y z per point, m
     SceneStats stats;
-    std::array<EffectStats, kEffectCount> effects{};
+    std::array<EffectStats, mechanics::kEffectCount> effects{};
     std::pmr::vector<collision::ToolOutput> tools;  // by tool index
 };
 

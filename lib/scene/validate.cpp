@@ -63,42 +63,6 @@ const char* obstacle_kind_name(collision::ObstacleKind kind) {
     return "?";
 }
 
-// How far a point p lies beyond the obstacle's surface, m (<= 0: on the bowel's side):
-// outside the box_inside, behind the plane, inside the sphere or capsule.
-double beyond_surface(const collision::Obstacle& o, const double p[3]) {
-    using collision::ObstacleKind;
-    switch (o.kind) {
-        case ObstacleKind::box_inside: {
-            double outside = -INFINITY;
-            for (int c = 0; c < 3; ++c) outside = std::max(outside, std::fabs(p[c] - o.center[c]) - o.extent[c]);
-            return outside;
-        }
-        case ObstacleKind::plane: {
-            const Vec3& n = o.extent;
-            const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-            return -((p[0] - o.center[0]) * n[0] + (p[1] - o.center[1]) * n[1] + (p[2] - o.center[2]) * n[2]) / norm;
-        }
-        case ObstacleKind::sphere:
-        case ObstacleKind::capsule: {
-            double closest[3] = {o.center[0], o.center[1], o.center[2]};
-            if (o.kind == ObstacleKind::capsule) {
-                double axis2 = 0.0, along = 0.0;
-                for (int c = 0; c < 3; ++c) {
-                    axis2 += (o.extent[c] - o.center[c]) * (o.extent[c] - o.center[c]);
-                    along += (o.extent[c] - o.center[c]) * (p[c] - o.center[c]);
-                }
-                const double t = axis2 > 0.0 ? std::clamp(along / axis2, 0.0, 1.0) : 0.0;
-                for (int c = 0; c < 3; ++c) closest[c] += t * (o.extent[c] - o.center[c]);
-            }
-            const double d = std::sqrt((p[0] - closest[0]) * (p[0] - closest[0]) +
-                                       (p[1] - closest[1]) * (p[1] - closest[1]) +
-                                       (p[2] - closest[2]) * (p[2] - closest[2]));
-            return o.radius - d;
-        }
-    }
-    return 0.0;
-}
-
 // Refuses an obstacle with control points so far beyond its surface that their contacts
 // would throw them out faster than the guard allows (StartClearance): every step of such a
 // scene would fail.
@@ -109,7 +73,7 @@ void check_clearance(const collision::Obstacle& o, const std::string& name, Erro
     std::vector<std::size_t> stuck;
     double deepest = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
-        const double depth = beyond_surface(o, points + 3 * i);
+        const double depth = collision::beyond_surface(o, point_at(points, i));
         if (depth > 0.0 && depth > deepest_possible) {
             stuck.push_back(i);
             deepest = std::max(deepest, depth);

@@ -14,12 +14,10 @@ void AxisSamples::sample(const spline::ArcLengthTable& table, const double* poin
     Vec3 previous_tangent{1.0, 0.0, 0.0};
     for (std::size_t k = 0; k <= intervals_; ++k) {
         const double s = k == intervals_ ? double(count - 1) : table.parameter_at(arc_length_of(k));
-        double p[3], d[3];
-        spline::evaluate(points_xyz, spline::weights_at(count, s, spline::Derivative::value), p);
-        spline::evaluate(points_xyz, spline::weights_at(count, s, spline::Derivative::first), d);
+        const Vec3 d = spline::evaluate(points_xyz, spline::weights_at(count, s, spline::Derivative::first));
         // A zero-speed stretch (coincident control points) keeps the last good tangent.
-        const Vec3 t = normalized(load(d), previous_tangent);
-        position_[phantoms_ + k] = load(p);
+        const Vec3 t = normalized_or(d, previous_tangent);
+        position_[phantoms_ + k] = spline::evaluate(points_xyz, spline::weights_at(count, s, spline::Derivative::value));
         tangent_[phantoms_ + k] = t;
         previous_tangent = t;
     }

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 #include "spline/arc_length.h"
 
 namespace enteron::skinning {

@@ -16,7 +16,7 @@
 
 #include "skinning/mesh.h"
 #include "skinning/sparse_voxel_grid.h"
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 
 namespace enteron::skinning {
 

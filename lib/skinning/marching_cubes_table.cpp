@@ -3,7 +3,7 @@
 #include <string>
 
 #include "base/error.h"
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 
 namespace enteron::skinning {
 
@@ -92,8 +92,8 @@ std::array<MarchingCubesCase, 256> generate() {
         for (int& n : next) n = -1;
         auto add_segment = [&](int from, int to, Vec3 towards_outside, Vec3 face_normal) {
             // Oriented along g x N: then the triangle through this segment faces outside.
-            const Vec3 want = cross(towards_outside, face_normal);
-            if (dot(edge_midpoint(to) - edge_midpoint(from), want) < 0.0) std::swap(from, to);
+            const Vec3 want = towards_outside.cross(face_normal);
+            if ((edge_midpoint(to) - edge_midpoint(from)).dot(want) < 0.0) std::swap(from, to);
             if (next[from] != -1) throw Error(ErrorCode::internal, "marching cubes table: edge used twice");
             next[from] = to;
             ++incoming[to];
@@ -102,10 +102,10 @@ std::array<MarchingCubesCase, 256> generate() {
             for (int side = 0; side < 2; ++side) {
                 const int p = (axis + 1) % 3, q = (axis + 2) % 3, base = side << axis;
                 const int cycle[4] = {base, base | (1 << p), base | (1 << p) | (1 << q), base | (1 << q)};
-                Vec3 normal{};
-                (axis == 0 ? normal.x : axis == 1 ? normal.y : normal.z) = side ? 1.0 : -1.0;
+                Vec3 normal = Vec3::Zero();
+                (axis == 0 ? normal.x() : axis == 1 ? normal.y() : normal.z()) = side ? 1.0 : -1.0;
                 int crossing[4], crossings = 0, inside_count = 0;
-                Vec3 in_sum{}, out_sum{};
+                Vec3 in_sum = Vec3::Zero(), out_sum = Vec3::Zero();
                 for (int i = 0; i < 4; ++i) {
                     const int a = cycle[i], b = cycle[(i + 1) % 4];
                     if (inside(a) != inside(b)) crossing[crossings++] = edge_between(a, b);
@@ -121,7 +121,7 @@ std::array<MarchingCubesCase, 256> generate() {
                     add_segment(crossing[0], crossing[1], g, normal);
                 } else if (crossings == 4) {
                     // Ambiguous face: cut off each inside corner on its own.
-                    Vec3 centre{};
+                    Vec3 centre = Vec3::Zero();
                     for (int c : cycle) centre = centre + 0.25 * corner_position(c);
                     for (int i = 0; i < 4; ++i) {
                         if (!inside(cycle[i])) continue;

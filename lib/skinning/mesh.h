@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 
 namespace enteron::skinning {
 
@@ -35,9 +35,9 @@ struct Mesh {
 
 // Writes v as the index-th float triple of a positions or normals buffer.
 inline void store_vec3(std::vector<float>& buffer, std::size_t index, Vec3 v) {
-    buffer[3 * index] = float(v.x);
-    buffer[3 * index + 1] = float(v.y);
-    buffer[3 * index + 2] = float(v.z);
+    buffer[3 * index] = float(v.x());
+    buffer[3 * index + 1] = float(v.y());
+    buffer[3 * index + 2] = float(v.z());
 }
 
 }  // namespace enteron::skinning

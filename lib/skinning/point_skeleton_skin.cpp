@@ -46,8 +46,8 @@ int32_t ceil_int(double x) {
 float lane_sum(float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
 Vec3 any_perpendicular(Vec3 t) {
-    const Vec3 axis = std::fabs(t.x) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    return normalized(cross(t, axis), Vec3{0, 0, 1});
+    const Vec3 axis = std::fabs(t.x()) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    return normalized_or(t.cross(axis), Vec3{0, 0, 1});
 }
 
 }  // namespace
@@ -94,22 +94,22 @@ void PointSkeletonSkin::load_skeleton() {
     assign_buffer(excluded_, padded, 1e30f);
     for (std::size_t j = 0; j < n; ++j) {
         const Vec3& p = skeleton_.position(j);
-        x_[padding_ + j] = float(p.x);
-        y_[padding_ + j] = float(p.y);
-        z_[padding_ + j] = float(p.z);
+        x_[padding_ + j] = float(p.x());
+        y_[padding_ + j] = float(p.y());
+        z_[padding_ + j] = float(p.z());
     }
     std::fill_n(excluded_.begin() + std::ptrdiff_t(padding_ + skeleton_.phantoms()), skeleton_.intervals() + 1, 0.0f);
     resize_buffer(inverse_chord2_, n);
     for (std::size_t j = 0; j + 1 < n; ++j) {
         const Vec3 d = skeleton_.position(j + 1) - skeleton_.position(j);
-        inverse_chord2_[j] = 1.0 / std::max(dot(d, d), 1e-300);
+        inverse_chord2_[j] = 1.0 / std::max(d.squaredNorm(), 1e-300);
     }
 }
 
 [[gnu::always_inline]] inline std::size_t PointSkeletonSkin::nearest_from(Vec3 p, std::size_t k, double* distance2) const {
     const std::size_t first = skeleton_.phantoms(), last = first + skeleton_.intervals();
     k = std::clamp(k, first, last);
-    const float4 px = float4{} + float(p.x), py = float4{} + float(p.y), pz = float4{} + float(p.z);
+    const float4 px = float4{} + float(p.x()), py = float4{} + float(p.y()), pz = float4{} + float(p.z());
     // The nearest of the 8 points k - 3 .. k + 4 (two lane groups, no branches); if it is
     // at either end of them, search again around it (a start more than a few points off).
     for (;;) {
@@ -170,30 +170,30 @@ double PointSkeletonSkin::field(Vec3 p, std::size_t k, Vec3* gradient) const {
     const std::size_t first = skeleton_.phantoms(), last = first + skeleton_.intervals();
     // Beyond an end: the field of the straight continuation, made radial about the end
     // point, so the surface closes as a hemisphere of radius R.
-    Vec3 centre{}, q = p;
+    Vec3 centre = Vec3::Zero(), q = p;
     bool radial = false;
     if (k == first || k == last) {
         const Vec3 end = skeleton_.position(k), t = skeleton_.tangent(k);
         const Vec3 d = p - end;
-        const double along = dot(d, t);
+        const double along = d.dot(t);
         if ((k == first && along < 0.0) || (k == last && along > 0.0)) {
             const Vec3 side = d - along * t;
             // On (or within round-off of) the axis line: any perpendicular will do.
-            const Vec3 direction = norm(side) > 1e-9 * norm(d) ? normalized(side, side) : any_perpendicular(t);
-            q = end + norm(d) * direction;
+            const Vec3 direction = side.norm() > 1e-9 * d.norm() ? normalized_or(side, side) : any_perpendicular(t);
+            q = end + d.norm() * direction;
             centre = end;
             radial = true;
         }
     }
-    if (gradient == nullptr) return window_sum<false>(float(q.x), float(q.y), float(q.z), k, nullptr);
+    if (gradient == nullptr) return window_sum<false>(float(q.x()), float(q.y()), float(q.z()), k, nullptr);
     float g[3];
-    const double f = window_sum<true>(float(q.x), float(q.y), float(q.z), k, g);
+    const double f = window_sum<true>(float(q.x()), float(q.y()), float(q.z()), k, g);
     if (radial) {
         // F(p) = G(|p - end|): the gradient is radial with the slope of G.
         const Vec3 r = q - centre;
-        const double rn = norm(r);
-        const Vec3 dir = normalized(p - centre, Vec3{0, 0, 1});
-        *gradient = (rn > 0.0 ? dot(Vec3{g[0], g[1], g[2]}, r) / rn : 0.0) * dir;
+        const double rn = r.norm();
+        const Vec3 dir = normalized_or(p - centre, Vec3{0, 0, 1});
+        *gradient = (rn > 0.0 ? Vec3(g[0], g[1], g[2]).dot(r) / rn : 0.0) * dir;
     } else {
         *gradient = Vec3{g[0], g[1], g[2]};
     }
@@ -224,14 +224,14 @@ void PointSkeletonSkin::splat() {
         double turn = 0.0;  // max |t_j - t| over the points this disc stands for
         for (std::size_t j = k - std::min(k - first, stride); j <= std::min(last, k + stride); ++j) {
             const Vec3 d = skeleton_.tangent(j) - t;
-            turn = std::max(turn, dot(d, d));
+            turn = std::max(turn, d.squaredNorm());
         }
         turn = std::sqrt(turn);
         // The end points also stand for the hemispherical caps beyond them.
         const double half = half_gap + h + reach * turn + (k == first || k == last ? reach : 0.0);
         const double radius = reach + half_gap * turn, radius2 = radius * radius;
         // Lattice bounds: the disc's extent along each axis.
-        const double tt[3] = {t.x, t.y, t.z}, cc[3] = {c.x, c.y, c.z};
+        const double tt[3] = {t.x(), t.y(), t.z()}, cc[3] = {c.x(), c.y(), c.z()};
         int32_t lo[3], hi[3];
         for (int a = 0; a < 3; ++a) {
             const double extent = half * std::fabs(tt[a]) + radius * std::sqrt(std::max(0.0, 1.0 - tt[a] * tt[a]));
@@ -242,15 +242,15 @@ void PointSkeletonSkin::splat() {
         const bool cached = G::block_of(hi[0]) - bx0 < kCache && G::block_of(hi[1]) - by0 < kCache &&
                             G::block_of(hi[2]) - bz0 < kCache;
         if (cached) std::fill_n(blocks, kCache * kCache * kCache, G::kMissing);
-        const double A = 1.0 - t.x * t.x;  // the cylinder along a row: A X^2 + B X + C <= 0
+        const double A = 1.0 - t.x() * t.x();  // the cylinder along a row: A X^2 + B X + C <= 0
         for (int32_t z = lo[2]; z <= hi[2]; ++z) {
-            const double dz = z * v - c.z;
+            const double dz = z * v - c.z();
             const int32_t bz = G::block_of(z);
             for (int32_t y = lo[1]; y <= hi[1]; ++y) {
-                const double dy = y * v - c.y;
-                // Row (y, z): p - c = (X, dy, dz); (p - c).t = X t.x + e.
-                const double e = dy * t.y + dz * t.z;
-                const double C = dy * dy + dz * dz - e * e - radius2, B = -2.0 * t.x * e;
+                const double dy = y * v - c.y();
+                // Row (y, z): p - c = (X, dy, dz); (p - c).t = X t_x + e.
+                const double e = dy * t.y() + dz * t.z();
+                const double C = dy * dy + dz * dz - e * e - radius2, B = -2.0 * t.x() * e;
                 double x_lo = -1e300, x_hi = 1e300;
                 if (A > 1e-12) {
                     const double discriminant = B * B - 4.0 * A * C;
@@ -261,15 +261,15 @@ void PointSkeletonSkin::splat() {
                 } else if (C > 0.0) {
                     continue;
                 }
-                if (std::fabs(t.x) > 1e-12) {
-                    const double a0 = (-half - e) / t.x, a1 = (half - e) / t.x;
+                if (std::fabs(t.x()) > 1e-12) {
+                    const double a0 = (-half - e) / t.x(), a1 = (half - e) / t.x();
                     x_lo = std::max(x_lo, std::min(a0, a1));
                     x_hi = std::min(x_hi, std::max(a0, a1));
                 } else if (std::fabs(e) > half) {
                     continue;
                 }
-                const int32_t x0 = std::max(lo[0], ceil_int((c.x + x_lo) * inverse_v));
-                const int32_t x1 = std::min(hi[0], floor_int((c.x + x_hi) * inverse_v));
+                const int32_t x0 = std::max(lo[0], ceil_int((c.x() + x_lo) * inverse_v));
+                const int32_t x1 = std::min(hi[0], floor_int((c.x() + x_hi) * inverse_v));
                 const int32_t by = G::block_of(y);
                 const double dyz2 = dz * dz + dy * dy;
                 // The row, block by block.
@@ -286,7 +286,7 @@ void PointSkeletonSkin::splat() {
                     VoxelBlock& block = grid_.block(index);
                     const std::size_t row = G::local_index(0, y - by * kBlockSize, z - bz * kBlockSize);
                     for (int32_t x = xs; x <= xe; ++x) {
-                        const double dx = x * v - c.x;
+                        const double dx = x * v - c.x();
                         uint64_t& nearest = block.nearest[row + std::size_t(x - bx * kBlockSize)];
                         nearest = std::min(nearest, nearest_key(float(dyz2 + dx * dx), uint32_t(k)));
                     }
@@ -349,11 +349,11 @@ void PointSkeletonSkin::project_vertices() {
         // 1e-3 rad on the pile). (Moving along the lattice edge instead keeps more vertices
         // where two folds meet short of the surface, by up to 6 % of R, and flips as many
         // triangles there.)
-        Vec3 g{};
+        Vec3 g = Vec3::Zero();
         for (int iteration = 0; iteration < 4; ++iteration) {
             const double f = field(p, k, &g);
             ++evaluations;
-            const double g2 = dot(g, g);
+            const double g2 = g.squaredNorm();
             if (!(g2 > 0.0)) break;
             const double along = (f - iso_) / g2;  // the step is along * g
             const double step2 = along * along * g2;
@@ -362,16 +362,16 @@ void PointSkeletonSkin::project_vertices() {
             k = nearest_from(p, k, &d2);
             if (step2 < last_step2) break;
         }
-        const Vec3 n = normalized(-1.0 * g, Vec3{0, 0, 1});
+        const Vec3 n = normalized_or(-1.0 * g, Vec3{0, 0, 1});
         // u: project p on the axis polyline next to its nearest skeleton point.
         double s = skeleton_.arc_length(k);
         double best = 1e300;
         for (std::size_t a : {k - 1, k}) {
             if (a < first || a + 1 > last) continue;
             const Vec3 d = skeleton_.position(a + 1) - skeleton_.position(a);
-            const double w = std::clamp(dot(p - skeleton_.position(a), d) * inverse_chord2_[a], 0.0, 1.0);
+            const double w = std::clamp((p - skeleton_.position(a)).dot(d) * inverse_chord2_[a], 0.0, 1.0);
             const Vec3 foot = skeleton_.position(a) + w * d;
-            const double distance2 = dot(p - foot, p - foot);
+            const double distance2 = (p - foot).squaredNorm();
             if (distance2 < best) {
                 best = distance2;
                 s = skeleton_.arc_length(a) + w * skeleton_.spacing();

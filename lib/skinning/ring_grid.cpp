@@ -57,9 +57,9 @@ void RingGrid::grid_normals(const float* positions, Vec3 first_tangent, Vec3 las
         return Vec3{positions[3 * index], positions[3 * index + 1], positions[3 * index + 2]};
     };
     auto store = [&](std::size_t index, Vec3 v) {
-        normals[3 * index] = float(v.x);
-        normals[3 * index + 1] = float(v.y);
-        normals[3 * index + 2] = float(v.z);
+        normals[3 * index] = float(v.x());
+        normals[3 * index + 1] = float(v.y());
+        normals[3 * index + 2] = float(v.z());
     };
     const std::size_t n = rows();
     store(0, -1.0 * first_tangent);
@@ -69,7 +69,7 @@ void RingGrid::grid_normals(const float* positions, Vec3 first_tangent, Vec3 las
             const Vec3 around = at(vertex(r, j + 1)) - at(vertex(r, j + segments_ - 1));
             const Vec3 along = at(vertex(r + 1, j)) - at(vertex(r - 1, j));
             const Vec3 fallback = at(vertex(r, j)) - 0.5 * (at(vertex(r, j + segments_ / 2)) + at(vertex(r, j)));
-            store(vertex(r, j), normalized(cross(around, along), normalized(fallback, Vec3{0, 0, 1})));
+            store(vertex(r, j), normalized_or(around.cross(along), normalized_or(fallback, Vec3{0, 0, 1})));
         }
     }
 }

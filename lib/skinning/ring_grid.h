@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 
 namespace enteron::skinning {
 

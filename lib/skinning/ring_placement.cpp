@@ -16,7 +16,7 @@ const std::vector<double>& RingPlacement::place(const AxisSamples& axis, double 
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t a = first + (i > 0 ? i - 1 : 0), b = first + std::min(i + 1, n - 1);
         const double span = double(b - a) * h;
-        curvature_[i] = span > 0.0 ? norm(axis.tangent(b) - axis.tangent(a)) / span : 0.0;
+        curvature_[i] = span > 0.0 ? (axis.tangent(b) - axis.tangent(a)).norm() / span : 0.0;
     }
     // The largest curvature within max_spacing / 2, then the ring density 1 / Delta.
     const auto reach = std::size_t(std::ceil(0.5 * max_spacing / h));

@@ -10,8 +10,8 @@ namespace {
 
 // Any unit vector perpendicular to t (t unit).
 Vec3 any_perpendicular(Vec3 t) {
-    const Vec3 axis = std::fabs(t.x) < 0.6 ? Vec3{1, 0, 0} : (std::fabs(t.y) < 0.6 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
-    return normalized(cross(t, axis), Vec3{0, 0, 1});
+    const Vec3 axis = std::fabs(t.x()) < 0.6 ? Vec3{1, 0, 0} : (std::fabs(t.y()) < 0.6 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
+    return normalized_or(t.cross(axis), Vec3{0, 0, 1});
 }
 
 }  // namespace
@@ -21,29 +21,29 @@ void RotationMinimizingFrames::build(const Vec3* x, const Vec3* t, std::size_t c
     resize_buffer(binormal_, count);
     if (count == 0) return;
     // Temporal coherence of the whole frame field: start from last frame's first normal.
-    Vec3 r = first_normal_ - dot(first_normal_, t[0]) * t[0];
-    r = norm(r) > 1e-6 ? normalized(r, r) : any_perpendicular(t[0]);
+    Vec3 r = first_normal_ - first_normal_.dot(t[0]) * t[0];
+    r = r.norm() > 1e-6 ? normalized_or(r, r) : any_perpendicular(t[0]);
     first_normal_ = r;
     normal_[0] = r;
-    binormal_[0] = cross(t[0], r);
+    binormal_[0] = t[0].cross(r);
     for (std::size_t i = 0; i + 1 < count; ++i) {
         // Reflection 1 in the bisecting plane of x_i and x_{i+1}.
         const Vec3 v1 = x[i + 1] - x[i];
-        const double c1 = dot(v1, v1);
+        const double c1 = v1.squaredNorm();
         Vec3 r_left = r, t_left = t[i];
         if (c1 > 0.0) {
-            r_left = r - (2.0 / c1) * dot(v1, r) * v1;
-            t_left = t[i] - (2.0 / c1) * dot(v1, t[i]) * v1;
+            r_left = r - (2.0 / c1) * v1.dot(r) * v1;
+            t_left = t[i] - (2.0 / c1) * v1.dot(t[i]) * v1;
         }
         // Reflection 2 maps the reflected tangent onto t_{i+1}.
         const Vec3 v2 = t[i + 1] - t_left;
-        const double c2 = dot(v2, v2);
-        Vec3 next = c2 > 0.0 ? r_left - (2.0 / c2) * dot(v2, r_left) * v2 : r_left;
+        const double c2 = v2.squaredNorm();
+        Vec3 next = c2 > 0.0 ? r_left - (2.0 / c2) * v2.dot(r_left) * v2 : r_left;
         // Remove round-off drift so the frame stays orthonormal over thousands of samples.
-        next = next - dot(next, t[i + 1]) * t[i + 1];
-        r = norm(next) > 1e-12 ? normalized(next, next) : any_perpendicular(t[i + 1]);
+        next = next - next.dot(t[i + 1]) * t[i + 1];
+        r = next.norm() > 1e-12 ? normalized_or(next, next) : any_perpendicular(t[i + 1]);
         normal_[i + 1] = r;
-        binormal_[i + 1] = cross(t[i + 1], r);
+        binormal_[i + 1] = t[i + 1].cross(r);
     }
 }
 

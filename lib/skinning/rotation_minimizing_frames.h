@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 
 namespace enteron::skinning {
 

@@ -11,24 +11,24 @@
 #include <algorithm>
 #include <cmath>
 
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 
 namespace enteron::skinning {
 
 // Field of segment [a, b] at p. Zero for a degenerate segment.
 inline double segment_field(Vec3 p, Vec3 a, Vec3 b) {
     const Vec3 d = b - a;
-    const double length2 = dot(d, d);
+    const double length2 = d.squaredNorm();
     if (!(length2 > 0.0)) return 0.0;
     const double length = std::sqrt(length2);
     const Vec3 e = (1.0 / length) * d;
     const Vec3 w = p - a;
-    const double xa = -dot(w, e);  // abscissa of a from the foot H (b is at xa + length)
+    const double xa = -w.dot(e);  // abscissa of a from the foot H (b is at xa + length)
     const Vec3 off_line = w + xa * e;
     // P on the line itself (never on a surface of radius R > 0): keep the field finite.
-    const double h2 = std::max(dot(off_line, off_line), 1e-12 * length2);
+    const double h_squared = std::max(off_line.squaredNorm(), 1e-12 * length2);
     const double xb = xa + length;
-    return (xb / std::sqrt(h2 + xb * xb) - xa / std::sqrt(h2 + xa * xa)) / h2;
+    return (xb / std::sqrt(h_squared + xb * xb) - xa / std::sqrt(h_squared + xa * xa)) / h_squared;
 }
 
 }  // namespace enteron::skinning

@@ -4,14 +4,12 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "skinning/vec3.h"
+#include "base/geometry.h"
 #include "spline/catmull_rom.h"
 
 namespace enteron::skinning {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 vertex_at(const std::vector<float>& buffer, std::size_t i) {
     return {buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]};
@@ -27,19 +25,19 @@ public:
         const auto n = std::max<std::size_t>(2, std::size_t(std::ceil(length / spacing)) + 1);
         for (std::size_t i = 0; i < n; ++i) {
             const double s = length * double(i) / double(n - 1);
-            double p[3];
-            spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value), p);
-            positions_.push_back(load(p));
+            const Vec3 p =
+                spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value));
+            positions_.push_back(p);
             arc_.push_back(s);
-            cells_[key(load(p))].push_back(uint32_t(i));
+            cells_[key(p)].push_back(uint32_t(i));
         }
     }
 
     // Smallest distance from p to an axis sample farther than `window` in arc length from s.
     double nearest_other_fold(Vec3 p, double s, double window) const {
         double best = 1e300;
-        const long cx = long(std::floor(p.x / cell_)), cy = long(std::floor(p.y / cell_)),
-                   cz = long(std::floor(p.z / cell_));
+        const long cx = long(std::floor(p.x() / cell_)), cy = long(std::floor(p.y() / cell_)),
+                   cz = long(std::floor(p.z() / cell_));
         for (long dx = -1; dx <= 1; ++dx)
             for (long dy = -1; dy <= 1; ++dy)
                 for (long dz = -1; dz <= 1; ++dz) {
@@ -47,7 +45,7 @@ public:
                     if (it == cells_.end()) continue;
                     for (uint32_t i : it->second) {
                         if (std::fabs(arc_[i] - s) <= window) continue;
-                        best = std::min(best, norm(positions_[i] - p));
+                        best = std::min(best, (positions_[i] - p).norm());
                     }
                 }
         return best;
@@ -59,7 +57,7 @@ private:
         return (m(x) << 42) | (m(y) << 21) | m(z);
     }
     uint64_t key(Vec3 p) const {
-        return pack(long(std::floor(p.x / cell_)), long(std::floor(p.y / cell_)), long(std::floor(p.z / cell_)));
+        return pack(long(std::floor(p.x() / cell_)), long(std::floor(p.y() / cell_)), long(std::floor(p.z() / cell_)));
     }
 
     double cell_;
@@ -78,16 +76,15 @@ public:
         const auto n = std::max<std::size_t>(2, std::size_t(std::ceil(length / spacing)) + 1);
         step_ = length / double(n - 1);
         for (std::size_t i = 0; i < n; ++i) {
-            double p[3];
-            spline::evaluate(points, spline::weights_at(count, table.parameter_at(step_ * double(i)), spline::Derivative::value), p);
-            positions_.push_back(load(p));
+            positions_.push_back(spline::evaluate(
+                points, spline::weights_at(count, table.parameter_at(step_ * double(i)), spline::Derivative::value)));
         }
     }
 
     // Distance from p to the axis, searching downhill from arc length s.
     double distance(Vec3 p, double s) const {
         const std::size_t last = positions_.size() - 1;
-        auto d2 = [&](std::size_t i) { return dot(p - positions_[i], p - positions_[i]); };
+        auto d2 = [&](std::size_t i) { return (p - positions_[i]).squaredNorm(); };
         std::size_t i = std::min(last, std::size_t(std::max(0.0, std::round(s / step_))));
         while (i > 0 && d2(i - 1) < d2(i)) --i;
         while (i < last && d2(i + 1) < d2(i)) ++i;
@@ -96,9 +93,9 @@ public:
             if (i == 0 && a != i) continue;
             if (a + 1 > last) continue;
             const Vec3 d = positions_[a + 1] - positions_[a];
-            const double w = std::clamp(dot(p - positions_[a], d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+            const double w = std::clamp((p - positions_[a]).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
             const Vec3 foot = positions_[a] + w * d;
-            best = std::min(best, dot(p - foot, p - foot));
+            best = std::min(best, (p - foot).squaredNorm());
         }
         return std::sqrt(best);
     }
@@ -126,17 +123,17 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
     double sum_radius2 = 0.0, sum_normal2 = 0.0;
     for (std::size_t i = 0; i < m.vertices; ++i) {
         const double s = double(mesh.u[i]) * length;
-        double a[3];
-        spline::evaluate(points_xyz, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value), a);
+        const Vec3 a =
+            spline::evaluate(points_xyz, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value));
         const Vec3 v = vertex_at(mesh.positions, i);
-        const Vec3 r = v - load(a);
-        const double distance = norm(r);
-        radial[i] = normalized(r, Vec3{0, 0, 0});
+        const Vec3 r = v - a;
+        const double distance = r.norm();
+        radial[i] = normalized_or(r, Vec3{0, 0, 0});
         const double error = std::fabs(distance - R) / R;
         sum_radius2 += error * error;
         m.radius_error_max = std::max(m.radius_error_max, error);
-        const Vec3 n = normalized(vertex_at(mesh.normals, i), Vec3{0, 0, 0});
-        const double angle = std::acos(std::clamp(dot(n, radial[i]), -1.0, 1.0));
+        const Vec3 n = normalized_or(vertex_at(mesh.normals, i), Vec3{0, 0, 0});
+        const double angle = std::acos(std::clamp(n.dot(radial[i]), -1.0, 1.0));
         sum_normal2 += angle * angle;
         m.normal_deviation_max = std::max(m.normal_deviation_max, angle);
         if (grid.nearest_other_fold(v, s, kNeighbourWindow * R) < kBlendBand * R) ++m.blended_vertices;
@@ -155,7 +152,7 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         const uint32_t i0 = mesh.indices[3 * t], i1 = mesh.indices[3 * t + 1], i2 = mesh.indices[3 * t + 2];
         const Vec3 p0 = vertex_at(mesh.positions, i0) - origin, p1 = vertex_at(mesh.positions, i1) - origin,
                    p2 = vertex_at(mesh.positions, i2) - origin;
-        const Vec3 face = cross(p1 - p0, p2 - p0);
+        const Vec3 face = (p1 - p0).cross(p2 - p0);
         {
             // The centroid's distance to the axis, near its corners' axis points (all three
             // when they lie on different folds).
@@ -169,12 +166,12 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
             sum_facet2 += error * error;
             m.facet_error_max = std::max(m.facet_error_max, error);
         }
-        volume6 += dot(p0, cross(p1, p2));
+        volume6 += p0.dot(p1.cross(p2));
         // Facing the axis as seen from each corner's own axis point. (Not the sum of the
         // three radial directions: where two folds touch, marching cubes joins them with
         // triangles whose corners belong to different folds, radial directions nearly
         // opposite, and a correctly wound triangle there can face against their sum.)
-        if (dot(face, radial[i0]) < 0.0 && dot(face, radial[i1]) < 0.0 && dot(face, radial[i2]) < 0.0)
+        if (face.dot(radial[i0]) < 0.0 && face.dot(radial[i1]) < 0.0 && face.dot(radial[i2]) < 0.0)
             ++m.inverted_triangles;
         const uint32_t corners[3] = {i0, i1, i2};
         for (int e = 0; e < 3; ++e) {

@@ -13,9 +13,7 @@ namespace {
 constexpr std::size_t kSubdivisions = 8;  // intervals per segment
 
 double speed_at(const double* points, std::size_t count, double s) {
-    double d[3];
-    evaluate(points, weights_at(count, s, Derivative::first), d);
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return evaluate(points, weights_at(count, s, Derivative::first)).norm();
 }
 
 double integrate_between(const double* points, std::size_t count, double s0, double s1) {
@@ -56,7 +54,7 @@ void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samp
     double total = 0.0;
     for (std::size_t k = 0; k < intervals; ++k)
         total += integrate_between(points_xyz, count, double(k) / kSubdivisions, interval_end(k, count));
-    evaluate(points_xyz, weights_at(count, 0.0, Derivative::value), out_xyz);
+    point_at(out_xyz, 0) = evaluate(points_xyz, weights_at(count, 0.0, Derivative::value));
     std::size_t next = 1;
     double start = 0.0;
     for (std::size_t k = 0; k < intervals && next + 1 < samples; ++k) {
@@ -66,13 +64,13 @@ void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samp
             const double target = total * double(next) / double(samples - 1);
             if (target > start + span) break;
             const double s = invert_in_interval(points_xyz, count, s_lo, s_hi, start, span, target, total);
-            evaluate(points_xyz, weights_at(count, s, Derivative::value), out_xyz + 3 * next);
+            point_at(out_xyz, next) = evaluate(points_xyz, weights_at(count, s, Derivative::value));
         }
         start += span;
     }
     // Round-off may leave samples just short of the end; the last is the end point itself.
     for (; next < samples; ++next)
-        evaluate(points_xyz, weights_at(count, double(count - 1), Derivative::value), out_xyz + 3 * next);
+        point_at(out_xyz, next) = evaluate(points_xyz, weights_at(count, double(count - 1), Derivative::value));
 }
 
 void ArcLengthTable::build(const double* points_xyz, std::size_t count) {
@@ -108,7 +106,7 @@ void ArcLengthTable::sample_evenly(std::size_t samples, double* out_xyz) const {
     for (std::size_t i = 0; i < samples; ++i) {
         const double target = total * double(i) / double(samples - 1);
         const double s = i + 1 == samples ? double(count_ - 1) : parameter_at(target);
-        evaluate(points_, weights_at(count_, s, Derivative::value), out_xyz + 3 * i);
+        point_at(out_xyz, i) = evaluate(points_, weights_at(count_, s, Derivative::value));
     }
 }
 

@@ -4,7 +4,7 @@
 
 namespace enteron::spline {
 
-void add_gram_matrix(std::size_t count, Derivative order, double scale, ScalarBandMatrix& out) {
+void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics::ScalarBandMatrix& out) {
     constexpr auto rule = numerics::gauss_legendre<4>();
     for (std::size_t segment = 0; segment + 1 < count; ++segment) {
         for (const auto& node : rule) {

@@ -2,6 +2,8 @@
 //
 //   enteron_stability CASE [--seconds S]   run one case for S simulated seconds (default 30)
 //   enteron_stability all [--seconds S]    run every case
+//   ... --hash                             also print each run's trajectory hash (the bits of
+//                                          every published state: compares two library builds)
 //   enteron_stability --list               print the case names, one per line
 //   enteron_stability --expect-cases A,B   fail unless the cases are exactly A, B, ... (ctest
 //                                          uses it to prove that every case is registered)
@@ -16,7 +18,7 @@
 namespace {
 
 int usage() {
-    std::fprintf(stderr, "usage: enteron_stability CASE|all [--seconds S] | --list | --expect-cases A,B,...\n");
+    std::fprintf(stderr, "usage: enteron_stability CASE|all [--seconds S] [--hash] | --list | --expect-cases A,B,...\n");
     return 2;
 }
 
@@ -40,8 +42,11 @@ int main(int argc, char** argv) {
     }
     if (first == "--expect-cases") return argc == 3 ? expect_cases(argv[2]) : usage();
     double seconds = 30.0;
+    bool hash = false;
     for (int i = 2; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
+        if (std::strcmp(argv[i], "--hash") == 0) {
+            hash = true;
+        } else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
             char* end = nullptr;
             seconds = std::strtod(argv[++i], &end);
             if (*end != '\0' || !(seconds > 0.0)) return usage();
@@ -57,6 +62,7 @@ int main(int argc, char** argv) {
         const stability::RunResult result = stability::run(c, seconds);
         std::printf("%s\n", stability::table_row(c, result).c_str());
         if (!result.passed) std::printf("  %s (%s): %s\n", c.name, c.what, result.failure.c_str());
+        if (hash) std::printf("  %s: trajectory hash %016llx\n", c.name, static_cast<unsigned long long>(result.trajectory_hash));
         std::fflush(stdout);
         ++ran;
         failed += result.passed ? 0 : 1;

@@ -65,6 +65,19 @@ public:
     const ent_stats& stats() const { return stats_; }
     double energy() const { return stats_.kinetic_energy_J + stats_.potential_energy_J; }
 
+    // Mixes the bits of what read() got into `hash` (FNV-1a over 64-bit words).
+    void mix_into(uint64_t& hash) const {
+        const auto mix = [&](double value) {
+            uint64_t bits;
+            std::memcpy(&bits, &value, sizeof bits);
+            hash = (hash ^ bits) * 1099511628211ull;
+        };
+        for (double v : points_) mix(v);
+        mix(stats_.kinetic_energy_J);
+        mix(stats_.potential_energy_J);
+        mix(stats_.max_penetration_m);
+    }
+
 private:
     ent_scene* scene_;
     ent_stats stats_{};
@@ -112,6 +125,7 @@ RunResult run(const HardCase& hard_case, double seconds) {
             result.failure = format("at t = %.3f s: ", time) + result.failure;
             break;
         }
+        checker.mix_into(result.trajectory_hash);
         const ent_stats& s = checker.stats();
         const bool settled = time >= hard_case.settle_s;
         if (settled) result.max_penetration_m = std::max(result.max_penetration_m, s.max_penetration_m);

@@ -58,6 +58,9 @@ struct RunResult {
     double final_energy_J = 0.0;
     uint32_t max_contacts = 0;
     double wall_s = 0.0;
+    // FNV-1a over the bits of the published control points and energies after every step:
+    // equal hashes, the same trajectory to the last bit (comparing two builds of the library).
+    uint64_t trajectory_hash = 14695981039346656037ull;
 };
 
 // Runs the case for `seconds` of simulated time. Never throws; a failure is in the result.

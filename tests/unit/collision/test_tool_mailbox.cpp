@@ -67,13 +67,11 @@ TEST(ToolMailbox, ConcurrentPostsNeverTearAPose) {
     double last[kPosters] = {0.0, 0.0, 0.0};
     ToolPose taken;
     for (;;) {
-        // Read before the take: once every poster is done, one last take sees their last post
-        // (the condition used to take it and throw it away, and a taker that started late
-        // then took nothing).
-        const bool posters_done = running.load() == 0;
+        // Read before the take: once the posters are done, one more take drains the last post.
+        const bool posting = running.load() > 0;
         if (!mailbox.take_pose(taken)) {
-            if (posters_done) break;
-            continue;
+            if (posting) continue;
+            break;
         }
         ++taken_count;
         const double x = taken.position[0];

@@ -2,7 +2,6 @@
 // and in the right sequence, and the guard's report finds the effect behind a failure.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <memory_resource>
 #include <string>
 #include <vector>
@@ -93,7 +92,7 @@ TEST(Dynamics, TheStrongestForceOnAPointAndTheLargestEnergyGainNameTheirEffects)
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
     Dynamics dynamics(model(), memory);
-    dynamics.add_effect(make_owned<GravityForce>(memory, model(), std::array<double, 3>{0.0, 0.0, -9.81}, memory));
+    dynamics.add_effect(make_owned<GravityForce>(memory, model(), enteron::Vec3(0.0, 0.0, -9.81), memory));
     // Pushes point 3 with 100 N, far more than its weight (about 0.3 N); stores 5 J/m.
     dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, false, 3, 100.0, 5.0));
     // Pushes point 1 with 0.01 N; stores 1 J/m of point 1's x.

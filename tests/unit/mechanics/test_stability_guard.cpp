@@ -134,7 +134,7 @@ TEST(StabilityGuard, AnAcceptedStepBecomesTheReference) {
     model.rest_segment_length = 0.1;
     model.linear_density = kMass / (0.1 * double(kPoints - 1));
     Dynamics dynamics(model, memory);
-    dynamics.add_effect(make_owned<GravityForce>(memory, model, std::array<double, 3>{0.0, 0.0, -9.81}, memory));
+    dynamics.add_effect(make_owned<GravityForce>(memory, model, enteron::Vec3(0.0, 0.0, -9.81), memory));
     dynamics.finalize();
 
     State state = at_rest();

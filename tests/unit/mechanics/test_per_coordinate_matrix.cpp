@@ -14,7 +14,7 @@
 namespace {
 
 using enteron::mechanics::PerCoordinateMatrix;
-using enteron::spline::ScalarBandMatrix;
+using enteron::numerics::ScalarBandMatrix;
 
 ScalarBandMatrix random_band(std::size_t n, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);

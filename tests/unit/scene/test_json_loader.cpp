@@ -1,12 +1,8 @@
-// The JSON v1 loader and the shared scene validation: what a document turns into, and the
-// exact error (code and message) for each kind of mistake.
+// The JSON v1 loader (lib/scene/json_loader.h): what a document turns into, and the exact
+// error (code and message) for each kind of mistake.
 #include <gtest/gtest.h>
 
 #include <array>
-#include <cmath>
-#include <cstring>
-#include <limits>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -27,16 +23,6 @@ Error load_error(const std::string& text) {
         return error;
     }
     ADD_FAILURE() << "no error for: " << text;
-    return Error(ErrorCode::internal, "");
-}
-
-Error validate_error(const SceneConfig& config, const FieldNames& names) {
-    try {
-        validate(config, names);
-    } catch (const Error& error) {
-        return error;
-    }
-    ADD_FAILURE() << "validate raised no error";
     return Error(ErrorCode::internal, "");
 }
 
@@ -294,7 +280,7 @@ TEST(JsonLoader, ToolsGiveEveryValue) {
     EXPECT_EQ(t.settings.grasp_margin, 0.003);
     EXPECT_EQ(t.settings.grasp_stiffness, 150.0);
     EXPECT_EQ(t.settings.grasp_damping, 1.5);
-    EXPECT_EQ(t.pose.position, (std::array<double, 3>{0.1, 0.2, 0.3}));
+    EXPECT_EQ(t.pose.position, (Vec3{0.1, 0.2, 0.3}));
     EXPECT_EQ(t.pose.orientation, (std::array<double, 4>{0.0, 1.0, 0.0, 0.0}));
     const collision::ToolConfig defaults;
     EXPECT_EQ(c.tools[1].settings.max_force, defaults.settings.max_force);
@@ -495,123 +481,6 @@ TEST(JsonLoader, BoundaryValuesAreAccepted) {
                             "pinned": {"control_points": [3]}})"));
     EXPECT_NO_THROW(
         load(R"({"intestine": {"radius": 0.01, "shape": {"kind": "serpentine", "leg_spacing": 0.02}}})"));
-}
-
-// ---- the shared validation with both name tables --------------------------------------
-
-TEST(Validate, EveryFieldHasANameInBothTables) {
-    for (const FieldNames* names : {&json_field_names(), &c_field_names()}) {
-        std::set<std::string> seen;
-        for (std::size_t i = 0; i < kFieldCount; ++i) {
-            ASSERT_NE(names->names[i], nullptr) << "field " << i;
-            EXPECT_GT(std::strlen(names->names[i]), 0u) << "field " << i;
-            EXPECT_TRUE(seen.insert(names->names[i]).second) << names->names[i] << " named twice";
-        }
-    }
-    EXPECT_EQ(json_field_names().code, ErrorCode::invalid_scene);
-    EXPECT_EQ(c_field_names().code, ErrorCode::invalid_argument);
-}
-
-TEST(Validate, DefaultConfigWithEveryEffectIsValid) {
-    SceneConfig config;
-    config.intestine.stretch_stiffness = 100.0;
-    config.intestine.bend_stiffness = 2.5e-3;
-    config.gravity = Vec3{0.0, 0.0, -9.81};
-    config.damping.emplace();
-    config.mesentery.emplace();
-    config.pinned.emplace();
-    EXPECT_NO_THROW(validate(config, c_field_names()));
-    EXPECT_NO_THROW(validate(config, json_field_names()));
-}
-
-TEST(Validate, CNamesAndCode) {
-    SceneConfig config;
-    config.intestine.radius = -1.0;
-    const Error error = validate_error(config, c_field_names());
-    EXPECT_EQ(error.code(), ErrorCode::invalid_argument);
-    EXPECT_STREQ(error.what(), "radius_m must be > 0, got -1");
-
-    SceneConfig helix;
-    helix.intestine.shape.helix_pitch = 0.001;
-    EXPECT_STREQ(validate_error(helix, c_field_names()).what(),
-                 "shape_helix_pitch_m must be >= 2 x radius_m (0.025), got 0.001");
-
-    SceneConfig pinned;
-    pinned.pinned = PinnedConfig{pin_both, {1, 2, 240}};
-    EXPECT_STREQ(validate_error(pinned, c_field_names()).what(),
-                 "pinned_points[2] must be < control_points (240), got 240");
-}
-
-TEST(Validate, NonFiniteNumbersAreNamed) {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const double inf = std::numeric_limits<double>::infinity();
-    SceneConfig length;
-    length.intestine.length = nan;
-    EXPECT_STREQ(validate_error(length, c_field_names()).what(), "length_m must be finite, got nan");
-    EXPECT_STREQ(validate_error(length, json_field_names()).what(), "intestine.length must be finite, got nan");
-
-    SceneConfig gravity;
-    gravity.gravity = Vec3{0.0, -inf, 0.0};
-    EXPECT_STREQ(validate_error(gravity, c_field_names()).what(),
-                 "gravity_m_per_s2[1] must be finite, got -inf");
-
-    SceneConfig root;
-    root.mesentery.emplace().root_end[2] = inf;
-    EXPECT_STREQ(validate_error(root, json_field_names()).what(),
-                 "mesentery.root[1][2] must be finite, got inf");
-
-    SceneConfig stretch;
-    stretch.intestine.stretch_stiffness = inf;
-    EXPECT_STREQ(validate_error(stretch, c_field_names()).what(),
-                 "stretch_stiffness_N must be finite, got inf");
-
-    SceneConfig timestep;
-    timestep.solver.timestep = nan;
-    EXPECT_STREQ(validate_error(timestep, json_field_names()).what(),
-                 "solver.timestep must be finite, got nan");
-}
-
-TEST(Validate, PointsAreNamedPerPointInJsonAndFlatInC) {
-    SceneConfig config;
-    config.intestine.length = 0.5;
-    config.intestine.control_points = 4;
-    config.intestine.shape.kind = ShapeKind::points;
-    config.intestine.shape.points = {0, 0, 0, 0.1, 0, 0, 0.2, 0, 0, 0.3, 0, 0};
-    EXPECT_NO_THROW(validate(config, c_field_names()));
-
-    config.intestine.shape.points[4] = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_STREQ(validate_error(config, c_field_names()).what(),
-                 "shape_points_xyz_m[4] must be finite, got nan");
-    EXPECT_STREQ(validate_error(config, json_field_names()).what(),
-                 "intestine.shape.points[1][1] must be finite, got nan");
-
-    config.intestine.shape.points.resize(9);
-    EXPECT_STREQ(validate_error(config, c_field_names()).what(),
-                 "shape_points_xyz_m must hold 12 values (control_points x 3), got 9");
-}
-
-TEST(Validate, EnumsOutOfRangeFromC) {
-    SceneConfig shape;
-    shape.intestine.shape.kind = static_cast<ShapeKind>(7);
-    EXPECT_STREQ(validate_error(shape, c_field_names()).what(), "shape must be <= 3, got 7");
-
-    SceneConfig integrator;
-    integrator.solver.integrator = static_cast<IntegratorKind>(-1);
-    EXPECT_STREQ(validate_error(integrator, c_field_names()).what(), "integrator must be >= 0, got -1");
-
-    SceneConfig pinned;
-    pinned.pinned = PinnedConfig{4, {}};
-    EXPECT_STREQ(validate_error(pinned, c_field_names()).what(), "pinned_ends must be <= 3, got 4");
-}
-
-TEST(Validate, UnusedShapeFieldsAreNotChecked) {
-    SceneConfig config;  // a helix: the line and serpentine fields are never read
-    config.intestine.shape.direction = {0.0, 0.0, 0.0};
-    config.intestine.shape.leg_spacing = -1.0;
-    EXPECT_NO_THROW(validate(config, c_field_names()));
-    config.intestine.shape.kind = ShapeKind::line;
-    EXPECT_STREQ(validate_error(config, c_field_names()).what(),
-                 "shape_direction must be non-zero, got [0, 0, 0]");
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "spline_reference.h"
+#include "spline/spline_reference.h"
 
 namespace {
 
@@ -17,17 +17,9 @@ using enteron::spline::SegmentWeights;
 namespace sp = enteron::spline;
 using enteron_test::random_vector;
 
-std::array<double, 3> eval(const std::vector<double>& q, const SegmentWeights& w) {
-    std::array<double, 3> out{};
-    sp::evaluate(q.data(), w, out.data());
-    return out;
-}
+enteron::Vec3 eval(const std::vector<double>& q, const SegmentWeights& w) { return sp::evaluate(q.data(), w); }
 
-double max_abs_diff(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    double m = 0.0;
-    for (int c = 0; c < 3; ++c) m = std::max(m, std::fabs(a[c] - b[c]));
-    return m;
-}
+double max_abs_diff(const enteron::Vec3& a, const enteron::Vec3& b) { return (a - b).cwiseAbs().maxCoeff(); }
 
 const std::size_t kCounts[] = {4, 5, 6, 9, 31};
 

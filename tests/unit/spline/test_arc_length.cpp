@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "spline/catmull_rom.h"
-#include "spline_reference.h"
+#include "spline/spline_reference.h"
 
 namespace {
 

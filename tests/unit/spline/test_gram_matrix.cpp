@@ -4,11 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <random>
 #include <vector>
 
-#include "spline_reference.h"
+#include "spline/spline_reference.h"
 
 namespace {
 
@@ -18,14 +17,14 @@ using enteron_test::random_vector;
 using enteron_test::ReferenceSpline;
 using enteron_test::simpson01;
 
-sp::ScalarBandMatrix gram(std::size_t n, Derivative order, double scale) {
-    sp::ScalarBandMatrix m;
+enteron::numerics::ScalarBandMatrix gram(std::size_t n, Derivative order, double scale) {
+    enteron::numerics::ScalarBandMatrix m;
     m.resize(n);
     sp::add_gram_matrix(n, order, scale, m);
     return m;
 }
 
-double quadratic_form(const sp::ScalarBandMatrix& m, const std::vector<double>& x) {
+double quadratic_form(const enteron::numerics::ScalarBandMatrix& m, const std::vector<double>& x) {
     std::vector<double> y(x.size());
     m.multiply(x.data(), y.data());
     double s = 0.0;
@@ -109,7 +108,7 @@ TEST(GramMatrix, MassMatrixIsSymmetricPositiveDefinite) {
         for (int trial = 0; trial < 10; ++trial) EXPECT_GT(quadratic_form(m, random_vector(n, rng)), 0.0);
         // The factorisation solves M x = b.
         const auto b = random_vector(n, rng);
-        const sp::ScalarBandMatrix original = m;
+        const enteron::numerics::ScalarBandMatrix original = m;
         ASSERT_TRUE(m.factor()) << "n " << n;
         auto x = b;
         m.solve(x.data());
