@@ -198,12 +198,13 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
                          TickSummary& summary) {
     Tool& tool = tools_[index];
     const int32_t id = static_cast<int32_t>(index);
-    double force[3] = {0, 0, 0}, torque[3] = {0, 0, 0};
-    int32_t grasping = 0;
-    const bool read = ent_tool_wrench(scene_, id, force, torque) == ENT_OK &&
-                      ent_tool_state(scene_, id, &grasping) == ENT_OK;
-    const Eigen::Vector3d scene_force(force[0], force[1], force[2]);
-    const Eigen::Vector3d scene_torque(torque[0], torque[1], torque[2]);
+    // The wrench and the grasp of the step just published, from one snapshot.
+    ent_tool_feedback output{};
+    output.struct_size = sizeof output;
+    const bool read = ent_tool_read_feedback(scene_, id, &output) == ENT_OK;
+    const int32_t grasping = read ? output.grasping : 0;
+    const Eigen::Vector3d scene_force(output.force_N[0], output.force_N[1], output.force_N[2]);
+    const Eigen::Vector3d scene_torque(output.torque_Nm[0], output.torque_Nm[1], output.torque_Nm[2]);
     ToolSafety& safety = tool.safety;
     safety.render(scene_force, scene_torque, tool_stiffness(scene_, id), step_ok && read);
 
