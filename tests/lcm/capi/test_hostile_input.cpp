@@ -109,7 +109,11 @@ TEST(HostileInput, AFloodIsRejectedOrCoalescedWhileTheSceneStepsOn) {
         }
     });
     flood.join();
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    // The physics thread keeps ticking through the flood; how fast depends on the machine's
+    // load, so wait for its ticks (a bound against a hang only) instead of a fixed time.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (stats(bridge.get()).ticks - ticks_before <= 10 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     ASSERT_EQ(ent_lcm_bridge_stop(bridge.get()), ENT_OK);
     const ent_lcm_stats s = stats(bridge.get());
     EXPECT_EQ(s.commands_received, kCommands);
