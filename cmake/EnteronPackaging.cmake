@@ -6,6 +6,12 @@
 #   Runtime      libenteron0       libenteron.so.0 and libenteron.so.<version>
 #   Development  libenteron-dev    enteron.h, libenteron.so, the CMake package, enteron.pc
 #   Viewer       enteron-viewer    bin/enteron-viewer, when it is built
+#   with the LCM bridge (ENTERON_WITH_LCM, docs/lcm.md):
+#   LcmRuntime      libenteron-lcm0     libenteron_lcm.so.0 and libenteron_lcm.so.<version>
+#   LcmDevelopment  libenteron-lcm-dev  enteron_lcm.h, libenteron_lcm.so, the CMake package's
+#                                       component lcm, enteron_lcm.pc, the .lcm types
+#   LcmPrograms     enteron-lcm         bin/enteron-lcm-server, bin/enteron-lcm-replay
+# (The Python packages, component Python, are not packaged.)
 #
 # `scripts/package` configures a tree for the prefix /usr and runs cpack; tests/packaging
 # unpacks the packages and builds a consumer against them. Every package carries
@@ -36,8 +42,11 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_ENABLE_COMPONENT_DEPENDS ON)
 # dpkg-shlibdeps must find our own libraries, which no installed package provides yet:
 # where the build put them (then --ignore-missing-info, which CPack passes, skips them).
-get_target_property(_enteron_library_dir enteron BINARY_DIR)
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS "${_enteron_library_dir}")
+get_target_property(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS enteron BINARY_DIR)
+if(TARGET enteron_lcm)
+  get_target_property(_enteron_lcm_library_dir enteron_lcm BINARY_DIR)
+  list(APPEND CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS "${_enteron_lcm_library_dir}")
+endif()
 # A shlibs control file for each library package, so that packages built against it get
 # "Depends: libenteron0 (>= <version>)" from dpkg-shlibdeps.
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
@@ -120,6 +129,19 @@ if(TARGET enteron-viewer)
     EXTRA_DEPENDS "libgl1, libegl1" RECOMMENDS "fonts-dejavu-core, ffmpeg"
     SUMMARY "real-time small intestine model for surgery simulators (viewer)"
     DESCRIPTION "${_enteron_about} This package holds enteron-viewer, which shows a scene in a window, moves a tool with the mouse and plots the forces, or renders frames and videos without a display (--headless).")
+endif()
+if(TARGET enteron_lcm)
+  enteron_debian_package(COMPONENT LcmRuntime NAME libenteron-lcm${PROJECT_VERSION_MAJOR} SECTION libs LIBRARY
+    DEPENDS Runtime
+    SUMMARY "real-time small intestine model for surgery simulators (LCM bridge)"
+    DESCRIPTION "${_enteron_about} This package holds the LCM bridge, libenteron_lcm.so.${PROJECT_VERSION_MAJOR}: haptic drivers, viewers and loggers talk to a running scene over LCM, with safety rules on the tool commands and a journal that replays bit for bit.")
+  enteron_debian_package(COMPONENT LcmDevelopment NAME libenteron-lcm-dev SECTION libdevel
+    DEPENDS LcmRuntime Development
+    SUMMARY "real-time small intestine model for surgery simulators (LCM bridge, development)"
+    DESCRIPTION "${_enteron_about} This package holds the C header enteron/enteron_lcm.h, the CMake package's component lcm (target enteron::enteron_lcm), the pkg-config file enteron_lcm.pc and the LCM message types (/usr/share/enteron/lcm).")
+  enteron_debian_package(COMPONENT LcmPrograms NAME enteron-lcm SECTION science DEPENDS LcmRuntime Runtime
+    SUMMARY "real-time small intestine model for surgery simulators (LCM server)"
+    DESCRIPTION "${_enteron_about} This package holds enteron-lcm-server, which runs a scene at 1 kHz and serves it over LCM, and enteron-lcm-replay, which replays a server's journal and checks it bit for bit.")
 endif()
 
 include(CPack)

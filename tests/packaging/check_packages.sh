@@ -7,8 +7,11 @@
 #   3. dependencies: every package with a program or library depends on libc6 (what
 #      dpkg-shlibdeps found), and on each of our packages whose library it needs, at
 #      exactly this version;
-#   4. unpacked with dpkg-deb -x into a scratch tree, the development files build the C
+#   4. each package unpacked with dpkg-deb -x into a scratch tree of its own together with
+#      the packages of ours it depends on (and theirs), and nothing else: every program and
+#      library there finds the libraries it needs; libenteron-dev's tree builds the C
 #      consumer (tests/consumer) with find_package and with pkg-config, and it runs;
+#      libenteron-lcm-dev's, when it is built, the bridge's consumer (tests/lcm/consumer);
 #   5. lintian reports no error (its warnings and notes are printed, not fatal).
 #
 # Usage: check_packages.sh --packages DIR --work-dir DIR --expect "name name ..." [--no-lintian]
@@ -69,13 +72,10 @@ for name in "${expected[@]}"; do
 done
 echo "all at version $version"
 
-# Unpack each package on its own (to see what it holds) and all into one tree (to use them).
-tree="$work_dir/tree"
-mkdir -p "$tree"
+# Unpack each package on its own, to see what it holds.
 for name in "${expected[@]}"; do
   mkdir -p "$work_dir/one/$name" "$work_dir/control/$name"
   dpkg-deb -x "${deb_of[$name]}" "$work_dir/one/$name"
-  dpkg-deb -x "${deb_of[$name]}" "$tree"
   dpkg-deb -e "${deb_of[$name]}" "$work_dir/control/$name"
 done
 
@@ -143,14 +143,54 @@ for name in "${expected[@]}"; do
   done < <(find "$work_dir/one/$name" -type l -name '*.so')
 done
 
-step "4. the C consumer against the unpacked tree $tree/usr"
-pc_file="$(find "$tree/usr" -path '*/pkgconfig/enteron.pc' -print -quit)"
-[[ -n "$pc_file" ]] || fail "no pkgconfig/enteron.pc in the unpacked packages"
-libdir="${pc_file#"$tree/usr/"}"
-libdir="${libdir%/pkgconfig/enteron.pc}"
-echo "libdir: $libdir"
-"$here/../consumer/run_consumer_test.sh" --installed-tree "$tree/usr" --work-dir "$work_dir/consumer" \
-  --mode all --libdir "$libdir" --includedir include
+step "4. each package with the packages of ours it depends on, unpacked in a tree of its own"
+# unpack_closure NAME TREE: NAME and, recursively, every package of ours in its Depends.
+unpack_closure() {
+  local name="$1" tree="$2" dependency
+  [[ ! -e "$tree/.unpacked-$name" ]] || return 0
+  dpkg-deb -x "${deb_of[$name]}" "$tree"
+  touch "$tree/.unpacked-$name"
+  while IFS= read -r dependency; do
+    dependency="${dependency%% *}"
+    [[ -z "${deb_of[$dependency]:-}" ]] || unpack_closure "$dependency" "$tree"
+  done < <(dpkg-deb -f "${deb_of[$name]}" Depends | tr ',' '\n' | sed 's/^ *//')
+}
+libdir=""
+for name in "${expected[@]}"; do
+  tree="$work_dir/tree/$name"
+  mkdir -p "$tree"
+  unpack_closure "$name" "$tree"
+  echo "$name: $(cd "$tree" && ls .unpacked-* | sed 's/^\.unpacked-//' | tr '\n' ' ')"
+  # Where our libraries are in this tree (the multiarch libdir, or lib).
+  library_dirs="$(find "$tree/usr" -name 'libenteron*.so.*' -printf '%h\n' | sort -u | paste -sd:)"
+  while IFS= read -r file; do
+    missing="$(LD_LIBRARY_PATH="$library_dirs" ldd "$file" | grep 'not found' || true)"
+    [[ -z "$missing" ]] || fail "$name: ${file#"$work_dir/one/$name"} with only $name and the packages it depends on: $missing"
+  done < <(elf_files "$name")
+  pc_file="$(find "$tree/usr" -path '*/pkgconfig/enteron.pc' -print -quit)"
+  if [[ -n "$pc_file" && -z "$libdir" ]]; then
+    libdir="${pc_file#"$tree/usr/"}"
+    libdir="${libdir%/pkgconfig/enteron.pc}"
+  fi
+done
+echo "every program and library finds the libraries it needs; libdir: $libdir"
+[[ -n "${deb_of[libenteron-dev]:-}" ]] || fail "no libenteron-dev to build the consumer with"
+"$here/../consumer/run_consumer_test.sh" --installed-tree "$work_dir/tree/libenteron-dev/usr" \
+  --work-dir "$work_dir/consumer" --mode all --libdir "$libdir" --includedir include
+
+if [[ -n "${deb_of[libenteron-lcm-dev]:-}" ]]; then
+  step "4b. the LCM bridge's consumer against libenteron-lcm-dev's tree"
+  prefix="$work_dir/tree/libenteron-lcm-dev/usr"
+  lcm_consumer="$here/../lcm/consumer"
+  "${CMAKE:-cmake}" -S "$lcm_consumer" -B "$work_dir/lcm-consumer" -DCMAKE_PREFIX_PATH="$prefix"
+  "${CMAKE:-cmake}" --build "$work_dir/lcm-consumer"
+  LD_LIBRARY_PATH="$prefix/$libdir" "$work_dir/lcm-consumer/lcm_consumer"
+  read -ra flags <<<"$(PKG_CONFIG_PATH="$prefix/$libdir/pkgconfig" "${PKG_CONFIG:-pkg-config}" --cflags --libs enteron_lcm)"
+  echo "pkg-config enteron_lcm: ${flags[*]}"
+  "${CC:-cc}" -std=c99 -pedantic -Wall -Wextra -Werror "$lcm_consumer/lcm_consumer.c" \
+    -o "$work_dir/lcm-consumer-pkg-config" "${flags[@]}" -Wl,-rpath,"$prefix/$libdir"
+  "$work_dir/lcm-consumer-pkg-config"
+fi
 
 if [[ $run_lintian -eq 1 ]]; then
   step "5. lintian"
