@@ -89,9 +89,10 @@ set(CPACK_COMPONENTS_ALL "")
 set(ENTERON_DEBIAN_PACKAGES "")
 # enteron_debian_package(COMPONENT NAME SECTION SUMMARY DESCRIPTION [LIBRARY]
 #                        [DEPENDS component...] [EXTRA_DEPENDS text] [RECOMMENDS text]):
-# the component becomes the package NAME; LIBRARY: it holds a shared library. DESCRIPTION is the long description, one
-# paragraph; DEPENDS are other components of this project, EXTRA_DEPENDS what
-# dpkg-shlibdeps cannot see (programs loaded with dlopen).
+# the component becomes the package NAME. LIBRARY: it holds a shared library (an ldconfig
+# trigger). DESCRIPTION is the long description, one paragraph; DEPENDS are other
+# components of this project, EXTRA_DEPENDS what dpkg-shlibdeps cannot see (libraries
+# opened with dlopen).
 macro(enteron_debian_package)
   cmake_parse_arguments(_package "LIBRARY" "COMPONENT;NAME;SECTION;SUMMARY;DESCRIPTION;EXTRA_DEPENDS;RECOMMENDS"
                         "DEPENDS" ${ARGN})
