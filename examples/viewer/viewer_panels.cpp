@@ -62,7 +62,16 @@ void Viewer::build_panels() {
         ImGui::TextWrapped("Drop a scene file (.json) on the window, or edit the text under Scene.");
     }
 
-    if (session_ && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (session_ && frame_.link.remote && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // The server owns the clock: what arrives, not controls.
+        ImGui::TextWrapped("%s", session_->name().c_str());
+        ImGui::Text("t = %.3f s   %s", frame_.time_s, link_state_name(frame_.link.state));
+        ImGui::TextWrapped("%s", describe_link(frame_.link).c_str());
+        if (!frame_.link.last_rejection.empty())
+            ImGui::TextWrapped("last rejected: %s", frame_.link.last_rejection.c_str());
+        ImGui::Text("step: median %.0f us, largest %.0f us (the server's)", histories_.step_median_us,
+                    histories_.step_max_us);
+    } else if (session_ && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::TextWrapped("%s", session_->name().c_str());
         ImGui::Text("t = %.3f s   %s", frame_.time_s, frame_.paused ? "paused" : "running");
         if (ImGui::Button(frame_.paused ? "Run (Space)" : "Pause (Space)")) session_->set_paused(!session_->paused());
@@ -270,6 +279,7 @@ void Viewer::build_hud() {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                      ImGuiWindowFlags_NoSavedSettings);
     ImGui::Text("Enteron   t = %.2f s", frame_.time_s);
+    if (frame_.link.remote) ImGui::Text("%s: %s", frame_.link.url.c_str(), link_state_name(frame_.link.state));
     if (tools_.count() > 0) {
         const ent_tool_feedback& tool = frame_.tools[0].feedback;
         const double magnitude = std::sqrt(tool.force_N[0] * tool.force_N[0] + tool.force_N[1] * tool.force_N[1] +
@@ -284,7 +294,8 @@ void Viewer::build_hud() {
 }
 
 void Viewer::build_status_line(bool always) {
-    const bool failed = frame_.problem.count > 0 || !load_error_.empty();
+    const bool failed = frame_.problem.count > 0 || !load_error_.empty() ||
+                        (frame_.link.remote && frame_.link.state != LinkStatus::State::live);
     if (!always && !failed) return;
     const ImGuiIO& io = ImGui::GetIO();
     const float height = ImGui::GetFrameHeightWithSpacing() + 4.0f;
@@ -301,6 +312,14 @@ void Viewer::build_status_line(bool always) {
         ImGui::TextColored(kErrorColour, "%s from %s at t = %.3f s: %s%s", status_name(p.status), p.call.c_str(),
                            p.time_s, p.message.c_str(),
                            frame_.paused ? "  (paused: Backspace resets, Right steps again)" : "");
+    } else if (session_ && frame_.link.remote) {
+        const bool live = frame_.link.state == LinkStatus::State::live;
+        const std::string line = frame_.link.url + ": " + describe_link(frame_.link) + "   t = " +
+                                 std::to_string(frame_.time_s) + " s";
+        if (live)
+            ImGui::TextUnformatted(line.c_str());
+        else
+            ImGui::TextColored(kErrorColour, "%s", line.c_str());
     } else if (session_) {
         ImGui::Text("t = %.3f s   %s x%.3g (real-time factor %.2f)   %.0f frames/s   step %.0f us (largest %.0f)   "
                     "%u contacts",
