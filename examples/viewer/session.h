@@ -66,6 +66,8 @@ struct LinkStatus {
     std::uint64_t commands_sent = 0;       // tool_command_t
     std::string last_rejection;            // "CHANNEL: why"
     double tool0_largest_move_m = 0.0;     // the server's tool 0 from where it was first seen
+    double tool0_sent_m[3] = {};           // tool 0's target as sent (scene frame, before the mapping)
+    double tool0_commanded_m[3] = {};      // the server's newest accepted command for it, mapped back
 };
 
 inline const char* link_state_name(LinkStatus::State state) {

@@ -6,6 +6,7 @@ while a hostile sender publishes broken messages on the viewer's channels, enter
 --lcm --headless captures the remote session with a scripted mouse drag. Then:
   - the viewer saw the session live, drew the bowel (its pink covers a plausible share of the
     picture, shaded), and rejected every broken message (counted), without a crash;
+  - the server's command (mapped back into the scene) is the viewer's target;
   - the drag moved the remote tool: the server's own states say its tool 0 moved and pushed
     the bowel (a force on the tool), and the server accepted the viewer's commands and rejected none of them;
   - a second run with the server's mesh (--mesh-hz) draws that mesh;
@@ -120,12 +121,17 @@ def run_viewer(work, args, timeout=240):
 
 def remote_summary(stdout):
     match = re.search(r"remote \S+: (\S+) .*?, (\d+) states, (\d+) meshes, (\d+) sessions, (\d+) rejected, "
-                      r"(\d+) late, (\d+) commands sent; tool 0 moved ([0-9.]+) m", stdout)
+                      r"(\d+) late, (\d+) commands sent; tool 0 moved ([0-9.]+) m, "
+                      r"sent \(([-0-9.]+), ([-0-9.]+), ([-0-9.]+)\) m, "
+                      r"the server's command \(([-0-9.]+), ([-0-9.]+), ([-0-9.]+)\) m", stdout)
     if not match:
         fail("no remote summary line in the viewer's output")
     keys = ("state", "states", "meshes", "sessions", "rejected", "late", "commands", "moved_m")
     values = [match.group(1)] + [int(match.group(i)) for i in range(2, 8)] + [float(match.group(8))]
-    return dict(zip(keys, values))
+    summary = dict(zip(keys, values))
+    summary["sent_m"] = [float(match.group(i)) for i in range(9, 12)]
+    summary["commanded_m"] = [float(match.group(i)) for i in range(12, 15)]
+    return summary
 
 
 def check_bowel(path, what):
@@ -172,6 +178,12 @@ def main():
         fail("the drag sent too few commands: %s" % summary)
     if summary["moved_m"] < 0.02:
         fail("the server's tool did not follow the drag: %s" % summary)
+    # The viewer sends device units (mm: the inverse of the server's workspace mapping); the
+    # server maps them back: its command is where the mouse put the target, to the micrometre.
+    error_m = max(abs(a - b) for a, b in zip(summary["sent_m"], summary["commanded_m"]))
+    if error_m > 2e-6:  # printed to 1 um
+        fail("the server's command %s is not the viewer's target %s (the workspace mapping)" %
+             (summary["commanded_m"], summary["sent_m"]))
     force = re.search(r"force plot: \d+ samples, (\d+) non-zero, largest \|F\| ([0-9.]+) N", done.stdout)
     if not force or int(force.group(1)) < 3 or float(force.group(2)) < 0.02:
         fail("the server's states never showed a force on the tool: the drag did not push the bowel")

@@ -22,7 +22,7 @@ Eigen::Vector3d perpendicular(const Eigen::Vector3d& t) {
 
 }  // namespace
 
-void make_axis_tube(const std::vector<double>& axis_m, double radius_m, int sides, AxisTube& out) {
+void make_axis_tube(const std::vector<double>& axis_m, double radius_m, int sides, MeshArrays& out) {
     out.positions_m.clear();
     out.normals.clear();
     out.axis_u.clear();

@@ -72,6 +72,15 @@ bool decode(int (*decoder)(const void*, int, int, Message*), int (*cleanup)(Mess
     return used;
 }
 
+// Whether a message of this tick is older than the newest shown (udpm may reorder), and
+// if not, makes it the newest. Far older is a server that started again: its ticks count
+// from 0.
+bool late(std::int64_t tick, std::int64_t& newest) {
+    if (tick <= newest && newest - tick < kRestartTicks) return true;
+    newest = tick;
+    return false;
+}
+
 }  // namespace
 
 ToolPose scene_to_device(const RemoteScene& scene, const ToolPose& pose) {
@@ -213,7 +222,7 @@ void RemoteLink::on_session(const void* bytes, std::size_t size) {
 
 void RemoteLink::on_state(const void* bytes, std::size_t size) {
     std::string why = "cannot decode";
-    bool late = false;
+    bool was_late = false;
     const bool ok = decode(&enteron_scene_state_t_decode, &enteron_scene_state_t_decode_cleanup, bytes, size,
                            [&](const enteron_scene_state_t& m) {
         if (m.num_tools > kMostTools) {
@@ -268,17 +277,12 @@ void RemoteLink::on_state(const void* bytes, std::size_t size) {
             tool.status = t.status;
             state.tools.push_back(tool);
         }
-        // Out of order (udpm may reorder; a slow viewer never does): shown states only advance.
-        if (state.tick <= newest_state_tick_ && newest_state_tick_ - state.tick < kRestartTicks) {
-            late = true;
-            return true;
-        }
-        newest_state_tick_ = state.tick;
-        states_.publish(state);
+        was_late = late(state.tick, newest_state_tick_);
+        if (!was_late) states_.publish(state);
         return true;
     });
     if (!ok) return reject(state_channel_, why);
-    if (late) {
+    if (was_late) {
         counters_.late.fetch_add(1);
         return;
     }
@@ -288,7 +292,7 @@ void RemoteLink::on_state(const void* bytes, std::size_t size) {
 
 void RemoteLink::on_mesh(const void* bytes, std::size_t size) {
     std::string why = "cannot decode";
-    bool late = false;
+    bool was_late = false;
     const bool ok = decode(&enteron_mesh_t_decode, &enteron_mesh_t_decode_cleanup, bytes, size,
                            [&](const enteron_mesh_t& m) {
         if (m.skin_method < ENT_SKIN_TUBE || m.skin_method > ENT_SKIN_CONVOLUTION || !std::isfinite(m.sim_time_s)) {
@@ -300,23 +304,23 @@ void RemoteLink::on_mesh(const void* bytes, std::size_t size) {
         mesh.sim_time_s = m.sim_time_s;
         mesh.skin_method = m.skin_method;
         const auto vertices = static_cast<std::size_t>(m.num_vertices);
-        mesh.positions_m.resize(3 * vertices);
-        mesh.normals.resize(3 * vertices);
-        mesh.axis_u.assign(m.axis_u, m.axis_u + vertices);
+        mesh.arrays.positions_m.resize(3 * vertices);
+        mesh.arrays.normals.resize(3 * vertices);
+        mesh.arrays.axis_u.assign(m.axis_u, m.axis_u + vertices);
         for (std::size_t v = 0; v < vertices; ++v)
             for (int c = 0; c < 3; ++c) {
-                mesh.positions_m[3 * v + c] = m.positions_m[v][c];
-                mesh.normals[3 * v + c] = m.normals[v][c];
+                mesh.arrays.positions_m[3 * v + c] = m.positions_m[v][c];
+                mesh.arrays.normals[3 * v + c] = m.normals[v][c];
             }
         const auto finite_float = [](float x) { return std::isfinite(x); };
-        if (!std::all_of(mesh.positions_m.begin(), mesh.positions_m.end(), finite_float) ||
-            !std::all_of(mesh.normals.begin(), mesh.normals.end(), finite_float) ||
-            !std::all_of(mesh.axis_u.begin(), mesh.axis_u.end(), finite_float)) {
+        if (!std::all_of(mesh.arrays.positions_m.begin(), mesh.arrays.positions_m.end(), finite_float) ||
+            !std::all_of(mesh.arrays.normals.begin(), mesh.arrays.normals.end(), finite_float) ||
+            !std::all_of(mesh.arrays.axis_u.begin(), mesh.arrays.axis_u.end(), finite_float)) {
             why = "a vertex, normal or u that is not finite";
             return false;
         }
         // An index beyond the vertices would make the renderer read past them.
-        mesh.indices.resize(3 * static_cast<std::size_t>(m.num_triangles));
+        mesh.arrays.indices.resize(3 * static_cast<std::size_t>(m.num_triangles));
         for (std::int32_t t = 0; t < m.num_triangles; ++t)
             for (int c = 0; c < 3; ++c) {
                 const std::int32_t index = m.triangles[t][c];
@@ -325,18 +329,14 @@ void RemoteLink::on_mesh(const void* bytes, std::size_t size) {
                           std::to_string(m.num_vertices);
                     return false;
                 }
-                mesh.indices[3 * static_cast<std::size_t>(t) + c] = static_cast<std::uint32_t>(index);
+                mesh.arrays.indices[3 * static_cast<std::size_t>(t) + c] = static_cast<std::uint32_t>(index);
             }
-        if (mesh.tick <= newest_mesh_tick_ && newest_mesh_tick_ - mesh.tick < kRestartTicks) {
-            late = true;
-            return true;
-        }
-        newest_mesh_tick_ = mesh.tick;
-        meshes_.publish(mesh);
+        was_late = late(mesh.tick, newest_mesh_tick_);
+        if (!was_late) meshes_.publish(mesh);
         return true;
     });
     if (!ok) return reject(mesh_channel_, why);
-    if (late)
+    if (was_late)
         counters_.late.fetch_add(1);
     else
         counters_.meshes.fetch_add(1);

@@ -20,6 +20,7 @@
 #include "../latest_value.h"
 #include "../scene_layout.h"
 #include "../tool_exchange.h"
+#include "axis_tube.h"
 
 namespace viewer {
 
@@ -53,8 +54,7 @@ struct RemoteMesh {
     std::int64_t tick = 0;
     double sim_time_s = 0.0;
     std::int32_t skin_method = 0;          // ENT_SKIN_*
-    std::vector<float> positions_m, normals, axis_u;
-    std::vector<std::uint32_t> indices;    // each < positions_m.size() / 3
+    MeshArrays arrays;                     // every index < its vertices
 };
 
 // A session_t that passed the checks: the scene and the bridge's settings.

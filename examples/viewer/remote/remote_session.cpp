@@ -25,6 +25,17 @@ bool same_command(const ToolCommands& a, const ToolCommands& b, std::uint32_t i)
            std::memcmp(a.target[i].orientation_wxyz, b.target[i].orientation_wxyz, sizeof a.target[i].orientation_wxyz) == 0;
 }
 
+// The viewer's mesh view of arrays this session keeps until the next read.
+void point_at(const MeshArrays& arrays, double time_s, ent_mesh_view& view) {
+    view.vertex_count = static_cast<std::uint32_t>(arrays.axis_u.size());
+    view.triangle_count = static_cast<std::uint32_t>(arrays.indices.size() / 3);
+    view.positions_xyz_m = arrays.positions_m.data();
+    view.normals_xyz = arrays.normals.data();
+    view.axis_u = arrays.axis_u.data();
+    view.indices = arrays.indices.data();
+    view.time_s = time_s;
+}
+
 }  // namespace
 
 std::unique_ptr<RemoteSession> RemoteSession::open(const std::string& url, const std::string& channel_suffix,
@@ -112,13 +123,7 @@ void RemoteSession::fill_mesh(FrameState& frame) {
     frame.mesh.struct_size = sizeof frame.mesh;
     const bool use_mesh = have_mesh_ && (!have_state_ || state_.sim_time_s - mesh_.sim_time_s < kMeshKeptS);
     if (use_mesh) {
-        frame.mesh.vertex_count = static_cast<std::uint32_t>(mesh_.axis_u.size());
-        frame.mesh.triangle_count = static_cast<std::uint32_t>(mesh_.indices.size() / 3);
-        frame.mesh.positions_xyz_m = mesh_.positions_m.data();
-        frame.mesh.normals_xyz = mesh_.normals.data();
-        frame.mesh.axis_u = mesh_.axis_u.data();
-        frame.mesh.indices = mesh_.indices.data();
-        frame.mesh.time_s = mesh_.sim_time_s;
+        point_at(mesh_.arrays, mesh_.sim_time_s, frame.mesh);
         skin_.method = mesh_.skin_method;
         return;
     }
@@ -127,13 +132,7 @@ void RemoteSession::fill_mesh(FrameState& frame) {
         make_axis_tube(state_.axis_m, state_.radius_m, kTubeSides, tube_);
         tube_tick_ = state_.tick;
     }
-    frame.mesh.vertex_count = static_cast<std::uint32_t>(tube_.axis_u.size());
-    frame.mesh.triangle_count = static_cast<std::uint32_t>(tube_.indices.size() / 3);
-    frame.mesh.positions_xyz_m = tube_.positions_m.data();
-    frame.mesh.normals_xyz = tube_.normals.data();
-    frame.mesh.axis_u = tube_.axis_u.data();
-    frame.mesh.indices = tube_.indices.data();
-    frame.mesh.time_s = state_.sim_time_s;
+    point_at(tube_, state_.sim_time_s, frame.mesh);
     skin_.method = ENT_SKIN_TUBE;
 }
 
@@ -207,6 +206,9 @@ void RemoteSession::read(const FrameRequest& request, FrameState& frame) {
     link.commands_sent = counters.commands_sent.load();
     link.last_rejection = last_rejection_;
     link.tool0_largest_move_m = tool0_largest_move_m_;
+    std::copy(outgoing_.commands.target[0].position_m, outgoing_.commands.target[0].position_m + 3, link.tool0_sent_m);
+    if (!state_.tools.empty() && state_.tools[0].tool == 0)
+        std::copy(state_.tools[0].commanded.position_m, state_.tools[0].commanded.position_m + 3, link.tool0_commanded_m);
     link.age_s = link.states > 0 ? 1e-9 * static_cast<double>(steady_ns() - counters.last_state_ns.load()) : -1.0;
     link.state = link.states == 0                ? LinkStatus::State::waiting
                  : link.age_s > kStaleAfterS     ? LinkStatus::State::stale

@@ -60,7 +60,7 @@ private:
     RemoteState state_;
     RemoteMesh mesh_;
     bool have_state_ = false, have_mesh_ = false;
-    AxisTube tube_;
+    MeshArrays tube_;
     std::int64_t tube_tick_ = -1;
     // Tools drive once the user has moved them: the commands when the scene arrived are
     // the baseline, and a tool whose target or jaws leave it is driven from then on.
