@@ -3,7 +3,8 @@
 //   enteron-viewer [SCENE.json] [options]      with no scene: the demo scene
 //
 // It uses only the public C API of libenteron: a physics thread drives the scene, the
-// render thread draws the published snapshot through a skin (physics_thread.h).
+// render thread draws the published snapshot through a skin (physics_thread.h). With
+// --lcm URL it shows an enteron-lcm-server's session instead (remote/remote_session.h).
 #include <enteron/enteron.h>
 
 #include <cmath>
@@ -34,7 +35,8 @@ const char kUsage[] =
     "  --ui MODE           full (panels), hud (a small overlay) or none (default: full; headless: hud)\n"
     "  --rate R            slow motion: simulated seconds per wall second, (0, 1] (default 1)\n"
     "  --lcm URL           show the session of an enteron-lcm-server there instead of a scene here\n"
-    "                      (e.g. udpm://239.255.76.67:7667?ttl=0); the mouse sends tool_command_t\n"
+    "                      (e.g. udpm://239.255.76.67:7667?ttl=0); the mouse sends tool_command_t;\n"
+    "                      headless, --seconds and the script's times are wall seconds\n"
     "  --channel-suffix S  with --lcm: the server's --channel-suffix\n"
     "Exit status: 0 done; 1 the scene did not load, a library call failed or an output could not be\n"
     "written; 2 a bad command line; 3 no OpenGL 3.3 context could be made.\n";
@@ -129,10 +131,10 @@ int main(int argc, char** argv) {
         return usage_error("--video wants a .mp4 or .gif file, got " + video);
     if (headless && !ui_given) settings.ui = UiMode::hud;
     if (headless && !size_given) options.width = 1280, options.height = 720;
-    // The demo scene, headless, plays the demo's tool path unless told otherwise.
     const bool remote = !settings.lcm_url.empty();
     if (remote && !settings.scene_path.empty()) return usage_error("--lcm shows the server's scene: give no SCENE.json");
     if (!remote && !settings.lcm_channel_suffix.empty()) return usage_error("--channel-suffix goes with --lcm");
+    // The demo scene, headless, plays the demo's tool path unless told otherwise.
     if (script_name.empty() && headless && settings.scene_path.empty() && !remote) script_name = "demo";
     if (!script_name.empty()) {
         std::string error;

@@ -198,7 +198,9 @@ void Viewer::build_panels() {
         ImGui::Text("energy: kinetic %.4f J, potential %.4f J", s.kinetic_energy_J, s.potential_energy_J);
         if (frame_.dropped_steps > 0)
             ImGui::Text("plot samples dropped %llu", static_cast<unsigned long long>(frame_.dropped_steps));
-        if (ImGui::BeginTable("effects", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        if (frame_.link.remote) {
+            ImGui::TextDisabled("per-effect times: not in the server's stream");
+        } else if (ImGui::BeginTable("effects", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
             ImGui::TableSetupColumn("effect");
             ImGui::TableSetupColumn("us / step");
             ImGui::TableSetupColumn("evaluations");
@@ -220,7 +222,14 @@ void Viewer::build_panels() {
         }
     }
 
-    if (ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (frame_.link.remote && ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // The server makes the mesh; the viewer only draws it.
+        if (frame_.link.meshes > 0)
+            ImGui::TextWrapped("the server's mesh_t (%s; --mesh-skin, --mesh-hz)", kSkinNames[session_->skin().method]);
+        else
+            ImGui::TextWrapped("a tube around the state's axis (the server sends no mesh: --mesh-hz 0)");
+        ImGui::Text("%u triangles, %u vertices", frame_.mesh.triangle_count, frame_.mesh.vertex_count);
+    } else if (ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
         ent_skin_desc desc = session_->skin();
         bool changed = false;
         for (int m = 0; m < 3; ++m) {
@@ -314,10 +323,9 @@ void Viewer::build_status_line(bool always) {
                            frame_.paused ? "  (paused: Backspace resets, Right steps again)" : "");
     } else if (session_ && frame_.link.remote) {
         const bool live = frame_.link.state == LinkStatus::State::live;
-        const std::string line = frame_.link.url + ": " + describe_link(frame_.link) + "   t = " +
-                                 std::to_string(frame_.time_s) + " s";
+        const std::string line = frame_.link.url + ": " + describe_link(frame_.link);
         if (live)
-            ImGui::TextUnformatted(line.c_str());
+            ImGui::Text("%s   t = %.3f s", line.c_str(), frame_.time_s);
         else
             ImGui::TextColored(kErrorColour, "%s", line.c_str());
     } else if (session_) {
