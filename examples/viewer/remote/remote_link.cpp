@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 
 namespace viewer {
@@ -158,9 +159,12 @@ void RemoteLink::on_message(const lcm_recv_buf_t* buffer, const char* channel, v
 }
 
 void RemoteLink::receive(const std::string& channel, const void* bytes, std::size_t size) {
-    const int type = channel == state_channel_ ? ENT_LCM_SCENE_STATE
-                     : channel == mesh_channel_ ? ENT_LCM_MESH
-                                                : ENT_LCM_SESSION;
+    // LCM subscribes by regular expression: a suffix with a '.' in it matches more channels.
+    const int type = channel == state_channel_     ? ENT_LCM_SCENE_STATE
+                     : channel == mesh_channel_    ? ENT_LCM_MESH
+                     : channel == session_channel_ ? ENT_LCM_SESSION
+                                                   : -1;
+    if (type < 0) return;
     if (ent_lcm_check_message(type, bytes, size) != ENT_OK) return reject(channel, ent_lcm_last_error());
     if (type == ENT_LCM_SCENE_STATE) on_state(bytes, size);
     if (type == ENT_LCM_MESH) on_mesh(bytes, size);
