@@ -210,9 +210,11 @@ void RemoteSession::read(const FrameRequest& request, FrameState& frame) {
     if (!state_.tools.empty() && state_.tools[0].tool == 0)
         std::copy(state_.tools[0].commanded.position_m, state_.tools[0].commanded.position_m + 3, link.tool0_commanded_m);
     link.age_s = link.states > 0 ? 1e-9 * static_cast<double>(steady_ns() - counters.last_state_ns.load()) : -1.0;
-    link.state = link.states == 0                ? LinkStatus::State::waiting
-                 : link.age_s > kStaleAfterS     ? LinkStatus::State::stale
-                                                 : LinkStatus::State::live;
+    // A server that sends few states (--state-hz 1) is not stale between two of them.
+    const double stale_s = scene_.state_hz > 0.0 ? std::max(kStaleAfterS, 3.0 / scene_.state_hz) : kStaleAfterS;
+    link.state = link.states == 0          ? LinkStatus::State::waiting
+                 : link.age_s > stale_s    ? LinkStatus::State::stale
+                                           : LinkStatus::State::live;
 }
 
 }  // namespace viewer

@@ -21,7 +21,8 @@ namespace viewer {
 
 class RemoteSession final : public Session {
 public:
-    // A state older than this (wall time) is stale: the server stopped or the network did.
+    // A state older than this (wall time), or than three of the server's state periods if
+    // longer, is stale: the server stopped or the network did.
     static constexpr double kStaleAfterS = 0.5;
 
     static std::unique_ptr<RemoteSession> open(const std::string& url, const std::string& channel_suffix,
