@@ -125,11 +125,16 @@ enteron_debian_package(COMPONENT Development NAME libenteron-dev SECTION libdeve
   SUMMARY "real-time small intestine model for surgery simulators (development files)"
   DESCRIPTION "${_enteron_about} This package holds the C header enteron/enteron.h, the CMake package (find_package(enteron), target enteron::enteron) and the pkg-config file enteron.pc.")
 if(TARGET enteron-viewer)
-  enteron_debian_package(COMPONENT Viewer NAME enteron-viewer SECTION science DEPENDS Runtime
+  # With the bridge built, the viewer's --lcm mode links libenteron_lcm.
+  set(_enteron_viewer_needs Runtime)
+  if(TARGET enteron_lcm)
+    list(APPEND _enteron_viewer_needs LcmRuntime)
+  endif()
+  enteron_debian_package(COMPONENT Viewer NAME enteron-viewer SECTION science DEPENDS ${_enteron_viewer_needs}
     # libepoxy opens libGL and libEGL at run time; ffmpeg only writes --video.
     EXTRA_DEPENDS "libgl1, libegl1" RECOMMENDS "fonts-dejavu-core, ffmpeg"
     SUMMARY "real-time small intestine model for surgery simulators (viewer)"
-    DESCRIPTION "${_enteron_about} This package holds enteron-viewer, which shows a scene in a window, moves a tool with the mouse and plots the forces, or renders frames and videos without a display (--headless).")
+    DESCRIPTION "${_enteron_about} This package holds enteron-viewer, which shows a scene in a window, moves a tool with the mouse and plots the forces, or renders frames and videos without a display (--headless); with --lcm it shows a running enteron-lcm-server session.")
 endif()
 if(TARGET enteron_lcm)
   enteron_debian_package(COMPONENT LcmRuntime NAME libenteron-lcm${PROJECT_VERSION_MAJOR} SECTION libs LIBRARY
