@@ -107,7 +107,8 @@ ENT_API ent_status ent_scene_contact_summary(const ent_scene* scene, ent_contact
         const std::size_t points = handle.published->control_points();
         const double rest_segment = snapshot->stats.rest_length / double(points - 1);
         const enteron::spline::SegmentStretch stretch =
-            enteron::spline::largest_segment_stretch(snapshot->control_points.data(), points, rest_segment);
+            enteron::spline::largest_segment_stretch(snapshot->control_points.data(), points, rest_segment,
+                                                     handle.published->ends());
         full.largest_stretch = stretch.stretch;
         full.largest_stretch_u = stretch.u;
         full.time_s = snapshot->stats.time;

@@ -24,6 +24,14 @@ public:
     // stable for h (omega + gamma) <= beta. Infinite for an implicit method.
     virtual double stability_interval() const = 0;
 
+    // A multistep method's history of earlier substeps (bdf2.h) is state: save_history keeps
+    // a copy when the scene backs up its state before a step, restore_history brings it back
+    // with a rolled-back state, and restart forgets it (the next substep starts the method
+    // again, as after the state was set from outside). One-step methods have none.
+    virtual void save_history() {}
+    virtual void restore_history() {}
+    virtual void restart() {}
+
     // Save and restore (base/state_io.h), as Effect's: an integrator with a history (a
     // multistep method's previous states) writes it into its own section and reads it back,
     // assigning only when !in.checking(). The one-step integrators have none.
@@ -31,7 +39,6 @@ public:
     virtual void restore_state(StateReader& /*in*/) {}
 };
 
-Owned<Integrator> make_integrator(IntegratorKind kind, std::size_t coordinates,
-                                  std::pmr::memory_resource* memory);
+Owned<Integrator> make_integrator(IntegratorKind kind, const AxisModel& model, std::pmr::memory_resource* memory);
 
 }  // namespace enteron::mechanics

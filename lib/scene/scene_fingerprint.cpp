@@ -53,6 +53,7 @@ void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
     });
     add_optional(f, config.pinned, [&](const PinnedConfig& p) {
         add(f, static_cast<std::size_t>(p.ends));
+        add(f, static_cast<std::size_t>(p.clamped));
         add(f, p.points.size());
         for (const uint32_t point : p.points) add(f, point);
     });

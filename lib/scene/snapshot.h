@@ -3,23 +3,27 @@
 //
 // A small pool of preallocated slots: the stepping thread fills a slot that is neither the
 // latest nor being read, then makes it the latest; a reader pins the latest slot while it
-// copies from it. The mutex guards only the slot bookkeeping (a few integer operations),
-// so the stepping thread never waits on a reader for longer than that.
+// copies from it. The bookkeeping is atomic, without a lock: the stepping thread never
+// waits (nor makes a system call) for a reader, and readers never wait for it. A reader
+// counts itself on the latest slot, then checks that the slot is still the latest (else it
+// uncounts and tries again): the writer only fills slots that are not the latest and that
+// it saw unread, so a slot a reader counted on and found latest is complete and stays put.
 //
 // The publisher outlives the scene when skins still read it (the C API shares it between
 // them): a skin then keeps working on the last state published.
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory_resource>
-#include <mutex>
 #include <vector>
 
 #include "collision/contact_log.h"
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
+#include "spline/catmull_rom.h"
 
 namespace enteron::scene {
 
@@ -67,7 +71,9 @@ class SnapshotPublisher {
 public:
     static constexpr std::size_t kSlots = 8;
 
-    SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory);
+    // `ends`: how the axis' spline continues past its ends (scene_config.h spline_ends), for
+    // the readers that evaluate the axis from the control points.
+    SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory, spline::Ends ends = {});
 
     // A slot the stepping thread may fill, or nullptr if every slot is busy (then this
     // publication is skipped; the next one will go through).
@@ -82,6 +88,8 @@ public:
     void reserve_contacts(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
+    // The spline's end treatment of every snapshot's axis.
+    spline::Ends ends() const { return ends_; }
 
     // Pins the latest snapshot for reading while it lives.
     class Reader {
@@ -100,15 +108,15 @@ public:
     };
 
 private:
-    // Calls change(slot) on every slot, each while no reader copies from it.
-    template <class Change>
-    void change_each_slot(Change&& change);
+    // Calls reserve(slot) on every slot, each while the stepping thread may touch it (see
+    // reserve_tools in snapshot.cpp).
+    template <class Reserve>
+    void reserve_each_slot(Reserve&& reserve);
 
-    mutable std::mutex mutex_;
     std::pmr::vector<Snapshot> slots_;
-    mutable std::array<uint32_t, kSlots> readers_{};
-    std::size_t latest_ = 0;
-    std::size_t previous_ = 0;  // the latest before latest_
+    mutable std::array<std::atomic<uint32_t>, kSlots> readers_{};  // readers pinning each slot
+    std::atomic<std::size_t> latest_{0};
+    spline::Ends ends_;
 };
 
 }  // namespace enteron::scene

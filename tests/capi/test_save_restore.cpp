@@ -170,6 +170,24 @@ TEST(SaveRestore, ARestoredSceneContinuesBitIdentically) {
     EXPECT_GT(s.self_contacts + s.obstacle_contacts, 0u);
 }
 
+// bdf2 keeps a history of the previous substep (its own section): restored with the rest.
+TEST(SaveRestore, Bdf2ContinuesBitIdentically) {
+    std::string json = kPile;
+    json.replace(json.find("\"max_substeps\": 100"), 19, "\"max_substeps\": 100, \"integrator\": \"bdf2\"");
+    ScenePtr scene = create_json(json);
+    ASSERT_TRUE(scene);
+    const std::vector<double> q = control_points(scene.get());
+    g_aim[0] = q[3 * 6];
+    g_aim[1] = q[3 * 6 + 1];
+    run(scene.get(), 0, 100);
+    const std::vector<unsigned char> image = save(scene.get());
+    const auto first = run(scene.get(), 100, 60);
+    ScenePtr fresh = create_json(json);
+    ASSERT_TRUE(fresh);
+    ASSERT_EQ(ent_scene_restore_state(fresh.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
+    expect_same_runs(first, run(fresh.get(), 100, 60));
+}
+
 TEST(SaveRestore, AFreshSceneFromTheSameDescriptionContinuesTheSame) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
