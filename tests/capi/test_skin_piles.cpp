@@ -2,33 +2,22 @@
 // demo's gently folded bowel, and the tight-fold pile where more than half of the axis
 // bends with a radius under 4 R and U-turns come down to about 1.5 R. Both implicit skins
 // stay within 1 % RMS of the ideal tube of radius R (ent_skin_metrics) on both.
-#include "capi_test_support.h"
+#include "skin_test_support.h"
 
 #include "../../bench/skin_piles.h"
 
 using namespace capi_test;
+using namespace skin_test;
 
 namespace {
 
 constexpr double kR = 0.0125;
 
-struct SkinDeleter {
-    void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
-};
-using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
 
 double radius_error_rms(ent_scene* scene, int32_t method) {
-    ent_skin_desc desc;
-    ent_skin_desc_default(&desc);
-    desc.method = method;
-    ent_skin* raw = nullptr;
-    EXPECT_EQ(ent_skin_create(scene, &desc, &raw), ENT_OK) << ent_last_error();
-    SkinPtr skin(raw);
+    SkinPtr skin = make_skin(scene, method);
     EXPECT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
-    struct ent_skin_metrics m;
-    std::memset(&m, 0, sizeof m);
-    m.struct_size = sizeof m;
-    EXPECT_EQ(ent_skin_metrics(skin.get(), &m), ENT_OK) << ent_last_error();
+    const struct ent_skin_metrics m = metrics(skin.get());
     EXPECT_EQ(m.watertight, 1) << "method " << method;
     return m.radius_error_rms;
 }

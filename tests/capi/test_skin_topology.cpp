@@ -4,11 +4,12 @@
 // across updates; with levels of detail they change in counted steps; point_skeleton says
 // it changes every time. v stays in [0, 1), does not twist along the bowel or jump between
 // frames; tangents are unit, perpendicular to the normals, along increasing u.
-#include "capi_test_support.h"
+#include "skin_test_support.h"
 
 #include <cmath>
 
 using namespace capi_test;
+using namespace skin_test;
 
 namespace {
 
@@ -22,10 +23,6 @@ struct Vec3 {
     double norm() const { return std::sqrt(dot(*this)); }
 };
 
-struct SkinDeleter {
-    void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
-};
-using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
 
 // A 1 m bowel released as a helix, held by its mesentery: it falls, swings and stretches.
 ScenePtr swinging_scene() {
@@ -47,14 +44,6 @@ SkinPtr make(ent_scene* scene, int32_t method, double chord_error = 0.0, int32_t
     ent_skin* skin = nullptr;
     EXPECT_EQ(ent_skin_create(scene, &desc, &skin), ENT_OK) << ent_last_error();
     return SkinPtr(skin);
-}
-
-ent_mesh_view view_of(const ent_skin* skin) {
-    ent_mesh_view view;
-    std::memset(&view, 0, sizeof view);
-    view.struct_size = sizeof view;
-    EXPECT_EQ(ent_skin_mesh(skin, &view), ENT_OK) << ent_last_error();
-    return view;
 }
 
 std::vector<uint32_t> indices_of(const ent_mesh_view& v) {
@@ -99,7 +88,7 @@ TEST(SkinTopology, RingSkinsKeepTheirIndicesWhileTheBowelMoves) {
         ASSERT_TRUE(scene);
         SkinPtr skin = make(scene.get(), method);
         ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
-        const ent_mesh_view first = view_of(skin.get());
+        const ent_mesh_view first = mesh(skin.get());
         EXPECT_EQ(first.stable_topology, 1);
         EXPECT_EQ(first.topology_changed, 1);  // the first update makes the indices
         EXPECT_EQ(first.topology_serial, 1u);
@@ -109,7 +98,7 @@ TEST(SkinTopology, RingSkinsKeepTheirIndicesWhileTheBowelMoves) {
         for (int frame = 0; frame < 40; ++frame) {
             ASSERT_TRUE(step_n(scene.get(), 1e-3, 25));
             ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
-            const ent_mesh_view now = view_of(skin.get());
+            const ent_mesh_view now = mesh(skin.get());
             ASSERT_EQ(now.topology_changed, 0) << "frame " << frame;
             ASSERT_EQ(now.topology_serial, 1u);
             ASSERT_EQ(now.vertex_count, first.vertex_count);
@@ -118,7 +107,7 @@ TEST(SkinTopology, RingSkinsKeepTheirIndicesWhileTheBowelMoves) {
             expect_good_tangents(now);
         }
         // It did move: a renderer that kept the indices drew the new positions.
-        const ent_mesh_view last = view_of(skin.get());
+        const ent_mesh_view last = mesh(skin.get());
         double moved = 0.0;
         for (uint32_t i = 0; i < 3 * last.vertex_count; ++i)
             moved = std::max(moved, double(std::fabs(last.positions_xyz_m[i] - start[i])));
@@ -132,19 +121,19 @@ TEST(SkinTopology, WithoutStableTopologyTheRingsFollowTheStretch) {
     ScenePtr scene = swinging_scene();
     SkinPtr skin = make(scene.get(), ENT_SKIN_TUBE, 0.0, 0);
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-    EXPECT_EQ(view_of(skin.get()).stable_topology, 0);
-    uint64_t serial = view_of(skin.get()).topology_serial, flagged = 0;
-    uint32_t previous = view_of(skin.get()).vertex_count;
+    EXPECT_EQ(mesh(skin.get()).stable_topology, 0);
+    uint64_t serial = mesh(skin.get()).topology_serial, flagged = 0;
+    uint32_t previous = mesh(skin.get()).vertex_count;
     for (int frame = 0; frame < 40; ++frame) {
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 25));
         ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-        const ent_mesh_view now = view_of(skin.get());
+        const ent_mesh_view now = mesh(skin.get());
         EXPECT_EQ(now.topology_changed == 1, now.vertex_count != previous) << "frame " << frame;
         flagged += uint64_t(now.topology_changed);
         previous = now.vertex_count;
     }
     EXPECT_GT(flagged, 0u);
-    EXPECT_EQ(view_of(skin.get()).topology_serial, serial + flagged);
+    EXPECT_EQ(mesh(skin.get()).topology_serial, serial + flagged);
 }
 
 TEST(SkinTopology, LevelsOfDetailChangeInCountedSteps) {
@@ -153,14 +142,14 @@ TEST(SkinTopology, LevelsOfDetailChangeInCountedSteps) {
     ScenePtr scene = swinging_scene();
     SkinPtr skin = make(scene.get(), ENT_SKIN_CONVOLUTION, 0.01);
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-    ent_mesh_view previous = view_of(skin.get());
+    ent_mesh_view previous = mesh(skin.get());
     std::vector<uint32_t> indices = indices_of(previous);
     int changes = 0;
     const int frames = 40;
     for (int frame = 0; frame < frames; ++frame) {
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 25));
         ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-        const ent_mesh_view now = view_of(skin.get());
+        const ent_mesh_view now = mesh(skin.get());
         EXPECT_EQ(now.topology_serial, previous.topology_serial + uint64_t(now.topology_changed));
         if (now.topology_changed == 0) {
             ASSERT_EQ(indices_of(now), indices) << "frame " << frame;
@@ -180,7 +169,7 @@ TEST(SkinTopology, PointSkeletonSaysItsTopologyChangesEveryUpdate) {
     for (uint64_t update = 1; update <= 3; ++update) {
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 25));
         ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-        const ent_mesh_view now = view_of(skin.get());
+        const ent_mesh_view now = mesh(skin.get());
         EXPECT_EQ(now.stable_topology, 0);
         EXPECT_EQ(now.topology_changed, 1);
         EXPECT_EQ(now.topology_serial, update);
@@ -199,7 +188,7 @@ TEST(SkinTopology, AroundVIsContinuousAlongTheBowelAndBetweenFrames) {
         SCOPED_TRACE(method);
         SkinPtr skin = make(scene.get(), method);
         ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-        const ent_mesh_view view = view_of(skin.get());
+        const ent_mesh_view view = mesh(skin.get());
         // In range, and continuous over the surface: across every triangle edge of the body
         // v changes by little (on the circle: it wraps from just below 1 to 0).
         double largest_step = 0.0;
@@ -223,7 +212,7 @@ TEST(SkinTopology, AroundVIsContinuousAlongTheBowelAndBetweenFrames) {
     {
         SkinPtr tube = make(scene.get(), ENT_SKIN_TUBE);
         ASSERT_EQ(ent_skin_update(tube.get()), ENT_OK);
-        const ent_mesh_view v = view_of(tube.get());
+        const ent_mesh_view v = mesh(tube.get());
         const uint32_t rings = (v.vertex_count - 2) / 16 - 2 * 4;
         auto angle = [](Vec3 a, Vec3 b) { return std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0)); };
         for (uint32_t k = 0; k + 1 < rings; ++k) {
@@ -245,11 +234,11 @@ TEST(SkinTopology, AroundVIsContinuousAlongTheBowelAndBetweenFrames) {
         EXPECT_EQ(v.around_v[i], 0.0f);
         return vec(v.normals_xyz, i);
     };
-    Vec3 before = seam(view_of(tube.get()));
+    Vec3 before = seam(mesh(tube.get()));
     for (int frame = 0; frame < 20; ++frame) {
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 5));
         ASSERT_EQ(ent_skin_update(tube.get()), ENT_OK);
-        const Vec3 after = seam(view_of(tube.get()));
+        const Vec3 after = seam(mesh(tube.get()));
         EXPECT_LT(std::acos(std::min(1.0, before.dot(after))), 0.1 * kPi) << "frame " << frame;
         before = after;
     }
@@ -266,7 +255,7 @@ TEST(SkinTopology, OldMeshViewsAndDescsAreServedAsBefore) {
     ASSERT_EQ(ent_skin_create(scene.get(), &old, &raw), ENT_OK) << ent_last_error();
     SkinPtr skin(raw);
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
-    EXPECT_EQ(view_of(skin.get()).stable_topology, 1);
+    EXPECT_EQ(mesh(skin.get()).stable_topology, 1);
     // An ent_mesh_view from before around_v: nothing written past it.
     ent_mesh_view view;
     std::memset(&view, 0xcd, sizeof view);

@@ -18,11 +18,6 @@ using namespace skin_test;
 using namespace enteron::skinning;
 using enteron::Vec3;
 
-SkinMetrics skin_and_measure(Skin& skin, const std::vector<double>& q) {
-    skin.update(q.data(), q.size() / 3);
-    return measure_skin(skin.mesh(), skin.axis_points(), skin.axis_count(), skin.arc_length(), R);
-}
-
 const char* name(SkinMethod m) { return m == SkinMethod::point_skeleton ? "point_skeleton" : "convolution"; }
 
 TEST(BendCalibration, StraightIsOneAndTheOuterSideOfABendIsScaledUp) {
