@@ -684,9 +684,18 @@ typedef struct ent_skin_desc {
      *  Above 0, rings come closer where the axis bends, so that the straight edge between two rings departs
      *  from the tube by at most this (its sag on the outer side of the bend), down to 1/16 of
      *  ring_spacing_radii; ring_spacing_radii is then the spacing on straight parts. The ring count
-     *  follows the bends from frame to frame. Added in 0.1 after the first skins: a caller built
-     *  against the older, smaller ent_skin_desc gets 0. */
+     *  follows the bends from frame to frame (in steps, with stable_topology). Added in 0.1 after the
+     *  first skins: a caller built against the older, smaller ent_skin_desc gets 0. */
     double ring_chord_error_radii;
+    /** tube, convolution: 1 (default) keeps the vertex count and the triangle indices from update to update
+     *  while the bowel moves, so that a renderer uploads the indices once (ent_mesh_view.topology_changed
+     *  says when to do it again): the rings are as many as the axis' length at the skin's first update
+     *  holds at ring_spacing_radii, spread evenly over its current length; with ring_chord_error_radii their count
+     *  moves in steps of a sixteenth of that, up at once where the bends need more rings, down only once a
+     *  whole step is spare. 0: rings every ring_spacing_radii of the current length, their count following
+     *  the stretch. point_skeleton: ignored, its topology changes on every update. Added after
+     *  ring_chord_error_radii: a caller built against an older, smaller ent_skin_desc gets 1. */
+    int32_t stable_topology;
 } ent_skin_desc;
 
 /**
@@ -740,6 +749,29 @@ typedef struct ent_mesh_view {
     const uint32_t* indices;       /**< triangle_count x 3 vertex indices, counter-clockwise seen from outside. */
     double time_s;                 /**< simulated time of the state the mesh was made from. */
     uint64_t updates;              /**< ent_skin_update calls that succeeded so far. */
+    /* Added after the first skins: not written for an older, smaller struct_size. */
+    /** vertex_count floats in [0, 1): the vertex's angle around the axis / 2 pi, measured from the normal of
+     *  the rotation-minimising frame of its axis point towards its binormal (the frame does not twist along the
+     *  bowel, and starts each update from the last one's first normal, so v is continuous along the bowel and
+     *  from frame to frame). It wraps from just below 1 to 0 across one column of triangles: sample a periodic
+     *  texture there with care (e.g. fract in the fragment shader). */
+    const float* around_v;
+    /** vertex_count x 3 floats, unit, perpendicular to the normal: the surface's direction of increasing u
+     *  (along the axis; towards the last pole on the end caps). tangent x normal points towards increasing v
+     *  (for normal maps: the bitangent is cross(tangent, normal); glTF handedness -1). */
+    const float* tangents_xyz;
+    /** Counts the updates that changed the topology (vertex_count or indices), the first included: equal
+     *  values, the same indices. A renderer that may skip updates compares it with the value of the indices
+     *  it holds. */
+    uint64_t topology_serial;
+    /** 1 if the last ent_skin_update changed vertex_count or indices (the first update does), else 0: upload
+     *  the indices only then. Positions, normals and tangents change on every update; around_v of the tube
+     *  and convolution skins only with the topology, and axis_u too when their rings are even
+     *  (ring_chord_error_radii 0) and stable_topology is 1. */
+    int32_t topology_changed;
+    /** 1 if this skin keeps its topology while the bowel moves (tube and convolution with
+     *  ent_skin_desc.stable_topology), 0 if it may change on any update (point_skeleton: every update). */
+    int32_t stable_topology;
 } ent_mesh_view;
 
 /**

@@ -104,6 +104,7 @@ class ent_skin_desc(ctypes.Structure):
         ("voxel_size_radii", ctypes.c_double),
         ("window_radii", ctypes.c_double),
         ("ring_chord_error_radii", ctypes.c_double),
+        ("stable_topology", ctypes.c_int32),
     ]
 
 
@@ -119,6 +120,11 @@ class ent_mesh_view(ctypes.Structure):
         ("indices", ctypes.c_void_p),
         ("time_s", ctypes.c_double),
         ("updates", ctypes.c_uint64),
+        ("around_v", ctypes.c_void_p),
+        ("tangents_xyz", ctypes.c_void_p),
+        ("topology_serial", ctypes.c_uint64),
+        ("topology_changed", ctypes.c_int32),
+        ("stable_topology", ctypes.c_int32),
     ]
 
 
