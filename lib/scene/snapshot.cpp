@@ -27,19 +27,28 @@ void SnapshotPublisher::publish(Snapshot* slot) {
     latest_ = static_cast<std::size_t>(slot - slots_.data());
 }
 
-void SnapshotPublisher::reserve_tools(std::size_t count) {
+template <class Reserve>
+void SnapshotPublisher::reserve_each(Reserve&& reserve) {
     for (std::size_t slot = 0; slot < kSlots; ++slot) {
         for (;;) {
             {
                 std::lock_guard<std::mutex> lock(mutex_);
                 if (readers_[slot] == 0) {
-                    slots_[slot].tools.reserve(count);
+                    reserve(slots_[slot]);
                     break;
                 }
             }
             std::this_thread::yield();  // a reader is copying: microseconds
         }
     }
+}
+
+void SnapshotPublisher::reserve_tools(std::size_t count) {
+    reserve_each([&](Snapshot& slot) { slot.tools.reserve(count); });
+}
+
+void SnapshotPublisher::reserve_obstacles(std::size_t count) {
+    reserve_each([&](Snapshot& slot) { slot.obstacles.reserve(count); });
 }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {

@@ -19,6 +19,7 @@
 
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
+#include "mechanics/rigid_frames.h"
 
 namespace enteron::scene {
 
@@ -40,12 +41,19 @@ struct EffectStats {
     uint64_t total_time_ns = 0;
 };
 
+// Where an obstacle rests in a published state.
+struct ObstacleOutput {
+    bool present = false;  // false once removed
+    mechanics::RigidPose pose;
+};
+
 struct Snapshot {
-    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory) {}
+    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory), obstacles(memory) {}
     std::pmr::vector<double> control_points;  // x y z per point, m
     SceneStats stats;
     std::array<EffectStats, mechanics::kEffectCount> effects{};
     std::pmr::vector<collision::ToolOutput> tools;  // by tool index
+    std::pmr::vector<ObstacleOutput> obstacles;     // by obstacle index
 };
 
 class SnapshotPublisher {
@@ -63,6 +71,8 @@ public:
     // Makes room for `count` tools in every slot, so that filling one never allocates.
     // Allocates; waits for the readers of a slot to finish their copy. Not during a step.
     void reserve_tools(std::size_t count);
+    // The same for `count` obstacles.
+    void reserve_obstacles(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
 
@@ -83,6 +93,10 @@ public:
     };
 
 private:
+    // Runs reserve(slot) on every slot once no reader copies from it.
+    template <class Reserve>
+    void reserve_each(Reserve&& reserve);
+
     mutable std::mutex mutex_;
     std::pmr::vector<Snapshot> slots_;
     mutable std::array<uint32_t, kSlots> readers_{};
