@@ -544,9 +544,10 @@ ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_d
  * linearly, the orientation by normalised linear interpolation), so a moved organ pushes
  * the bowel instead of jumping through it. The contacts see the bowel's velocity relative to
  * the moving surface (the pose change over the step, or the velocity ent_obstacle_set_velocity
- * gives), so damping and friction carry the bowel. While it moves each contact pushes with
- * at most k R (contact_stiffness times the radius): an obstacle that jumps far in one step
- * sweeps through the bowel with a bounded force, as a teleported tool does. Pins and a
+ * gives), so damping and friction carry the bowel. Once an obstacle has moved, each of its
+ * contacts pushes with at most k R (contact_stiffness times the radius): an obstacle that
+ * jumps far in one step sweeps through the bowel, or lands on it, with a bounded force, as a
+ * teleported tool does (an obstacle never moved keeps the plain law). Pins and a
  * mesentery root attached to the obstacle move with it. Setting the pose again before the
  * step replaces the target.
  * Thread: the driving thread, between steps (the organ's pose comes from the loop that
@@ -571,7 +572,8 @@ ENT_API ent_status ent_obstacle_set_velocity(ent_scene* scene, int32_t obstacle,
 
 /**
  * Sets an obstacle's Coulomb friction coefficient (>= 0; negative: the scene's
- * contact_friction) from the next step on. Thread: the driving thread, between steps.
+ * contact_friction) from the next step on. Recomputes the stability bounds (allocates;
+ * about as long as one step). Thread: the driving thread, between steps.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, NaN); ENT_ERROR_NOT_FOUND; ENT_ERROR_BUSY.
  */
 ENT_API ent_status ent_obstacle_set_friction(ent_scene* scene, int32_t obstacle, double friction);
@@ -620,7 +622,8 @@ ENT_API ent_status ent_obstacle_mesh(ent_scene* scene, int32_t obstacle, uint32_
 
 /**
  * Sets gravity (m/s^2) from the next step on: a table tilted to Trendelenburg. A scene
- * without gravity gets it (ENT_EFFECT_GRAVITY turns on; allocates once). The stability
+ * without gravity gets it (ENT_EFFECT_GRAVITY turns on; allocates once); with gravity the
+ * call allocates nothing, so a table may tilt a little before every step. The stability
  * guard measures the energy again, so the change is no energy from nothing.
  * Thread: the driving thread, between steps.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite); ENT_ERROR_BUSY.
@@ -642,6 +645,7 @@ ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point,
 
 /**
  * Lets a pinned control point go (a surgeon frees a loop), from the next step on.
+ * Refactors the mass matrix (allocates; about as long as one step).
  * Thread: the driving thread, between steps.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range); ENT_ERROR_NOT_FOUND (the
  *         point is not pinned); ENT_ERROR_BUSY.

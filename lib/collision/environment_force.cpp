@@ -125,7 +125,7 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/
         const mechanics::FramePlacement& frame = placements_[contact.obstacle];
         last_.count += 1;
         last_.max_penetration = std::max(last_.max_penetration, c.depth);
-        if (!frame.moving) {
+        if (!frame.kinematic) {
             const ContactForce f = contact_force(placed.contact, c.depth, c.normal, v);
             if (lin == nullptr) {
                 loads_.add_force(i, f.force);
@@ -135,8 +135,9 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/
                        f.stiffness, v);
             continue;
         }
-        // A moving surface: the law sees the velocity relative to it, at the contact point on
-        // the obstacle's surface, and the force is bounded by k R.
+        // An obstacle the caller moves: the law sees the velocity relative to its surface at
+        // the contact point, and the force is bounded by k R (also once it rests again: the
+        // bowel it jumped onto is let out gently).
         const Vec3 surface_velocity = frame.velocity_at(spheres_[i].center - (r - c.depth) * c.normal);
         ContactForce f = contact_force(placed.contact, c.depth, c.normal, v - surface_velocity);
         const double bound = placed.contact.stiffness * r;
@@ -164,8 +165,8 @@ double EnvironmentForce::potential_energy(const mechanics::State& state) const {
     double energy = 0.0;
     for (const Contact& contact : contacts_) {
         const double k = placed_[contact.obstacle].contact.stiffness, d = contact.contact.depth;
-        // A moving obstacle's spring stops growing at depth R (evaluate's bound).
-        if (placements_[contact.obstacle].moving && d > r)
+        // A moved obstacle's spring stops growing at depth R (evaluate's bound).
+        if (placements_[contact.obstacle].kinematic && d > r)
             energy += k * r * (d - 0.5 * r);
         else
             energy += 0.5 * k * d * d;

@@ -5,7 +5,7 @@
 //
 // Obstacles move: each has a frame (mechanics/rigid_frames.h) that the caller poses between
 // steps. The contact law sees the bowel's velocity relative to the obstacle's surface, so
-// damping and friction act on a moving organ. While an obstacle moves, each of its contacts
+// damping and friction act on a moving organ. Once an obstacle has moved, each of its contacts
 // pushes with at most k R (the force of a contact one bowel radius deep): an organ that
 // jumps sweeps through the bowel with a bounded force, as a teleported tool does, instead
 // of throwing it. The work the moving obstacles do is the guard's to allow: twice the

@@ -68,6 +68,7 @@ void RigidFrames::begin_step(double t0, double dt) {
                                f.target.orientation.coeffs() != f.current.orientation.coeffs();
         f.moving = displaced || (f.velocity_given && (f.given_linear != Vec3::Zero() || f.given_angular != Vec3::Zero()));
         f.identity = !f.moving && is_identity(f.current);
+        f.kinematic = f.kinematic || f.moving;
         any_moving_ = any_moving_ || f.moving || !f.identity;
     }
 }
@@ -86,6 +87,7 @@ void RigidFrames::end_step(bool accepted) {
 
 FramePlacement RigidFrames::placement(const Frame& f, double alpha) const {
     FramePlacement p;
+    p.kinematic = f.kinematic;
     if (f.identity) return p;
     p.identity = false;
     const Eigen::Quaterniond q = alpha <= 0.0 ? f.current.orientation

@@ -34,6 +34,7 @@ struct FramePlacement {
     Vec3 angular_velocity = Vec3::Zero();  // rad/s
     bool identity = true;                  // rotation = I, origin = 0: world = local
     bool moving = false;                   // velocities not zero
+    bool kinematic = false;                // the frame has moved since it was added
 
     Vec3 to_world(const Vec3& local) const { return identity ? local : Vec3(rotation * local + origin); }
     Vec3 to_local(const Vec3& world) const {
@@ -90,6 +91,7 @@ private:
         Vec3 given_angular = Vec3::Zero();
         bool moving = false;  // in the current step
         bool identity = true;  // current and target are the identity pose
+        bool kinematic = false;  // has moved in some step: moved by the caller, not fixed
     };
     FramePlacement placement(const Frame& frame, double alpha) const;
 

@@ -234,11 +234,17 @@ mechanics::RigidPose Scene::obstacle_pose(std::size_t index) const {
 }
 
 void Scene::set_gravity(const Vec3& gravity) {
-    if (auto* effect = static_cast<GravityForce*>(dynamics_.find_effect(EffectId::gravity)))
-        effect->set_gravity(gravity);
-    else
+    auto* effect = static_cast<GravityForce*>(dynamics_.find_effect(EffectId::gravity));
+    if (effect == nullptr) {
         dynamics_.add_effect(make_owned<GravityForce>(memory_, model_, gravity, memory_));
-    changed_between_steps();
+        changed_between_steps();
+        return;
+    }
+    // Gravity bounds no stiffness: only the guard's energy reference moves (no allocation,
+    // so a table may tilt a little before every step).
+    effect->set_gravity(gravity);
+    guard_.set_reference(dynamics_.energies(state_));
+    publish();
 }
 
 void Scene::pin_point_only(std::size_t point, std::optional<std::size_t> obstacle) {
