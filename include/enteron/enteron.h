@@ -525,9 +525,9 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
  * environment effect on; its contacts use the scene's collision spheres and contact law
  * (ent_scene_desc collision_* and contact_* fields, JSON "collision"), with the obstacle's
  * own friction if it has one. The JSON description lists obstacles under "environment"
- * instead. A mesh's arrays are copied and its distance field built here: about 0.2 s for
- * 100k triangles (docs/anatomy.md); a mesh that is not closed is accepted with a warning
- * through the log callback. Allocates; not on a hard real-time path.
+ * instead. A mesh's arrays are copied and its distance field built here: about 0.5 s of CPU
+ * for 100k triangles at the default resolution (docs/anatomy.md); a mesh that is not
+ * closed is accepted with a warning through the log callback. Allocates; not on a hard real-time path.
  * @param out_obstacle receives the obstacle's index (0, 1, ... in order of addition; JSON
  *        obstacles come first); may be NULL.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown kind, non-finite value, size
