@@ -117,6 +117,12 @@ std::size_t obstacle_index(const enteron::scene::Scene& scene, int32_t obstacle)
     return static_cast<std::size_t>(obstacle);
 }
 
+void require_control_point(const enteron::scene::Scene& scene, uint32_t control_point) {
+    if (control_point >= scene.control_points())
+        throw Error(ErrorCode::invalid_argument, "control_point must be < " + std::to_string(scene.control_points()) +
+                                                     ", got " + std::to_string(control_point));
+}
+
 void require_finite(const double* values, int count, const char* name) {
     require(values, name);
     for (int c = 0; c < count; ++c)
@@ -286,9 +292,7 @@ ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point,
         SceneHandle& handle = live_handle(scene);
         const enteron::capi::DrivingCall driving(handle, "ent_scene_pin_point");
         enteron::scene::Scene& s = *handle.scene;
-        if (control_point >= s.control_points())
-            throw Error(ErrorCode::invalid_argument, "control_point must be < " + std::to_string(s.control_points()) +
-                                                         ", got " + std::to_string(control_point));
+        require_control_point(s, control_point);
         std::optional<std::size_t> frame;
         if (obstacle != ENT_NO_OBSTACLE) frame = obstacle_index(s, obstacle);
         s.pin_point(control_point, frame);
@@ -300,9 +304,7 @@ ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_poin
         SceneHandle& handle = live_handle(scene);
         const enteron::capi::DrivingCall driving(handle, "ent_scene_unpin_point");
         enteron::scene::Scene& s = *handle.scene;
-        if (control_point >= s.control_points())
-            throw Error(ErrorCode::invalid_argument, "control_point must be < " + std::to_string(s.control_points()) +
-                                                         ", got " + std::to_string(control_point));
+        require_control_point(s, control_point);
         if (!s.unpin_point(control_point))
             throw Error(ErrorCode::not_found, "control point " + std::to_string(control_point) + " is not pinned");
     });
