@@ -7,8 +7,8 @@
 //
 // Threads: one thread at a time drives the scene (step, add_obstacle, add_tool, and the
 // changes between steps: obstacle poses, friction and removal, gravity, pins, the
-// mesentery's attachment); the C API enforces it. Any thread may post tool commands (tool_channels()) and read the published
-// snapshots.
+// mesentery's attachment); the C API enforces it. Any thread may post tool commands
+// (tool_channels()) and read the published snapshots.
 #pragma once
 
 #include <memory_resource>
