@@ -188,8 +188,6 @@ TEST(Anatomy, CapsuleMeshMatchesTheCapsule) {
     analytic.start_m[2] = -0.05;
     analytic.end_m[2] = 0.05;
     const double start[3] = {-0.1, 0.0, 0.03 + 0.0125 - 0.003};  // along the top of its side, 3 mm in
-    const double tx = 0.0;
-    (void)tx;
     Mesh mesh = capsule(-0.05, 0.05, 0.03, 96);
     // The bowel runs along x across a capsule along z: swap so both lie the same way.
     analytic.start_m[2] = 0.0, analytic.end_m[2] = 0.0;
@@ -376,9 +374,8 @@ TEST(Anatomy, AnObstacleThatJumpsIsHandledWithBoundedForce) {
     floor.kind = ENT_OBSTACLE_PLANE;
     add(scene.get(), floor);
     const double c[3] = {0.0, 0.0, 0.0};
-    ent_obstacle_desc organ = mesh_desc(icosphere(c, 0.04, 3));
-    Mesh keep = icosphere(c, 0.04, 3);
-    organ = mesh_desc(keep);
+    const Mesh ball = icosphere(c, 0.04, 3);
+    ent_obstacle_desc organ = mesh_desc(ball);
     organ.position_m[2] = 0.3;  // 30 cm above
     const int32_t id = add(scene.get(), organ);
     ASSERT_TRUE(step_n(scene.get(), 100));
