@@ -2,12 +2,12 @@
 
 namespace enteron::mechanics {
 
-ImplicitEuler::ImplicitEuler(std::size_t coordinates, std::pmr::memory_resource* memory)
+ImplicitEuler::ImplicitEuler(const AxisModel& model, std::pmr::memory_resource* memory)
     : system_(memory),
-      axial_(coordinates / 3, memory),
-      rhs_(coordinates, 0.0, memory),
-      stiffness_times_velocity_(coordinates, 0.0, memory) {
-    system_.resize(coordinates);
+      axial_(model, memory),
+      rhs_(3 * model.control_points, 0.0, memory),
+      stiffness_times_velocity_(3 * model.control_points, 0.0, memory) {
+    system_.resize(3 * model.control_points);
 }
 
 bool ImplicitEuler::step(Dynamics& dynamics, State& state, double h) {
@@ -16,8 +16,7 @@ bool ImplicitEuler::step(Dynamics& dynamics, State& state, double h) {
     dynamics.forces(state, rhs_.data(), &lin);
     const std::size_t m = rhs_.size();
     for (std::size_t k = 0; k < m; ++k) rhs_[k] = h * (rhs_[k] - h * stiffness_times_velocity_[k]);
-    if (!system_.factor()) return false;
-    system_.solve(rhs_.data());
+    if (!dynamics.solve_velocity_change(system_, rhs_.data(), state)) return false;
     for (std::size_t k = 0; k < m; ++k) {
         state.v[k] += rhs_[k];
         state.q[k] += h * state.v[k];

@@ -121,7 +121,8 @@ const Choice<ShapeKind> kShapeKinds[] = {{"line", ShapeKind::line},
                                          {"points", ShapeKind::points}};
 const Choice<IntegratorKind> kIntegrators[] = {{"rk4", IntegratorKind::rk4},
                                                {"symplectic_euler", IntegratorKind::symplectic_euler},
-                                               {"implicit_euler", IntegratorKind::implicit_euler}};
+                                               {"implicit_euler", IntegratorKind::implicit_euler},
+                                               {"bdf2", IntegratorKind::bdf2}};
 const Choice<int32_t> kPinnedEnds[] = {
     {"none", pin_none}, {"first", pin_first}, {"last", pin_last}, {"both", pin_both}};
 
@@ -283,6 +284,7 @@ const Key<PinnedConfig> kPinnedKeys[] = {
     {"ends", [](auto& v, auto& p, auto& c) { c.ends = read_choice(v, p, kPinnedEnds); }},
     {"control_points", read_pinned_points},
     {"attached", read_attached_pins},
+    {"clamped", [](auto& v, auto& p, auto& c) { c.clamped = read_choice(v, p, kPinnedEnds); }},
 };
 
 const Key<CollisionConfig> kCollisionKeys[] = {

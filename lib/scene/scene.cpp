@@ -22,18 +22,24 @@ namespace {
 
 using namespace enteron::mechanics;
 
-AxisModel make_model(const IntestineConfig& intestine) {
+int32_t clamped_ends(const SceneConfig& config) { return config.pinned ? config.pinned->clamped : pin_none; }
+
+AxisModel make_model(const SceneConfig& config) {
+    const IntestineConfig& intestine = config.intestine;
     AxisModel model;
     model.control_points = intestine.control_points;
     model.rest_segment_length = intestine.length / static_cast<double>(intestine.control_points - 1);
     model.linear_density = intestine.linear_density;
+    model.ends = spline_ends(config);
     return model;
 }
 
+// The point pins, a clamped end's end point among them.
 std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t count) {
     std::vector<uint32_t> points = pinned.points;
-    if (pinned.ends & pin_first) points.push_back(0);
-    if (pinned.ends & pin_last) points.push_back(static_cast<uint32_t>(count - 1));
+    const int32_t ends = pinned.ends | pinned.clamped;
+    if (ends & pin_first) points.push_back(0);
+    if (ends & pin_last) points.push_back(static_cast<uint32_t>(count - 1));
     std::sort(points.begin(), points.end());
     points.erase(std::unique(points.begin(), points.end()), points.end());
     return points;
@@ -78,7 +84,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     : memory_(memory),
       logger_(logger),
       solver_(config.solver),
-      model_(make_model(config.intestine)),
+      model_(make_model(config)),
       tool_channels_(memory),
       frames_(memory),
       dynamics_(model_, memory),
@@ -117,10 +123,12 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
                                              m.rest_length};
         dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state_, memory));
     }
-    if (config.pinned) {
+    if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), frames_,
                                                     config.solver.max_speed, memory));
-    }
+    if (const int32_t clamped = clamped_ends(config))
+        dynamics_.add_clamps(make_owned<ClampedEnds>(memory, (clamped & pin_first) != 0, (clamped & pin_last) != 0,
+                                                     state_.q.data(), n));
     // The self-contact's time takes the shared contact loads', even though the environment
     // is made first.
     if (config.self_collision) contact_loads(EffectId::self_collision);
@@ -148,7 +156,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
                                                                      state_, memory,
                                                                      contact_loads(EffectId::self_collision)));
 
-    integrator_ = make_integrator(solver_.integrator, 3 * n, memory);
+    integrator_ = make_integrator(solver_.integrator, model_, memory);
     published_.reserve_tools(tool_channels_.size());
     published_.reserve_obstacles(obstacles_);
     refinalize();
@@ -305,7 +313,7 @@ std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
 collision::CollisionSpheres& Scene::collision_spheres() {
     if (!spheres_)
         spheres_ = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,
-                                                           sphere_spacing(), radius_, memory_);
+                                                           sphere_spacing(), radius_, memory_, model_.ends);
     return *spheres_;
 }
 
@@ -341,6 +349,7 @@ void Scene::step(double dt) {
 
     backup_.assign(state_);
     frames_.begin_step(state_.time, dt);
+    integrator_->save_history();
     // A grasp taken or let go changes the stored energy, and so do the velocities of points
     // pinned to moving obstacles: the guard measures it again.
     const bool grasps = dynamics_.begin_step(state_, dt);
@@ -358,12 +367,14 @@ void Scene::step(double dt) {
         }
         if (attempt == solver_.max_subdivisions) break;
         state_.assign(backup_);
+        integrator_->restore_history();
         if (logger_.enabled())
             logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard (%s); retrying with %zu substeps",
                         state_.time, guard_check_name(guard_.last_finding().check), substeps << (attempt + 1));
     }
     const std::string message = unstable_message(dt, substeps);
     state_.assign(backup_);
+    integrator_->restore_history();
     dynamics_.end_step(false);
     frames_.end_step(false);
     stats_.last_step_ns = elapsed_ns(start);
