@@ -16,8 +16,11 @@
  * work counters of ent_stats and ent_effect_stats record a step the guard gave up on).
  *
  * Threads (a physics thread at 1 kHz, a haptic thread, a render thread):
- * - The driving calls change the simulation: ent_scene_step, ent_scene_add_obstacle and
- *   ent_tool_add. One of them at a time per scene: a driving call made while another runs
+ * - The driving calls change the simulation: ent_scene_step, ent_scene_add_obstacle,
+ *   ent_tool_add, and the changes between steps of the anatomy (ent_obstacle_set_pose,
+ *   _set_velocity, _set_friction, ent_scene_remove_obstacle, ent_obstacle_mesh,
+ *   ent_scene_set_gravity, ent_scene_pin_point, ent_scene_unpin_point,
+ *   ent_scene_attach_mesentery). One of them at a time per scene: a driving call made while another runs
  *   on the same scene on another thread returns ENT_ERROR_BUSY at once and changes nothing
  *   (the check costs one atomic operation). The driving thread may change between calls.
  * - The tool commands (ent_tool_set_pose, ent_tool_grasp, ent_tool_release) are safe from
@@ -25,8 +28,9 @@
  *   mailbox, which the next ent_scene_step takes at its start (the last command posted
  *   before that wins). A haptic thread posts poses while the physics thread steps.
  * - The queries read the last published snapshot: ent_scene_axis,
- *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, and each tool's
- *   output (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state). A snapshot is an
+ *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, each tool's
+ *   output (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state) and each obstacle's
+ *   pose (ent_obstacle_pose, ent_scene_obstacle_count). A snapshot is an
  *   immutable copy of the state made at creation, after each driving call and at the end
  *   of every step (a step that fails publishes the same state with its work counters).
  *   Any number of threads may query at the same time as each other and as the step; each
@@ -361,6 +365,20 @@ ENT_API ent_status ent_scene_create_json_with(const char* json, size_t length,
                                               ent_scene** out_scene);
 
 /**
+ * Creates a scene from a JSON description in a file: like ent_scene_create_json_with, and a
+ * mesh obstacle's "file" is found relative to this file's directory (with
+ * ent_scene_create_json*, relative to the process's current directory). Reading the mesh
+ * files and preparing their distance fields takes time (docs/anatomy.md): not on a
+ * real-time thread.
+ * @param path the scene file (UTF-8, NUL-terminated); @param callbacks may be NULL.
+ * @return as ent_scene_create_json; ENT_ERROR_INVALID_ARGUMENT also when the file cannot
+ *         be read (the message names it); ENT_ERROR_INVALID_SCENE for a mesh file that is
+ *         missing or not a mesh (the message names the obstacle and the file).
+ */
+ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callbacks* callbacks,
+                                              ent_scene** out_scene);
+
+/**
  * Destroys a scene and everything it owns. NULL is ignored. Its skins stay valid: they keep
  * the last published state (and its memory) until they are destroyed too.
  * @warning No other call on this scene may run during or after this one.
@@ -455,8 +473,19 @@ ENT_API const char* ent_effect_name(int32_t effect);
 #define ENT_OBSTACLE_PLANE 1      /**< a plane; the bowel is kept on the side its normal points to */
 #define ENT_OBSTACLE_SPHERE 2     /**< a solid sphere (an organ) */
 #define ENT_OBSTACLE_CAPSULE 3    /**< a solid capsule: a segment swept by a sphere (an organ, a vessel) */
+/** A triangle mesh (an organ segmented from CT), met through its signed distance field.
+ *  Added in 0.1 with moving anatomy; docs/anatomy.md tells its accuracy and cost. */
+#define ENT_OBSTACLE_MESH 4
 
-/** A rigid obstacle. Fill with ent_obstacle_desc_default first; fields a kind does not use are ignored. */
+/** No obstacle: the world (ent_scene_pin_point, ent_scene_attach_mesentery). */
+#define ENT_NO_OBSTACLE (-1)
+
+/**
+ * A rigid obstacle. Fill with ent_obstacle_desc_default first; fields a kind does not use
+ * are ignored. Every obstacle has a frame (position_m, orientation_wxyz) and its shape is
+ * given in that frame; the default frame is the world, so the shape is where its fields
+ * say. ent_obstacle_set_pose moves the frame.
+ */
 typedef struct ent_obstacle_desc {
     uint32_t struct_size;      /**< sizeof(ent_obstacle_desc); set by ent_obstacle_desc_default. */
     int32_t kind;              /**< ENT_OBSTACLE_* (default ENT_OBSTACLE_BOX_INSIDE). */
@@ -466,6 +495,26 @@ typedef struct ent_obstacle_desc {
     double start_m[3];         /**< capsule: first end of its axis (default 0, 0, 0). */
     double end_m[3];           /**< capsule: second end of its axis (default 0, 0, 0.1). */
     double radius_m;           /**< sphere, capsule: radius, > 0 (default 0.05). */
+    /* Added in 0.1 with moving anatomy: a caller built against the older, smaller struct
+       gets the defaults below. */
+    /** mesh: vertex_count x 3 coordinates in the obstacle's frame, m; copied (default NULL). */
+    const double* mesh_vertices_xyz_m;
+    uint32_t mesh_vertex_count;        /**< mesh: vertices (default 0). */
+    /** mesh: triangle_count x 3 vertex indices (from 0), counter-clockwise seen from the side
+     *  the bowel is kept on; copied (default NULL). A closed mesh keeps the bowel outside
+     *  (normals out) or inside (normals in: a cavity); an open or non-manifold one is
+     *  accepted with a warning and pushes the bowel to the side its normals face. */
+    const uint32_t* mesh_triangles;
+    uint32_t mesh_triangle_count;      /**< mesh: triangles, 1 to 16777216 (default 0). */
+    /** mesh: edge of the distance field's voxels, m, >= 0; 0: a quarter of the bowel's
+     *  radius R (default 0). Coarser costs less memory and time to prepare; above R/4 the
+     *  contacts near the surface take the exact closest point (docs/anatomy.md). */
+    double mesh_voxel_size_m;
+    double position_m[3];              /**< origin of the obstacle's frame, m (default 0, 0, 0). */
+    double orientation_wxyz[4];        /**< orientation of its frame, normalised by the library (default 1, 0, 0, 0). */
+    /** Coulomb friction coefficient of this obstacle's contacts, >= 0; negative: the scene's
+     *  contact_friction (default -1). */
+    double friction;
 } ent_obstacle_desc;
 
 /**
@@ -483,9 +532,11 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
 /**
  * Adds a rigid obstacle to the scene's environment. The first obstacle turns the
  * environment effect on; its contacts use the scene's collision spheres and contact law
- * (ent_scene_desc collision_* and contact_* fields, JSON "collision"). The JSON
- * description lists obstacles under "environment" instead. Obstacles do not move.
- * Allocates; not on a hard real-time path.
+ * (ent_scene_desc collision_* and contact_* fields, JSON "collision"), with the obstacle's
+ * own friction if it has one. The JSON description lists obstacles under "environment"
+ * instead. A mesh's arrays are copied and its distance field built here: about 0.5 s of CPU
+ * for 100k triangles at the default resolution (docs/anatomy.md); a mesh that is not
+ * closed is accepted with a warning through the log callback. Allocates; not on a hard real-time path.
  * @param out_obstacle receives the obstacle's index (0, 1, ... in order of addition; JSON
  *        obstacles come first); may be NULL.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown kind, non-finite value, size
@@ -495,6 +546,130 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
  * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle);
+
+/**
+ * Moves an obstacle: its frame reaches this pose (origin, m; orientation w x y z, normalised)
+ * at the end of the next ent_scene_step, moving within that step continuously (the origin
+ * linearly, the orientation by normalised linear interpolation), so a moved organ pushes
+ * the bowel instead of jumping through it. The contacts see the bowel's velocity relative to
+ * the moving surface (the pose change over the step, or the velocity ent_obstacle_set_velocity
+ * gives), so damping and friction carry the bowel. Once an obstacle has moved, each of its
+ * contacts pushes with at most k R (contact_stiffness times the radius): an obstacle that
+ * jumps far in one step sweeps through the bowel, or lands on it, with a bounded force, as a
+ * teleported tool does (an obstacle never moved keeps the plain law). Pins and a
+ * mesentery root attached to the obstacle move with it. Setting the pose again before the
+ * step replaces the target.
+ * Thread: the driving thread, between steps (the organ's pose comes from the loop that
+ * steps: a retractor, breathing, a table tilt); no lock, allocates nothing: may be called
+ * before every step at 1 kHz.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite, zero quaternion);
+ *         ENT_ERROR_NOT_FOUND (no such obstacle, or removed); ENT_ERROR_BUSY.
+ * @warning A driving call: one at a time per scene.
+ */
+ENT_API ent_status ent_obstacle_set_pose(ent_scene* scene, int32_t obstacle, const double position_m[3],
+                                         const double orientation_wxyz[4]);
+
+/**
+ * Gives the velocity the obstacle's contacts see during the next step, instead of the one of
+ * its motion: the origin's (m/s) and the angular velocity (rad/s, world axes); a point x
+ * moves at linear + angular x (x - origin). For a surface that slides without moving (a
+ * belt) or a motion known exactly. Only for the next step; its pose still follows
+ * ent_obstacle_set_pose. Thread and errors: as ent_obstacle_set_pose.
+ */
+ENT_API ent_status ent_obstacle_set_velocity(ent_scene* scene, int32_t obstacle, const double linear_m_per_s[3],
+                                             const double angular_rad_per_s[3]);
+
+/**
+ * Sets an obstacle's Coulomb friction coefficient (>= 0; negative: the scene's
+ * contact_friction) from the next step on. Recomputes the stability bounds (allocates;
+ * about as long as one step). Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, NaN); ENT_ERROR_NOT_FOUND; ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_obstacle_set_friction(ent_scene* scene, int32_t obstacle, double friction);
+
+/**
+ * Removes an obstacle from the next step on and frees its memory. Its id is not reused
+ * (the others keep theirs); pins and a mesentery root attached to it stay where it left
+ * them. Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (no such obstacle,
+ *         or already removed); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_remove_obstacle(ent_scene* scene, int32_t obstacle);
+
+/**
+ * The number of obstacles in the last published state (removed ones not counted).
+ * Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL).
+ */
+ENT_API ent_status ent_scene_obstacle_count(const ent_scene* scene, uint32_t* out_count);
+
+/**
+ * Where an obstacle's frame rests in the last published state (origin, m; orientation
+ * w x y z): for a renderer. Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (no such obstacle,
+ *         or removed).
+ */
+ENT_API ent_status ent_obstacle_pose(const ent_scene* scene, int32_t obstacle, double position_m[3],
+                                     double orientation_wxyz[4]);
+
+/**
+ * Copies a mesh obstacle's vertices (x y z each, in its frame, m) and triangles (3 indices
+ * each), as the obstacle holds them: for a renderer. Either buffer may be NULL (its count is
+ * still reported); a capacity below the count gives ENT_ERROR_BUFFER_TOO_SMALL with the
+ * counts set and nothing copied. Thread: the driving thread, between steps (a removal frees
+ * the mesh); call it before handing the scene to a physics thread.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL counts, not a mesh); ENT_ERROR_NOT_FOUND;
+ *         ENT_ERROR_BUFFER_TOO_SMALL; ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_obstacle_mesh(ent_scene* scene, int32_t obstacle, uint32_t vertex_capacity,
+                                     double* vertices_xyz_m, uint32_t* out_vertex_count, uint32_t triangle_capacity,
+                                     uint32_t* triangles, uint32_t* out_triangle_count);
+
+/* ------------------------------------------------------------------------------------ */
+/* Run-time changes: gravity, pins, the mesentery's root                                */
+/* ------------------------------------------------------------------------------------ */
+
+/**
+ * Sets gravity (m/s^2) from the next step on: a table tilted to Trendelenburg. A scene
+ * without gravity gets it (ENT_EFFECT_GRAVITY turns on; allocates once); with gravity the
+ * call allocates nothing, so a table may tilt a little before every step. The stability
+ * guard measures the energy again, so the change is no energy from nothing.
+ * Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_set_gravity(ent_scene* scene, const double gravity_m_per_s2[3]);
+
+/**
+ * Holds a control point where it is now: in the world (obstacle ENT_NO_OBSTACLE), or on an
+ * obstacle's frame, moving with it from then on (a bowel end stapled to an organ). Its
+ * velocity becomes zero (or its frame's). After a jump of its obstacle it follows at up to
+ * half the scene's max_speed and catches up over the next steps. Pinning a pinned point
+ * again moves it to the new frame. ENT_EFFECT_PINNED turns on with the first pin.
+ * Thread: the driving thread, between steps; allocates, refactors the mass matrix (about
+ * as long as one step).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, control_point out of range);
+ *         ENT_ERROR_NOT_FOUND (no such obstacle); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point, int32_t obstacle);
+
+/**
+ * Lets a pinned control point go (a surgeon frees a loop), from the next step on.
+ * Refactors the mass matrix (allocates; about as long as one step).
+ * Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range); ENT_ERROR_NOT_FOUND (the
+ *         point is not pinned); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_point);
+
+/**
+ * Attaches the mesentery's root to an obstacle's frame: from then on it moves with the
+ * obstacle (the posterior wall as a mesh the simulator moves), from where it is now.
+ * ENT_NO_OBSTACLE leaves it in the world where it is. Thread: the driving thread, between
+ * steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (no mesentery, no
+ *         such obstacle); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_attach_mesentery(ent_scene* scene, int32_t obstacle);
 
 /* ------------------------------------------------------------------------------------ */
 /* Tools: surgical instruments that push and grasp the bowel                            */

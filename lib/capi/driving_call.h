@@ -1,4 +1,5 @@
-// The guard of the driving calls (ent_scene_step, ent_scene_add_obstacle, ent_tool_add):
+// The guard of the driving calls (ent_scene_step, ent_scene_add_obstacle, ent_tool_add and
+// the anatomy's changes between steps, enteron.h lists them):
 // one atomic exchange detects a driving call on the same scene that is still running on
 // another thread, and the call then fails with ENT_ERROR_BUSY before it touches anything.
 // Two threads stepping one scene at once used to hang in the near-pair search or publish
@@ -19,8 +20,9 @@ public:
         if (handle.driving.exchange(true, std::memory_order_acquire))
             throw Error(ErrorCode::busy, std::string(call) +
                                              ": another thread is in a driving call on this scene (ent_scene_step, "
-                                             "ent_scene_add_obstacle or ent_tool_add); driving calls on one scene "
-                                             "must not overlap. Nothing was done: call again once it has returned");
+                                             "ent_scene_add_obstacle, ent_tool_add or a change of the anatomy "
+                                             "between steps); driving calls on one scene must not overlap. Nothing "
+                                             "was done: call again once it has returned");
     }
     ~DrivingCall() { handle_.driving.store(false, std::memory_order_release); }
     DrivingCall(const DrivingCall&) = delete;

@@ -209,11 +209,13 @@ Dynamics::Energies Dynamics::energies(const State& state) const {
 bool Dynamics::begin_step(const State& state, double dt) {
     bool energy_changed = false;
     for (Owned<Effect>& effect : effects_) energy_changed |= effect->begin_step(state, dt);
+    if (pinned_) pinned_->begin_step(state, dt);
     return energy_changed;
 }
 
 void Dynamics::begin_attempt() {
     for (Owned<Effect>& effect : effects_) effect->begin_attempt();
+    if (pinned_) pinned_->begin_attempt();
 }
 
 void Dynamics::end_step(bool accepted) {
@@ -255,6 +257,7 @@ ContactSummary Dynamics::contacts() const {
 double Dynamics::external_work_bound() const {
     double work = 0.0;
     for (const Owned<Effect>& effect : effects_) work += effect->external_work_bound();
+    if (pinned_) work += pinned_->external_work_bound();
     return work;
 }
 

@@ -41,6 +41,8 @@ public:
     void add_shared_loads(SharedLoads* loads, EffectId owner);
     // The effect with this id, or null.
     Effect* find_effect(EffectId id);
+    // The pins, or null before the first.
+    PinnedPoints* pins() { return pinned_.get(); }
     // Factors the mass matrix (with the pins) and bounds the explicit stable substep.
     void finalize();
 
@@ -73,6 +75,9 @@ public:
     bool begin_step(const State& state, double dt);
     void begin_attempt();
     void end_step(bool accepted);
+    // Before each attempt: the velocities of the points pinned to moving frames
+    // (pinned_points.h). True if one is not zero.
+    bool prescribe(State& state, double dt) const { return pinned_ && pinned_->prescribe(state, dt); }
 
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;

@@ -1,5 +1,6 @@
 #include "mechanics/mesentery_force.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace enteron::mechanics {
@@ -16,24 +17,47 @@ MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters
         spring.weights = spline::weights_at(n, fraction * static_cast<double>(n - 1),
                                             spline::Derivative::value, model.ends);
         spring.root = parameters.root_start + fraction * (parameters.root_end - parameters.root_start);
-        spring.rest_length =
-            parameters.rest_length > 0.0 ? parameters.rest_length : stretch_vector(initial, spring).norm();
+        spring.rest_length = parameters.rest_length > 0.0 ? parameters.rest_length
+                                                          : stretch_vector(initial, spring, spring.root).norm();
         springs_.push_back(spring);
     }
 }
 
-Vec3 MesenteryForce::stretch_vector(const State& state, const Spring& spring) {
-    return spline::evaluate(state.q.data(), spring.weights) - spring.root;
+Vec3 MesenteryForce::stretch_vector(const State& state, const Spring& spring, const Vec3& root) {
+    return spline::evaluate(state.q.data(), spring.weights) - root;
+}
+
+FramePlacement MesenteryForce::placement(double t) const {
+    return frame_ != kNoFrame ? frames_->at(frame_, t) : FramePlacement{};
+}
+
+void MesenteryForce::attach(const RigidFrames* frames, std::size_t frame, double time) {
+    const FramePlacement from = placement(time);
+    frames_ = frames;
+    frame_ = frame;
+    const FramePlacement to = placement(time);
+    for (Spring& spring : springs_) spring.root = to.to_local(from.to_world(spring.root));
+}
+
+bool MesenteryForce::begin_step(const State& /*state*/, double dt) {
+    step_dt_ = dt;
+    largest_power_ = 0.0;
+    return false;
 }
 
 void MesenteryForce::evaluate(const State& state, double* force, const Linearization* lin) {
+    // The implicit step solves for the end of the substep: the root where it is then.
+    const FramePlacement frame = placement(state.time + (lin != nullptr ? lin->h : 0.0));
+    double power = 0.0;
     for (const Spring& spring : springs_) {
-        const Vec3 d = stretch_vector(state, spring);
+        const Vec3 root = frame.to_world(spring.root);
+        const Vec3 d = stretch_vector(state, spring, root);
         const double length = d.norm();
         if (!(length > spring.rest_length)) continue;  // slack (or NaN: the guard sees it)
         const double inv = 1.0 / length;
         const Vec3 u = d * inv;
         const double tension = stiffness_ * (length - spring.rest_length);
+        if (frame.moving) power += tension * frame.velocity_at(root).norm();
         const spline::SegmentWeights& sw = spring.weights;
         add_point_force(sw, -tension * u, force);
         if (lin != nullptr) {
@@ -44,12 +68,14 @@ void MesenteryForce::evaluate(const State& state, double* force, const Lineariza
             add_point_force(sw, axial_times(u, axial, transverse, velocity), lin->stiffness_times_velocity);
         }
     }
+    largest_power_ = std::max(largest_power_, power);
 }
 
 double MesenteryForce::potential_energy(const State& state) const {
+    const FramePlacement frame = placement(state.time);
     double energy = 0.0;
     for (const Spring& spring : springs_) {
-        const double excess = stretch_vector(state, spring).norm() - spring.rest_length;
+        const double excess = stretch_vector(state, spring, frame.to_world(spring.root)).norm() - spring.rest_length;
         if (excess > 0.0) energy += 0.5 * stiffness_ * excess * excess;
     }
     return energy;

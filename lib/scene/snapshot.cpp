@@ -32,7 +32,8 @@ void SnapshotPublisher::publish(Snapshot* slot) { latest_.store(static_cast<std:
 // latest, and unread. So each other slot is reserved once its readers are gone; then the
 // latest is copied into a reserved slot, that one is published, and the old latest is
 // reserved once its last reader is gone (no new reader pins a slot that is not the latest).
-void SnapshotPublisher::reserve_tools(std::size_t count) {
+template <class Reserve>
+void SnapshotPublisher::reserve_each(Reserve&& reserve) {
     const auto wait_unread = [this](std::size_t slot) {
         while (readers_[slot].load() != 0) std::this_thread::yield();  // a reader is copying: microseconds
     };
@@ -40,7 +41,7 @@ void SnapshotPublisher::reserve_tools(std::size_t count) {
     for (std::size_t slot = 0; slot < kSlots; ++slot) {
         if (slot == old_latest) continue;
         wait_unread(slot);
-        slots_[slot].tools.reserve(count);
+        reserve(slots_[slot]);
     }
     // The same state in another slot, within the capacities it has: values only, never a
     // vector's own fields (control_points() reads those from any thread).
@@ -50,9 +51,18 @@ void SnapshotPublisher::reserve_tools(std::size_t count) {
     moved.stats = latest.stats;
     moved.effects = latest.effects;
     moved.tools.assign(latest.tools.begin(), latest.tools.end());
+    moved.obstacles.assign(latest.obstacles.begin(), latest.obstacles.end());
     publish(&moved);
     wait_unread(old_latest);
-    slots_[old_latest].tools.reserve(count);
+    reserve(slots_[old_latest]);
+}
+
+void SnapshotPublisher::reserve_tools(std::size_t count) {
+    reserve_each([&](Snapshot& slot) { slot.tools.reserve(count); });
+}
+
+void SnapshotPublisher::reserve_obstacles(std::size_t count) {
+    reserve_each([&](Snapshot& slot) { slot.obstacles.reserve(count); });
 }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {

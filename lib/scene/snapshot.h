@@ -22,6 +22,7 @@
 
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
+#include "mechanics/rigid_frames.h"
 #include "spline/catmull_rom.h"
 
 namespace enteron::scene {
@@ -44,12 +45,19 @@ struct EffectStats {
     uint64_t total_time_ns = 0;
 };
 
+// Where an obstacle rests in a published state.
+struct ObstacleOutput {
+    bool present = false;  // false once removed
+    mechanics::RigidPose pose;
+};
+
 struct Snapshot {
-    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory) {}
+    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory), obstacles(memory) {}
     std::pmr::vector<double> control_points;  // x y z per point, m
     SceneStats stats;
     std::array<EffectStats, mechanics::kEffectCount> effects{};
     std::pmr::vector<collision::ToolOutput> tools;  // by tool index
+    std::pmr::vector<ObstacleOutput> obstacles;     // by obstacle index
 };
 
 class SnapshotPublisher {
@@ -69,6 +77,8 @@ public:
     // Makes room for `count` tools in every slot, so that filling one never allocates.
     // Allocates; waits for the readers of a slot to finish their copy. Not during a step.
     void reserve_tools(std::size_t count);
+    // The same for `count` obstacles.
+    void reserve_obstacles(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
     // The spline's end treatment of every snapshot's axis.
@@ -91,6 +101,10 @@ public:
     };
 
 private:
+    // Runs reserve(slot) on every slot by the rules of begin_write (reserve_tools).
+    template <class Reserve>
+    void reserve_each(Reserve&& reserve);
+
     std::pmr::vector<Snapshot> slots_;
     mutable std::array<std::atomic<uint32_t>, kSlots> readers_{};  // readers pinning each slot
     std::atomic<std::size_t> latest_{0};

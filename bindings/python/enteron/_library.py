@@ -89,6 +89,21 @@ _declare("ent_scene_effect_stats", _status, _scene_p, ctypes.c_int32, ctypes.POI
 _declare("ent_obstacle_desc_init", _status, ctypes.POINTER(s.ent_obstacle_desc), ctypes.c_uint32)
 _declare("ent_scene_add_obstacle", _status, _scene_p, ctypes.POINTER(s.ent_obstacle_desc),
          ctypes.POINTER(ctypes.c_int32))
+_declare("ent_scene_create_json_file", _status, ctypes.c_char_p, ctypes.POINTER(s.ent_callbacks),
+         ctypes.POINTER(_scene_p))
+_declare("ent_scene_remove_obstacle", _status, _scene_p, ctypes.c_int32)
+_declare("ent_obstacle_set_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_obstacle_set_velocity", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_obstacle_set_friction", _status, _scene_p, ctypes.c_int32, ctypes.c_double)
+_declare("ent_scene_obstacle_count", _status, _scene_p, ctypes.POINTER(ctypes.c_uint32))
+_declare("ent_obstacle_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_obstacle_mesh", _status, _scene_p, ctypes.c_int32, ctypes.c_uint32, _double_p,
+         ctypes.POINTER(ctypes.c_uint32), ctypes.c_uint32, ctypes.POINTER(ctypes.c_uint32),
+         ctypes.POINTER(ctypes.c_uint32))
+_declare("ent_scene_set_gravity", _status, _scene_p, _double_p)
+_declare("ent_scene_pin_point", _status, _scene_p, ctypes.c_uint32, ctypes.c_int32)
+_declare("ent_scene_unpin_point", _status, _scene_p, ctypes.c_uint32)
+_declare("ent_scene_attach_mesentery", _status, _scene_p, ctypes.c_int32)
 _declare("ent_tool_desc_init", _status, ctypes.POINTER(s.ent_tool_desc), ctypes.c_uint32)
 _declare("ent_tool_add", _status, _scene_p, ctypes.POINTER(s.ent_tool_desc), ctypes.POINTER(ctypes.c_int32))
 _declare("ent_tool_set_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)

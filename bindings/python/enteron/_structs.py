@@ -161,6 +161,14 @@ class ent_obstacle_desc(ctypes.Structure):
         ("start_m", _vec3),
         ("end_m", _vec3),
         ("radius_m", ctypes.c_double),
+        ("mesh_vertices_xyz_m", ctypes.POINTER(ctypes.c_double)),
+        ("mesh_vertex_count", ctypes.c_uint32),
+        ("mesh_triangles", ctypes.POINTER(ctypes.c_uint32)),
+        ("mesh_triangle_count", ctypes.c_uint32),
+        ("mesh_voxel_size_m", ctypes.c_double),
+        ("position_m", _vec3),
+        ("orientation_wxyz", ctypes.c_double * 4),
+        ("friction", ctypes.c_double),
     ]
 
 
