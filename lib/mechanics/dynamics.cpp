@@ -30,6 +30,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       mass_products_(memory),
       mass_factor_(memory),
       constant_system_(memory),
+      border_(memory),
       scratch_(memory),
       one_effect_force_(memory) {
     const std::size_t n = model.control_points;
@@ -72,6 +73,9 @@ void Dynamics::finalize() {
         pinned_->constrain(stiffness);
         pinned_->constrain(damping);
     }
+    std::size_t bodies = 0;
+    for (const Owned<Effect>& effect : effects_) bodies += effect->border_bodies();
+    border_.reserve(bodies, coordinates());
     max_frequency_ = std::sqrt(kEigenvalueMargin * largest_eigenvalue(stiffness));
     max_damping_rate_ = kEigenvalueMargin * largest_eigenvalue(damping);
     constant_system_h_ = -1.0;
@@ -181,6 +185,10 @@ bool Dynamics::begin_step(const State& state, double dt) {
     bool energy_changed = false;
     for (Owned<Effect>& effect : effects_) energy_changed |= effect->begin_step(state, dt);
     return energy_changed;
+}
+
+void Dynamics::evaluation_used(double duration, const State* after) {
+    for (Owned<Effect>& effect : effects_) effect->evaluation_used(duration, after);
 }
 
 void Dynamics::begin_attempt() {

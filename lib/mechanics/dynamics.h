@@ -11,6 +11,7 @@
 
 #include "base/memory.h"
 #include "mechanics/axis_model.h"
+#include "mechanics/bordered_system.h"
 #include "mechanics/effect.h"
 #include "mechanics/per_coordinate_matrix.h"
 #include "mechanics/pinned_points.h"
@@ -56,6 +57,12 @@ public:
     // Builds M + sum of the constant parts of h C + h^2 H, pins applied: the start of the
     // implicit system for substep h. Cached: rebuilt only when h changes.
     const SystemMatrix& constant_system(double h);
+
+    // The border of the implicit system (bordered_system.h), sized by finalize() for the
+    // bodies the effects may add.
+    BorderedSystem& border() { return border_; }
+    // Tells every effect how the integrator used its last evaluation (Effect::evaluation_used).
+    void evaluation_used(double duration, const State* after);
 
     // The effects' step hooks (effect.h), in the order the effects were added.
     // begin_step returns true if an effect changed the energy it stores.
@@ -109,6 +116,7 @@ private:
     PerCoordinateMatrix mass_products_;      // M again, for M v
     numerics::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
     SystemMatrix constant_system_;
+    BorderedSystem border_;
     double constant_system_h_ = -1.0;
     double max_frequency_ = 0.0;      // rad/s, bound on sqrt(eig(M^-1 K))
     double max_damping_rate_ = 0.0;   // 1/s, bound on eig(M^-1 C)
