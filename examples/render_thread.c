@@ -160,7 +160,9 @@ int main(int argc, char** argv) {
     printf("render_thread: skin: convolution, %u triangles in the last frame (%u to %u), update %.0f us mean, "
            "%.0f us worst\n", (unsigned)s.last_triangles, (unsigned)s.min_triangles, (unsigned)s.max_triangles,
            s.frames > 0 ? s.skin_update_us_sum / (double)s.frames : 0.0, s.skin_update_us_max);
-    if (s.failed_steps != 0 || s.failed_reads != 0 || s.frames == 0 || s.advanced_frames < s.frames / 2) {
+    /* Pass or fail on correctness only: how many frames see a newer state depends on how
+       loaded the machine is (sanitizers, shared CI), so one is enough to show the hand-off. */
+    if (s.failed_steps != 0 || s.failed_reads != 0 || s.frames == 0 || s.advanced_frames == 0) {
         fprintf(stderr, "render_thread: FAILED (%ld failed steps, %ld failed reads)\n", s.failed_steps,
                 s.failed_reads);
         return 1;

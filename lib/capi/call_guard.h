@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <exception>
 #include <new>
+#include <utility>
 
 #include "base/error.h"
 #include "enteron/enteron.h"
@@ -20,24 +21,31 @@ inline void require(const void* pointer, const char* name) {
     if (pointer == nullptr) throw Error(ErrorCode::invalid_argument, std::string(name) + " must not be NULL");
 }
 
-template <class Body>
-ent_status guarded(Body&& body) noexcept {
+// The guard with the store of the message given: libenteron_lcm keeps its own
+// (ent_lcm_last_error), so that the two libraries' messages never mix.
+template <void (*Report)(const char*), class Body>
+ent_status guarded_with(Body&& body) noexcept {
     try {
         body();
         return ENT_OK;
     } catch (const Error& error) {
-        set_last_error(error.what());
+        Report(error.what());
         return static_cast<ent_status>(error.code());
     } catch (const std::bad_alloc&) {
-        set_last_error("out of memory");
+        Report("out of memory");
         return ENT_ERROR_OUT_OF_MEMORY;
     } catch (const std::exception& error) {
-        set_last_error(error.what());
+        Report(error.what());
         return ENT_ERROR_INTERNAL;
     } catch (...) {
-        set_last_error("unknown internal error");
+        Report("unknown internal error");
         return ENT_ERROR_INTERNAL;
     }
+}
+
+template <class Body>
+ent_status guarded(Body&& body) noexcept {
+    return guarded_with<set_last_error>(std::forward<Body>(body));
 }
 
 }  // namespace enteron::capi

@@ -1,5 +1,6 @@
 #include "scene/snapshot.h"
 
+#include <algorithm>
 #include <thread>
 
 namespace enteron::scene {
@@ -13,45 +14,57 @@ SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_r
     }
 }
 
+// The stepping thread alone writes latest_ (relaxed loads of it here are its own stores).
+// Sequentially consistent everywhere else: the argument in snapshot.h needs one order of
+// the writer's "unread?" check, the readers' counts and the publications.
 Snapshot* SnapshotPublisher::begin_write() {
-    std::lock_guard<std::mutex> lock(mutex_);
+    const std::size_t latest = latest_.load(std::memory_order_relaxed);
     for (std::size_t i = 1; i < kSlots; ++i) {
-        const std::size_t slot = (latest_ + i) % kSlots;
-        if (readers_[slot] == 0) return &slots_[slot];
+        const std::size_t slot = (latest + i) % kSlots;
+        if (readers_[slot].load() == 0) return &slots_[slot];
     }
     return nullptr;
 }
 
-void SnapshotPublisher::publish(Snapshot* slot) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    latest_ = static_cast<std::size_t>(slot - slots_.data());
-}
+void SnapshotPublisher::publish(Snapshot* slot) { latest_.store(static_cast<std::size_t>(slot - slots_.data())); }
 
+// The stepping thread's own rules (begin_write) say when it may touch a slot: not the
+// latest, and unread. So each other slot is reserved once its readers are gone; then the
+// latest is copied into a reserved slot, that one is published, and the old latest is
+// reserved once its last reader is gone (no new reader pins a slot that is not the latest).
 void SnapshotPublisher::reserve_tools(std::size_t count) {
+    const auto wait_unread = [this](std::size_t slot) {
+        while (readers_[slot].load() != 0) std::this_thread::yield();  // a reader is copying: microseconds
+    };
+    const std::size_t old_latest = latest_.load(std::memory_order_relaxed);
     for (std::size_t slot = 0; slot < kSlots; ++slot) {
-        for (;;) {
-            {
-                std::lock_guard<std::mutex> lock(mutex_);
-                if (readers_[slot] == 0) {
-                    slots_[slot].tools.reserve(count);
-                    break;
-                }
-            }
-            std::this_thread::yield();  // a reader is copying: microseconds
-        }
+        if (slot == old_latest) continue;
+        wait_unread(slot);
+        slots_[slot].tools.reserve(count);
     }
+    // The same state in another slot, within the capacities it has: values only, never a
+    // vector's own fields (control_points() reads those from any thread).
+    Snapshot& moved = slots_[(old_latest + 1) % kSlots];
+    const Snapshot& latest = slots_[old_latest];
+    std::copy(latest.control_points.begin(), latest.control_points.end(), moved.control_points.begin());
+    moved.stats = latest.stats;
+    moved.effects = latest.effects;
+    moved.tools.assign(latest.tools.begin(), latest.tools.end());
+    publish(&moved);
+    wait_unread(old_latest);
+    slots_[old_latest].tools.reserve(count);
 }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {
-    std::lock_guard<std::mutex> lock(publisher.mutex_);
-    slot_ = publisher.latest_;
-    publisher.readers_[slot_] += 1;
+    for (;;) {
+        slot_ = publisher.latest_.load();
+        publisher.readers_[slot_].fetch_add(1);
+        if (publisher.latest_.load() == slot_) break;
+        publisher.readers_[slot_].fetch_sub(1);  // a newer one came meanwhile: take that
+    }
     snapshot_ = &publisher.slots_[slot_];
 }
 
-SnapshotPublisher::Reader::~Reader() {
-    std::lock_guard<std::mutex> lock(publisher_.mutex_);
-    publisher_.readers_[slot_] -= 1;
-}
+SnapshotPublisher::Reader::~Reader() { publisher_.readers_[slot_].fetch_sub(1); }
 
 }  // namespace enteron::scene

@@ -3,18 +3,21 @@
 //
 // A small pool of preallocated slots: the stepping thread fills a slot that is neither the
 // latest nor being read, then makes it the latest; a reader pins the latest slot while it
-// copies from it. The mutex guards only the slot bookkeeping (a few integer operations),
-// so the stepping thread never waits on a reader for longer than that.
+// copies from it. The bookkeeping is atomic, without a lock: the stepping thread never
+// waits (nor makes a system call) for a reader, and readers never wait for it. A reader
+// counts itself on the latest slot, then checks that the slot is still the latest (else it
+// uncounts and tries again): the writer only fills slots that are not the latest and that
+// it saw unread, so a slot a reader counted on and found latest is complete and stays put.
 //
 // The publisher outlives the scene when skins still read it (the C API shares it between
 // them): a skin then keeps working on the last state published.
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory_resource>
-#include <mutex>
 #include <vector>
 
 #include "collision/tool.h"
@@ -83,10 +86,9 @@ public:
     };
 
 private:
-    mutable std::mutex mutex_;
     std::pmr::vector<Snapshot> slots_;
-    mutable std::array<uint32_t, kSlots> readers_{};
-    std::size_t latest_ = 0;
+    mutable std::array<std::atomic<uint32_t>, kSlots> readers_{};  // readers pinning each slot
+    std::atomic<std::size_t> latest_{0};
 };
 
 }  // namespace enteron::scene

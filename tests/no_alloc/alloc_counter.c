@@ -14,11 +14,13 @@ extern void __libc_free(void* memory);
 extern void* __libc_memalign(size_t alignment, size_t size);
 
 static volatile int counting = 0;
+static volatile int one_thread = 0;     /* count only the thread that called _start_this_thread */
+static __thread int counted_thread = 0;
 static unsigned long counted = 0;
 static void* callers[ALLOC_COUNTER_CALLERS];
 
 void alloc_counter_note(void* caller) {
-    if (!counting) return;
+    if (!counting || (one_thread && !counted_thread)) return;
     /* One thread allocates during the counted part; the atomic add keeps it exact anyway. */
     unsigned long index = __atomic_fetch_add(&counted, 1ul, __ATOMIC_RELAXED);
     if (index < ALLOC_COUNTER_CALLERS) callers[index] = caller;
@@ -26,11 +28,21 @@ void alloc_counter_note(void* caller) {
 
 void alloc_counter_start(void) {
     __atomic_store_n(&counted, 0ul, __ATOMIC_RELAXED);
+    one_thread = 0;
+    counting = 1;
+}
+
+void alloc_counter_start_this_thread(void) {
+    __atomic_store_n(&counted, 0ul, __ATOMIC_RELAXED);
+    counted_thread = 1;
+    one_thread = 1;
     counting = 1;
 }
 
 unsigned long alloc_counter_stop(void) {
     counting = 0;
+    one_thread = 0;
+    counted_thread = 0;
     return __atomic_load_n(&counted, __ATOMIC_RELAXED);
 }
 

@@ -15,6 +15,8 @@ extern "C" {
 void alloc_counter_note(void* caller);
 /* Resets the count to zero and starts counting. */
 void alloc_counter_start(void);
+/* The same, counting only what the calling thread allocates (other threads may allocate). */
+void alloc_counter_start_this_thread(void);
 /* Stops counting and returns the number of allocations since alloc_counter_start. */
 unsigned long alloc_counter_stop(void);
 /* The return address of the index-th counted allocation (the first ALLOC_COUNTER_CALLERS). */
