@@ -158,6 +158,25 @@ void ToolsForce::apply(const Contact& contact, const Vec3& normal, double axial,
     contacts_.push_back(contact);
 }
 
+const ToolsForce::Contact& ToolsForce::apply_sphere(const spline::SegmentWeights& weights, const ContactForce& cf,
+                                                     const Vec3& normal, double scale, const Vec3& velocity,
+                                                     const Vec3& arm, double* force,
+                                                     const mechanics::Linearization* lin) {
+    const Mat3 nn = outer(normal);
+    Contact contact;
+    contact.weights = weights;
+    contact.force = scale * cf.force;
+    contact.stiffness = (scale * cf.stiffness) * nn;
+    contact.damping = scale * (cf.damping * nn + cf.friction_damping * (Mat3::Identity() - nn));
+    contact.velocity = velocity;
+    contact.arm = arm;
+    // The implicit system's block, scaled with the force.
+    const ContactLinearization l = contact_linearization(cf, lin != nullptr ? lin->h : 0.0);
+    apply(contact, normal, l.axial, l.transverse, scale, scale * cf.stiffness * velocity.dot(normal) * normal, force,
+          lin);
+    return contacts_.back();
+}
+
 void ToolsForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
     spheres_.update(state.q.data());
     last_ = {};
@@ -254,23 +273,8 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     // The force on the tool is -scale total, the scale changing with the magnitudes.
     tool.stiffness = bounded ? Mat3(-scale * (total_rate - total * magnitude_rate / total_magnitude)) : Mat3(-total_rate);
 
-    for (const Hit& hit : hits_) {
-        const Sphere& sphere = spheres_[hit.sphere];
-        const ContactForce& cf = hit.force;
-        const Mat3 nn = outer(hit.normal);
-        Contact contact;
-        contact.weights = sphere.weights;
-        contact.force = scale * cf.force;
-        contact.stiffness = (scale * cf.stiffness) * nn;
-        contact.damping = scale * (cf.damping * nn + cf.friction_damping * (Mat3::Identity() - nn));
-        contact.velocity = hit.velocity;
-        contact.arm = hit.arm;
-        const double h = lin != nullptr ? lin->h : 0.0;
-        // Scaled with the force.
-        const ContactLinearization l = contact_linearization(cf, h);
-        apply(contact, hit.normal, l.axial, l.transverse, scale,
-              scale * cf.stiffness * hit.velocity.dot(hit.normal) * hit.normal, force, lin);
-    }
+    for (const Hit& hit : hits_)
+        apply_sphere(spheres_[hit.sphere].weights, hit.force, hit.normal, scale, hit.velocity, hit.arm, force, lin);
     // A slack grasp spring pulls nothing.
     if (holding && !tool.slipped && spring.taut) {
         Contact contact;
@@ -349,19 +353,10 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
     for (const ProxyContact& c : proxy_.contacts()) {
         const ProxyCandidate& candidate = candidates_[c.candidate];
         const Sphere& sphere = spheres_[candidate.sphere];
-        const ContactForce& cf = c.force;
-        const Mat3 nn = outer(c.normal);
-        Contact contact;
-        contact.weights = sphere.weights;
-        contact.force = scale * cf.force;
-        contact.stiffness = (scale * cf.stiffness) * nn;
-        contact.damping = scale * (cf.damping * nn + cf.friction_damping * (Mat3::Identity() - nn));
-        contact.velocity = candidate.velocity;
-        contact.arm = c.s * problem.shaft + tool.settings.radius * c.normal;
-        const ContactLinearization l = contact_linearization(cf, h);
-        apply(contact, c.normal, l.axial, l.transverse, scale,
-              scale * cf.stiffness * candidate.velocity.dot(c.normal) * c.normal, force, lin);
-        block += l.axial * nn + l.transverse * Mat3::Identity();
+        const Contact& contact = apply_sphere(sphere.weights, c.force, c.normal, scale, candidate.velocity,
+                                              c.s * problem.shaft + tool.settings.radius * c.normal, force, lin);
+        const ContactLinearization l = contact_linearization(c.force, h);
+        block += l.axial * outer(c.normal) + l.transverse * Mat3::Identity();
         predicted += contact.force - h * (contact.stiffness * contact.velocity);
         last_.max_penetration = std::max(last_.max_penetration, c.depth);
     }

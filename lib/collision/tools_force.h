@@ -162,6 +162,11 @@ private:
     // and stiffness_times_velocity, H v) and to contacts_.
     void apply(const Contact& contact, const Vec3& normal, double axial, double transverse, double scale,
                const Vec3& stiffness_times_velocity, double* force, const mechanics::Linearization* lin);
+    // A collision sphere's contact (the law's force cf along `normal`, scaled by `scale`;
+    // the sphere's velocity; the arm from the tip) made and applied; returns it.
+    const Contact& apply_sphere(const spline::SegmentWeights& weights, const ContactForce& cf, const Vec3& normal,
+                                double scale, const Vec3& velocity, const Vec3& arm, double* force,
+                                const mechanics::Linearization* lin);
 
     CollisionSpheres& spheres_;  // shared with the other contact effects
     ToolChannels& channels_;

@@ -439,6 +439,42 @@ TEST(ToolHaptics, BadToolSettingsAreRefusedByName) {
     EXPECT_EQ(ent_tool_add(scene.get(), &old, nullptr), ENT_OK) << ent_last_error();
 }
 
+// The mean drag along x on a tool pressed 3 mm into the bowel and slid 10 cm along it.
+double mean_drag(int32_t mode, double friction) {
+    const double dt = 1e-3, r = 0.0025, top = 2 * kRadius + r;
+    ScenePtr scene = bowel_on_floor(0.6, 25, dt);
+    if (!scene) return -1.0;
+    ent_tool_desc desc;
+    ent_tool_desc_default(&desc);
+    desc.radius_m = r;
+    desc.mode = mode;
+    desc.friction = friction;
+    desc.position_m[0] = -0.05;
+    desc.position_m[2] = top - 0.003;
+    EXPECT_EQ(ent_tool_add(scene.get(), &desc, nullptr), ENT_OK) << ent_last_error();
+    double sum = 0.0;
+    const int steps = 1000;  // 0.1 m/s
+    for (int i = 1; i <= steps; ++i) {
+        const double p[3] = {-0.05 + 0.1 * i / steps, 0.0, top - 0.003};
+        EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK);
+        EXPECT_EQ(ent_scene_step(scene.get(), dt), ENT_OK) << ent_last_error();
+        if (i > steps / 5) sum += feedback(scene.get(), 0).force_N[0];
+    }
+    return -sum / (steps - steps / 5);
+}
+
+TEST(ToolHaptics, FrictionPerTool) {
+    for (int32_t mode : {ENT_TOOL_MODE_PROXY, ENT_TOOL_MODE_DIRECT}) {
+        const double none = mean_drag(mode, 0.0), scene = mean_drag(mode, -1.0), rough = mean_drag(mode, 0.9);
+        std::cout << "[ friction " << (mode == ENT_TOOL_MODE_PROXY ? "proxy" : "direct") << " ] mean drag: 0 -> " << none
+                  << " N, the scene's 0.3 -> " << scene << " N, 0.9 -> " << rough << " N\n";
+        // The drag opposes the motion (+x) and grows with the tool's coefficient.
+        EXPECT_GT(scene, 0.0);
+        EXPECT_LT(none, 0.5 * scene);
+        EXPECT_GT(rough, 1.5 * scene);
+    }
+}
+
 TEST(ToolHaptics, JsonToolsTakeTheModeCouplingFrictionAndLimiter) {
     const std::string base = R"({"intestine": {"length": 0.4, "control_points": 17,
         "shape": {"kind": "line", "center": [-0.2, 0, 0.0125]}}, "tools": [)";
