@@ -542,8 +542,9 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
 
 /**
  * Adds a tool at the desc's pose. The first tool turns ENT_EFFECT_TOOLS on. Every collision
- * sphere of the bowel touching the capsule gets the scene's penalty contact (ent_scene_desc
- * contact_* fields, JSON "collision"). The JSON description lists tools under "tools"
+ * sphere of the bowel touching the capsule (the proxy's in proxy mode, the default: see
+ * ENT_TOOL_MODE_PROXY) gets the scene's penalty contact (ent_scene_desc contact_* fields,
+ * JSON "collision"; the tool's own friction if set). The JSON description lists tools under "tools"
  * instead (they come first). Allocates; not on a hard real-time path.
  * @code
  *   ent_tool_desc tool;
@@ -578,10 +579,11 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 
 /**
  * The force (N) and the torque about the tip (N m) the bowel exerted on the tool in the
- * last step (its last evaluation): equal and opposite to what the bowel received, the
- * sum of the tool's contacts and grasp, bounded by max_force_N: when the magnitudes of
- * those forces add up to more, they are all scaled down by one factor, on the bowel as on
- * the tool, so action equals reaction. Zero before the first step.
+ * last accepted step: exactly minus what the bowel received over that step (the time
+ * average of the forces the integrator applied), bounded by max_force_N. Proxy mode: the
+ * virtual coupling's force, bounded. Direct mode: the sum of the tool's contacts and
+ * grasp; when their magnitudes add up to more than max_force_N they are all scaled down by
+ * one factor, on the bowel as on the tool. Zero before the first step.
  * Reads the last published snapshot (as ent_tool_read_feedback does, which tells more):
  * any thread, never waits, allocates nothing.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
