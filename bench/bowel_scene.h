@@ -19,6 +19,7 @@ constexpr Integrator kIntegrators[] = {
     {"rk4", ENT_INTEGRATOR_RK4},
     {"symplectic_euler", ENT_INTEGRATOR_SYMPLECTIC_EULER},
     {"implicit_euler", ENT_INTEGRATOR_IMPLICIT_EULER},
+    {"bdf2", ENT_INTEGRATOR_BDF2},
 };
 
 // "call: status: message" of a failed call on this thread.

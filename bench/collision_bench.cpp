@@ -49,7 +49,9 @@ constexpr double box_half_extent_m = 0.15;
 
 // Steps timed per integrator: a simulated second for implicit Euler, less for the explicit
 // integrators, whose steps cost hundreds of substeps with self-contact.
-int timed_steps(int32_t integrator) { return integrator == ENT_INTEGRATOR_IMPLICIT_EULER ? 1000 : 100; }
+int timed_steps(int32_t integrator) {
+    return integrator == ENT_INTEGRATOR_IMPLICIT_EULER || integrator == ENT_INTEGRATOR_BDF2 ? 1000 : 100;
+}
 
 // N = 240 is the target; the smaller ones show how the gap to MuJoCo grows with N.
 constexpr uint32_t control_point_counts[] = {60, 120, 240};

@@ -32,8 +32,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-INTEGRATORS = ("rk4", "symplectic_euler", "implicit_euler")
-EXPECTED_TIME_ORDER = {"rk4": 4.0, "symplectic_euler": 1.0, "implicit_euler": 1.0}
+INTEGRATORS = ("rk4", "symplectic_euler", "implicit_euler", "bdf2")
+EXPECTED_TIME_ORDER = {"rk4": 4.0, "symplectic_euler": 1.0, "implicit_euler": 1.0, "bdf2": 2.0}
 # Catmull-Rom interpolation reproduces quadratics: the axis converges as O(l^2) or better
 # asymptotically; the stiff stretching (nearly inextensible) slows it before that, so the
 # check accepts from 1 up (measured about 1.2 to 1.7 on the swing between N = 60 and 960).
@@ -363,7 +363,7 @@ class Report:
         # Plots: error against N, time error against substep, error against cost.
         fig, axes = plt.subplots(1, len(scenes), figsize=(5 * len(scenes), 4), squeeze=False)
         for ax, scene in zip(axes[0], scenes):
-            for integrator, style in zip(INTEGRATORS, ("o-", "s-", "^-")):
+            for integrator, style in zip(INTEGRATORS, ("o-", "s-", "^-", "d-")):
                 sel = sorted((r for r in rows if r["scene"] == scene and r["t_s"] == last and r["sweep"] == "N"
                               and r["integrator"] == integrator), key=lambda r: r["control_points"])
                 ax.loglog([r["control_points"] for r in sel], [r["error_rel"] for r in sel], style,
@@ -378,7 +378,7 @@ class Report:
 
         fig, axes = plt.subplots(1, len(scenes), figsize=(5 * len(scenes), 4), squeeze=False)
         for ax, scene in zip(axes[0], scenes):
-            for integrator, style in zip(INTEGRATORS, ("o-", "s-", "^-")):
+            for integrator, style in zip(INTEGRATORS, ("o-", "s-", "^-", "d-")):
                 sel = sorted((r for r in rows if r["scene"] == scene and r["t_s"] == last and r["sweep"] == "dt"
                               and r["integrator"] == integrator and r["time_error_m"] > 0),
                              key=lambda r: r["timestep_s"])
@@ -395,7 +395,7 @@ class Report:
                 if r["scene"] == scene and r["t_s"] == last and r["sweep"] in ("N", "dt") and not r["at_reference_N"]:
                     unique.setdefault((r["integrator"], r["control_points"], r["timestep_s"]), r)
             pts = list(unique.values())
-            for integrator, marker in zip(INTEGRATORS, ("o", "s", "^")):
+            for integrator, marker in zip(INTEGRATORS, ("o", "s", "^", "d")):
                 sel = [r for r in pts if r["integrator"] == integrator]
                 ax.loglog([r["us_per_ms"] for r in sel], [r["error_rel"] for r in sel], marker, alpha=0.6,
                           label=integrator)
@@ -888,6 +888,14 @@ class Report:
         for t in times:
             errors = [p["error_m"] for p in sorted(rope, key=lambda p: p["control_points"])
                       if p["timestep_s"] == 1e-3 and p["t_s"] == t and p["sweep"] == "N" and math.isfinite(p["error_m"])]
+            # Runs that the study's wall-time budget left out ("timed only", "not run") depend on
+            # how loaded the machine is: then there is nothing to compare, not a failure.
+            budgeted = [p for p in rope if p["timestep_s"] == 1e-3 and p["t_s"] == t and p["sweep"] == "N"
+                        and str(p.get("status", "ok")).startswith(("timed only", "not run"))]
+            if len(errors) < 2 and budgeted:
+                print(f"report.py: peers: only {len(errors)} mujoco_rope run(s) reached t = {g(t)} s at 1 ms within "
+                      f"the time budget ({len(budgeted)} left out): the convergence check is not made")
+                continue
             self.expect(len(errors) >= 2, f"peers: fewer than two mujoco_rope runs reached t = {g(t)} s at 1 ms")
             self.expect(all(b < a for a, b in zip(errors, errors[1:])),
                         f"peers: the MuJoCo rope's error does not fall as N grows at t = {g(t)} s: {errors}")

@@ -8,8 +8,8 @@
 
 namespace study {
 
-const int32_t kIntegrators[3] = {ENT_INTEGRATOR_RK4, ENT_INTEGRATOR_SYMPLECTIC_EULER,
-                                 ENT_INTEGRATOR_IMPLICIT_EULER};
+const int32_t kIntegrators[4] = {ENT_INTEGRATOR_RK4, ENT_INTEGRATOR_SYMPLECTIC_EULER,
+                                 ENT_INTEGRATOR_IMPLICIT_EULER, ENT_INTEGRATOR_BDF2};
 
 bool Options::wants(const std::string& part) const {
     return parts.empty() || std::find(parts.begin(), parts.end(), part) != parts.end();
@@ -105,6 +105,7 @@ const char* integrator_name(int32_t integrator) {
         case ENT_INTEGRATOR_RK4: return "rk4";
         case ENT_INTEGRATOR_SYMPLECTIC_EULER: return "symplectic_euler";
         case ENT_INTEGRATOR_IMPLICIT_EULER: return "implicit_euler";
+        case ENT_INTEGRATOR_BDF2: return "bdf2";
         default: return "unknown";
     }
 }

@@ -55,7 +55,7 @@ double median(std::vector<double> values);
 double log_log_slope(const std::vector<double>& x, const std::vector<double>& y);
 
 const char* integrator_name(int32_t integrator);
-extern const int32_t kIntegrators[3];
+extern const int32_t kIntegrators[4];
 
 // A CSV file with a fixed header; every row must have as many fields.
 class Csv {

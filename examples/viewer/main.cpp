@@ -3,7 +3,8 @@
 //   enteron-viewer [SCENE.json] [options]      with no scene: the demo scene
 //
 // It uses only the public C API of libenteron: a physics thread drives the scene, the
-// render thread draws the published snapshot through a skin (physics_thread.h).
+// render thread draws the published snapshot through a skin (physics_thread.h). With
+// --lcm URL it shows an enteron-lcm-server's session instead (remote/remote_session.h).
 #include <enteron/enteron.h>
 
 #include <cmath>
@@ -33,6 +34,10 @@ const char kUsage[] =
     "  --skin METHOD       tube, point_skeleton or convolution (default convolution)\n"
     "  --ui MODE           full (panels), hud (a small overlay) or none (default: full; headless: hud)\n"
     "  --rate R            slow motion: simulated seconds per wall second, (0, 1] (default 1)\n"
+    "  --lcm URL           show the session of an enteron-lcm-server there instead of a scene here\n"
+    "                      (e.g. udpm://239.255.76.67:7667?ttl=0); the mouse sends tool_command_t;\n"
+    "                      headless, --seconds and the script's times are wall seconds\n"
+    "  --channel-suffix S  with --lcm: the server's --channel-suffix\n"
     "Exit status: 0 done; 1 the scene did not load, a library call failed or an output could not be\n"
     "written; 2 a bad command line; 3 no OpenGL 3.3 context could be made.\n";
 
@@ -85,8 +90,11 @@ int main(int argc, char** argv) {
         } else if (arg == "--rate") {
             if (int bad = number(1.0 / 1024.0, 1.0, settings.session.rate)) return bad;
         } else if ((arg == "--frames" || arg == "--video" || arg == "--screenshot" || arg == "--script" ||
-                    arg == "--skin" || arg == "--ui" || arg == "--size") && has_value) {
+                    arg == "--skin" || arg == "--ui" || arg == "--size" || arg == "--lcm" ||
+                    arg == "--channel-suffix") && has_value) {
             const std::string value = argv[++i];
+            if (arg == "--lcm") settings.lcm_url = value;
+            if (arg == "--channel-suffix") settings.lcm_channel_suffix = value;
             if (arg == "--frames") options.frames_dir = value;
             if (arg == "--video") options.video_path = value;
             if (arg == "--screenshot") options.screenshot_path = value;
@@ -123,11 +131,17 @@ int main(int argc, char** argv) {
         return usage_error("--video wants a .mp4 or .gif file, got " + video);
     if (headless && !ui_given) settings.ui = UiMode::hud;
     if (headless && !size_given) options.width = 1280, options.height = 720;
+    const bool remote = !settings.lcm_url.empty();
+    if (remote && !settings.scene_path.empty()) return usage_error("--lcm shows the server's scene: give no SCENE.json");
+    if (!remote && !settings.lcm_channel_suffix.empty()) return usage_error("--channel-suffix goes with --lcm");
     // The demo scene, headless, plays the demo's tool path unless told otherwise.
-    if (script_name.empty() && headless && settings.scene_path.empty()) script_name = "demo";
+    if (script_name.empty() && headless && settings.scene_path.empty() && !remote) script_name = "demo";
     if (!script_name.empty()) {
         std::string error;
         if (!options.script.load(script_name, error)) return usage_error(error);
+        // A tool path is played by a local physics thread; a remote tool follows the mouse.
+        if (remote && !options.script.tool_path().empty())
+            return usage_error("with --lcm a script drives the tool with mouse lines, not tool lines");
         settings.session.tool0_path = options.script.tool_path();
     }
     // The simulation waits for the picture: headless, for frame 1's time; in a window, at

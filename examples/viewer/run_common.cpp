@@ -107,6 +107,14 @@ void print_summary(const Viewer& viewer, int frames, double wall_s) {
         const double* p = frame.tools[0].pose.position_m;
         std::printf("; tool 0 tip at (%.4f, %.4f, %.4f) m", p[0], p[1], p[2]);
     }
+    if (frame.link.remote) {
+        const LinkStatus& link = frame.link;
+        std::printf("\nenteron-viewer: remote %s: %s; tool 0 moved %.4f m, sent (%.6f, %.6f, %.6f) m, the server's "
+                    "command (%.6f, %.6f, %.6f) m",
+                    link.url.c_str(), describe_link(link).c_str(), link.tool0_largest_move_m, link.tool0_sent_m[0],
+                    link.tool0_sent_m[1], link.tool0_sent_m[2], link.tool0_commanded_m[0], link.tool0_commanded_m[1],
+                    link.tool0_commanded_m[2]);
+    }
     std::printf("\nenteron-viewer: %llu failed calls\n", static_cast<unsigned long long>(frame.problem.count));
     std::fflush(stdout);
 }

@@ -143,6 +143,13 @@ int capture(Viewer& viewer, RunOptions& options) {
         }
         if (viewer.frame().problem.count > 0) status = kExitFailed;  // reported by Viewer::update
     }
+    const LinkStatus& link = viewer.frame().link;
+    if (link.remote && link.states == 0) {  // a capture of nothing: say why
+        std::fprintf(stderr, "enteron-viewer: no scene_state_t arrived from %s in %.1f s (is enteron-lcm-server running "
+                             "there, with the same --channel-suffix and a --state-hz above 0?)\n",
+                     link.url.c_str(), options.seconds);
+        status = kExitFailed;
+    }
     if (!outputs.finish(error)) {
         std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
         status = kExitFailed;

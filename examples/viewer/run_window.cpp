@@ -129,9 +129,13 @@ int run_frames(GLFWwindow* window, Viewer& viewer, RunOptions& options) {
         }
         viewer.set_window_size(window_width, window_height);
         viewer.update();
-        // The script's events up to this frame's time; its screenshots show this frame.
+        // The script's events up to this frame's time; its screenshots show this frame. The
+        // script and --seconds count simulated time; with no scene here (none loaded, or a
+        // remote one, whose clock is the server's), wall time.
+        const bool wall_clock = viewer.session() == nullptr || viewer.frame().link.remote;
         std::vector<std::string> screenshots;
-        options.script.play(viewer.frame().time_s, viewer, screenshots);
+        options.script.play(wall_clock ? std::chrono::duration<double>(Clock::now() - start).count() : viewer.frame().time_s,
+                            viewer, screenshots);
         if (!canvas.resize(width, height, samples, error)) {
             std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());
             status = kExitNoRenderer;
@@ -160,10 +164,9 @@ int run_frames(GLFWwindow* window, Viewer& viewer, RunOptions& options) {
         const auto next = last_frame + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / kMaxFramesPerSecond));
         std::this_thread::sleep_until(next);
         last_frame = Clock::now();
-        // --seconds counts simulated time; with no scene to run, wall time.
         const double wall_s = std::chrono::duration<double>(Clock::now() - start).count();
-        if (options.seconds > 0.0 && viewer.session() != nullptr && viewer.frame().time_s >= end_s - 1e-9) break;
-        if (options.seconds > 0.0 && viewer.session() == nullptr && wall_s >= options.seconds) break;
+        if (options.seconds > 0.0 && !wall_clock && viewer.frame().time_s >= end_s - 1e-9) break;
+        if (options.seconds > 0.0 && wall_clock && wall_s >= options.seconds) break;
     }
     if (status == kExitOk && !outputs.finish(error)) {
         std::fprintf(stderr, "enteron-viewer: %s\n", error.c_str());

@@ -1,13 +1,14 @@
 // Where the picture comes from and where the tool commands go. The viewer draws whatever a
 // Session gives it once a frame and sends it the tools' targets; it does not know whether
 // the scene runs here (LocalSession: a physics thread and a skin in this process) or
-// somewhere else (a remote session over the LCM bridge would publish the same state and
-// mesh, and take the same commands).
+// somewhere else (RemoteSession: enteron-lcm-server's state and mesh over LCM, the tools
+// sent back as tool_command_t).
 #pragma once
 
 #include <enteron/enteron.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -52,6 +53,47 @@ struct FrameRequest {
     bool spheres = false;
 };
 
+// A remote session's connection (remote/remote_session.h); remote false for a local one.
+struct LinkStatus {
+    enum class State { waiting, live, stale };  // no state yet; a fresh one; none for a while
+    bool remote = false;
+    State state = State::waiting;
+    std::string url;
+    double age_s = -1.0;                   // wall time since the newest state arrived
+    std::uint64_t sessions = 0, states = 0, meshes = 0;  // messages accepted
+    std::uint64_t rejected = 0;            // failed a check: counted, never shown
+    std::uint64_t late = 0;                // older than one already shown: dropped
+    std::uint64_t commands_sent = 0;       // tool_command_t
+    std::string last_rejection;            // "CHANNEL: why"
+    double tool0_largest_move_m = 0.0;     // the server's tool 0 from where it was first seen
+    double tool0_sent_m[3] = {};           // tool 0's target as sent (scene frame, before the mapping)
+    double tool0_commanded_m[3] = {};      // the server's newest accepted command for it, mapped back
+};
+
+inline const char* link_state_name(LinkStatus::State state) {
+    switch (state) {
+        case LinkStatus::State::waiting: return "no messages yet";
+        case LinkStatus::State::live: return "live";
+        default: return "stale";
+    }
+}
+
+// "live (12 ms), 340 states, 0 meshes, 2 rejected, 0 late, 1200 commands sent": for the
+// status line and the summary a run ends with.
+inline std::string describe_link(const LinkStatus& link) {
+    char text[256];
+    if (link.state == LinkStatus::State::waiting)
+        std::snprintf(text, sizeof text, "no messages yet");
+    else
+        std::snprintf(text, sizeof text, "%s (last state %.0f ms ago)", link_state_name(link.state), 1e3 * link.age_s);
+    char counts[256];
+    std::snprintf(counts, sizeof counts, ", %llu states, %llu meshes, %llu sessions, %llu rejected, %llu late, %llu commands sent",
+                  static_cast<unsigned long long>(link.states), static_cast<unsigned long long>(link.meshes),
+                  static_cast<unsigned long long>(link.sessions), static_cast<unsigned long long>(link.rejected),
+                  static_cast<unsigned long long>(link.late), static_cast<unsigned long long>(link.commands_sent));
+    return std::string(text) + counts;
+}
+
 // One frame's view of the scene, filled by Session::read on the render thread.
 struct FrameState {
     double time_s = 0.0;                       // simulated time of the physics report
@@ -69,6 +111,7 @@ struct FrameState {
     std::vector<StepSample> new_steps;         // every step since the last read, oldest first
     std::uint64_t dropped_steps = 0;           // steps the plots missed (the reader stalled)
     Problem problem;                           // the newest failure, if any
+    LinkStatus link;                           // where the state comes from, if not from here
 };
 
 class Session {
@@ -77,6 +120,8 @@ public:
 
     virtual std::string name() const = 0;            // for the title bar and the status line
     virtual const SceneLayout& layout() const = 0;
+    // Changes when layout() does (a remote scene arrives after the session opens).
+    virtual std::uint64_t layout_generation() const { return 0; }
 
     // Render thread, once a frame: the newest state and a fresh mesh.
     virtual void read(const FrameRequest& request, FrameState& frame) = 0;

@@ -9,6 +9,9 @@
 #include <limits>
 
 #include "demo_scene.h"
+#ifdef ENTERON_VIEWER_WITH_LCM
+#include "remote/remote_session.h"
+#endif
 
 namespace viewer {
 
@@ -29,6 +32,20 @@ Viewer::Viewer(const ViewerSettings& settings) : settings_(settings) {
 Viewer::~Viewer() = default;
 
 bool Viewer::open_initial(std::string& error) {
+    if (!settings_.lcm_url.empty()) {
+#ifdef ENTERON_VIEWER_WITH_LCM
+        std::unique_ptr<Session> session = RemoteSession::open(settings_.lcm_url, settings_.lcm_channel_suffix, error);
+#else
+        std::unique_ptr<Session> session;
+        error = "this enteron-viewer was built without LCM (liblcm-dev; ENTERON_WITH_LCM)";
+#endif
+        if (!session) {
+            load_error_ = error;
+            return false;
+        }
+        show(std::move(session), "", "");
+        return true;
+    }
     if (settings_.scene_path.empty())
         return open(demo_scene_json, "demo scene (built in)", "", error);
     std::string text;
@@ -48,16 +65,21 @@ bool Viewer::open(const std::string& json, const std::string& name, const std::s
         json_edit_ = json;  // to mend it in the Scene panel
         return false;
     }
+    show(std::move(session), json, path);
+    return true;
+}
+
+void Viewer::show(std::unique_ptr<Session> session, const std::string& json, const std::string& path) {
     frame_ = FrameState();  // its mesh view points into the old skin
     session_ = std::move(session);
     scene_path_ = path;
     load_error_.clear();
     json_edit_ = json;
     tools_.reset(session_->layout());
+    layout_generation_ = session_->layout_generation();
     histories_.clear();
     camera_framed_ = false;
     clock_started_ = false;
-    return true;
 }
 
 void Viewer::start_clock() {
@@ -126,6 +148,11 @@ void Viewer::update() {
     request.spheres = toggles_.spheres;
     const std::uint64_t failures_before = frame_.problem.count;
     session_->read(request, frame_);
+    if (session_->layout_generation() != layout_generation_) {  // a remote scene arrived: its tools, its view
+        layout_generation_ = session_->layout_generation();
+        tools_.reset(session_->layout());
+        camera_framed_ = false;
+    }
     if (frame_.problem.count != failures_before) {  // shown on the status line; the terminal gets it too
         const Problem& p = frame_.problem;
         std::fprintf(stderr, "enteron-viewer: %s from %s at t = %.3f s: %s\n", status_name(p.status), p.call.c_str(),

@@ -25,6 +25,8 @@ enum class UiMode {
 struct ViewerSettings {
     LocalSessionOptions session;   // how scenes are opened
     std::string scene_path;        // empty: the built-in demo scene
+    std::string lcm_url;           // not empty: show enteron-lcm-server's session there instead
+    std::string lcm_channel_suffix;
     UiMode ui = UiMode::full;
 };
 
@@ -71,6 +73,7 @@ public:
 
 private:
     bool open(const std::string& json, const std::string& name, const std::string& path, std::string& error);
+    void show(std::unique_ptr<Session> session, const std::string& json, const std::string& path);
     void reset();
     void set_skin(const ent_skin_desc& desc);
     void frame_camera();
@@ -86,6 +89,7 @@ private:
     std::string json_edit_;           // the scene panel's editor
     Camera camera_;
     bool camera_framed_ = false;
+    std::uint64_t layout_generation_ = 0;
     bool clock_started_ = false;
     ToolControl tools_;
     DrawToggles toggles_;

@@ -62,7 +62,16 @@ void Viewer::build_panels() {
         ImGui::TextWrapped("Drop a scene file (.json) on the window, or edit the text under Scene.");
     }
 
-    if (session_ && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (session_ && frame_.link.remote && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // The server owns the clock: what arrives, not controls.
+        ImGui::TextWrapped("%s", session_->name().c_str());
+        ImGui::Text("t = %.3f s   %s", frame_.time_s, link_state_name(frame_.link.state));
+        ImGui::TextWrapped("%s", describe_link(frame_.link).c_str());
+        if (!frame_.link.last_rejection.empty())
+            ImGui::TextWrapped("last rejected: %s", frame_.link.last_rejection.c_str());
+        ImGui::Text("step: median %.0f us, largest %.0f us (the server's)", histories_.step_median_us,
+                    histories_.step_max_us);
+    } else if (session_ && ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::TextWrapped("%s", session_->name().c_str());
         ImGui::Text("t = %.3f s   %s", frame_.time_s, frame_.paused ? "paused" : "running");
         if (ImGui::Button(frame_.paused ? "Run (Space)" : "Pause (Space)")) session_->set_paused(!session_->paused());
@@ -189,7 +198,9 @@ void Viewer::build_panels() {
         ImGui::Text("energy: kinetic %.4f J, potential %.4f J", s.kinetic_energy_J, s.potential_energy_J);
         if (frame_.dropped_steps > 0)
             ImGui::Text("plot samples dropped %llu", static_cast<unsigned long long>(frame_.dropped_steps));
-        if (ImGui::BeginTable("effects", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        if (frame_.link.remote) {
+            ImGui::TextDisabled("per-effect times: not in the server's stream");
+        } else if (ImGui::BeginTable("effects", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
             ImGui::TableSetupColumn("effect");
             ImGui::TableSetupColumn("us / step");
             ImGui::TableSetupColumn("evaluations");
@@ -211,7 +222,14 @@ void Viewer::build_panels() {
         }
     }
 
-    if (ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (frame_.link.remote && ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
+        // The server makes the mesh; the viewer only draws it.
+        if (frame_.link.meshes > 0)
+            ImGui::TextWrapped("the server's mesh_t (%s; --mesh-skin, --mesh-hz)", kSkinNames[session_->skin().method]);
+        else
+            ImGui::TextWrapped("a tube around the state's axis (the server sends no mesh: --mesh-hz 0)");
+        ImGui::Text("%u triangles, %u vertices", frame_.mesh.triangle_count, frame_.mesh.vertex_count);
+    } else if (ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
         ent_skin_desc desc = session_->skin();
         bool changed = false;
         for (int m = 0; m < 3; ++m) {
@@ -270,6 +288,7 @@ void Viewer::build_hud() {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                      ImGuiWindowFlags_NoSavedSettings);
     ImGui::Text("Enteron   t = %.2f s", frame_.time_s);
+    if (frame_.link.remote) ImGui::Text("%s: %s", frame_.link.url.c_str(), link_state_name(frame_.link.state));
     if (tools_.count() > 0) {
         const ent_tool_feedback& tool = frame_.tools[0].feedback;
         const double magnitude = std::sqrt(tool.force_N[0] * tool.force_N[0] + tool.force_N[1] * tool.force_N[1] +
@@ -284,7 +303,8 @@ void Viewer::build_hud() {
 }
 
 void Viewer::build_status_line(bool always) {
-    const bool failed = frame_.problem.count > 0 || !load_error_.empty();
+    const bool failed = frame_.problem.count > 0 || !load_error_.empty() ||
+                        (frame_.link.remote && frame_.link.state != LinkStatus::State::live);
     if (!always && !failed) return;
     const ImGuiIO& io = ImGui::GetIO();
     const float height = ImGui::GetFrameHeightWithSpacing() + 4.0f;
@@ -301,6 +321,13 @@ void Viewer::build_status_line(bool always) {
         ImGui::TextColored(kErrorColour, "%s from %s at t = %.3f s: %s%s", status_name(p.status), p.call.c_str(),
                            p.time_s, p.message.c_str(),
                            frame_.paused ? "  (paused: Backspace resets, Right steps again)" : "");
+    } else if (session_ && frame_.link.remote) {
+        const bool live = frame_.link.state == LinkStatus::State::live;
+        const std::string line = frame_.link.url + ": " + describe_link(frame_.link);
+        if (live)
+            ImGui::Text("%s   t = %.3f s", line.c_str(), frame_.time_s);
+        else
+            ImGui::TextColored(kErrorColour, "%s", line.c_str());
     } else if (session_) {
         ImGui::Text("t = %.3f s   %s x%.3g (real-time factor %.2f)   %.0f frames/s   step %.0f us (largest %.0f)   "
                     "%u contacts",

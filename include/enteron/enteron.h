@@ -218,8 +218,9 @@ ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_
 #define ENT_INTEGRATOR_RK4 0              /**< classic 4th-order Runge-Kutta, explicit */
 #define ENT_INTEGRATOR_SYMPLECTIC_EULER 1 /**< semi-implicit Euler, explicit, 1st order */
 #define ENT_INTEGRATOR_IMPLICIT_EULER 2   /**< linearised backward Euler, banded solve */
+#define ENT_INTEGRATOR_BDF2 3             /**< linearised BDF2, banded solve, 2nd order (docs/accuracy.md) */
 
-/** Which ends are held fixed (ent_scene_desc.pinned_ends). */
+/** Which ends are held fixed (ent_scene_desc.pinned_ends) or clamped (ent_scene_desc.clamped_ends). */
 #define ENT_PIN_NONE 0
 #define ENT_PIN_FIRST 1
 #define ENT_PIN_LAST 2
@@ -293,6 +294,14 @@ typedef struct ent_scene_desc {
     double contact_damping_N_s_per_m;   /**< normal damping, only while approaching, fading in over the first R/10 of penetration (default 0.5). */
     double contact_friction;            /**< Coulomb friction coefficient (default 0.3). */
     double contact_slip_speed_m_per_s;  /**< friction is viscous below about this sliding speed (default 0.01). */
+
+    /** ENT_EFFECT_PINNED: ENT_PIN_* ends clamped: held at their initial position AND their
+     *  tangent held in its initial direction, as where the bowel joins fixed anatomy (default
+     *  ENT_PIN_NONE). A boundary condition of the axis (docs/architecture.md), not a second
+     *  pinned point; ENT_PIN_BOTH needs >= 6 control points; control points 1, 2 (n-2, n-3)
+     *  of a clamped end may not be in pinned_points. Added in 0.1 after the first scenes: a
+     *  caller built against the older, smaller ent_scene_desc gets ENT_PIN_NONE. */
+    int32_t clamped_ends;
 } ent_scene_desc;
 
 /**

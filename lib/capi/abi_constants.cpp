@@ -60,6 +60,7 @@ static_assert(ENT_SHAPE_POINTS == value(ShapeKind::points));
 static_assert(ENT_INTEGRATOR_RK4 == value(IntegratorKind::rk4));
 static_assert(ENT_INTEGRATOR_SYMPLECTIC_EULER == value(IntegratorKind::symplectic_euler));
 static_assert(ENT_INTEGRATOR_IMPLICIT_EULER == value(IntegratorKind::implicit_euler));
+static_assert(ENT_INTEGRATOR_BDF2 == value(IntegratorKind::bdf2));
 
 static_assert(ENT_PIN_NONE == enteron::scene::pin_none);
 static_assert(ENT_PIN_FIRST == enteron::scene::pin_first);

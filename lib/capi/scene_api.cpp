@@ -39,7 +39,7 @@ ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::Sce
     if (memory == nullptr) throw std::bad_alloc();
     SceneHandle* handle = nullptr;
     try {
-        handle = new (memory) SceneHandle(callbacks, config.intestine.control_points);
+        handle = new (memory) SceneHandle(callbacks, config.intestine.control_points, enteron::scene::spline_ends(config));
     } catch (...) {
         if (custom)
             callbacks->release(callbacks->user_data, memory, sizeof(SceneHandle), alignof(SceneHandle));
@@ -121,7 +121,7 @@ ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double
         if (count < 2) throw Error(ErrorCode::invalid_argument, "count must be >= 2, got " + std::to_string(count));
         const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
         enteron::spline::sample_evenly(snapshot->control_points.data(), handle.published->control_points(), count,
-                                       points_xyz_m);
+                                       points_xyz_m, handle.published->ends());
     });
 }
 

@@ -60,6 +60,7 @@ ent_scene_desc default_desc() {
     desc.mesentery_stiffness_N_per_m = mesentery.stiffness;
     desc.mesentery_rest_length_m = mesentery.rest_length;
     desc.pinned_ends = scene::PinnedConfig{}.ends;
+    desc.clamped_ends = scene::PinnedConfig{}.clamped;
     desc.collision_sphere_spacing_m = defaults.collision.sphere_spacing;
     desc.contact_stiffness_N_per_m = defaults.collision.contact.stiffness;
     desc.contact_damping_N_s_per_m = defaults.collision.contact.damping;
@@ -75,9 +76,11 @@ ent_scene_desc default_desc() {
 //   0.0 preview  without `callbacks`. A simulated release: no 0.0 was published, but
 //                tests/abi/enteron_v0_0.h keeps its header so that a test proves older
 //                callers are served (tests/abi/old_caller.c).
+//   0.1 first    without `clamped_ends`.
 //   0.1          the current header.
 void check_scene_desc_size(uint32_t struct_size) {
-    check_struct_size(struct_size, {offsetof(ent_scene_desc, callbacks), sizeof(ent_scene_desc)},
+    check_struct_size(struct_size,
+                      {offsetof(ent_scene_desc, callbacks), offsetof(ent_scene_desc, clamped_ends), sizeof(ent_scene_desc)},
                       "ent_scene_desc");
 }
 
@@ -154,6 +157,7 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     if (has(ENT_EFFECT_PINNED)) {
         scene::PinnedConfig pinned;
         pinned.ends = desc.pinned_ends;
+        pinned.clamped = desc.clamped_ends;
         if (desc.pinned_point_count > 0) {
             if (desc.pinned_point_count > desc.control_points || desc.pinned_point_count > kMaxControlPoints)
                 throw Error(ErrorCode::invalid_argument, "pinned_point_count must be <= control_points, got " +

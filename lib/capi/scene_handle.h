@@ -23,14 +23,14 @@ namespace enteron::capi {
 // published snapshots (each holds a reference), so a skin that outlives its scene keeps
 // working on the last published state; the handle goes with its last reference.
 struct SceneHandle {
-    SceneHandle(const ent_callbacks* callbacks, std::size_t control_points) {
+    SceneHandle(const ent_callbacks* callbacks, std::size_t control_points, spline::Ends ends) {
         if (callbacks != nullptr && callbacks->allocate != nullptr) {
             callback_memory.emplace(callbacks->allocate, callbacks->release, callbacks->user_data);
             memory = &*callback_memory;
         }
         if (callbacks != nullptr) logger = Logger(callbacks->log, callbacks->user_data);
         if (callbacks != nullptr) this->callbacks = *callbacks;
-        published.emplace(3 * control_points, memory);
+        published.emplace(3 * control_points, memory, ends);
     }
 
     std::optional<CallbackMemoryResource> callback_memory;

@@ -9,7 +9,7 @@
 namespace enteron::collision {
 
 CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_length, double spacing,
-                                   double radius, std::pmr::memory_resource* memory)
+                                   double radius, std::pmr::memory_resource* memory, spline::Ends ends)
     : control_points_(control_points),
       radius_(radius),
       rest_spacing_(0.0),
@@ -26,7 +26,7 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
     for (std::size_t segment = 0; segment < segments; ++segment)
         for (std::size_t k = 0; k <= kSamplesPerSegment; ++k)
             sample_weights_.push_back(spline::segment_weights(
-                control_points, segment, double(k) / kSamplesPerSegment, spline::Derivative::value));
+                control_points, segment, double(k) / kSamplesPerSegment, spline::Derivative::value, ends));
     sample_points_.assign(3 * sample_weights_.size(), 0.0);
     sample_arc_.assign(sample_weights_.size(), 0.0);
     const std::size_t count = static_cast<std::size_t>(std::llround(rest_length / spacing)) + 1;

@@ -27,9 +27,10 @@ struct Sphere {
 
 class CollisionSpheres {
 public:
-    // `spacing` (m) at rest; the count is round(rest_length / spacing) + 1.
+    // `spacing` (m) at rest; the count is round(rest_length / spacing) + 1. `ends`: the
+    // spline's end treatment (the mechanics' own, AxisModel::ends).
     CollisionSpheres(std::size_t control_points, double rest_length, double spacing, double radius,
-                     std::pmr::memory_resource* memory);
+                     std::pmr::memory_resource* memory, spline::Ends ends = {});
 
     // Places the spheres on the axis given by the control points (x y z each). The effects
     // that make contacts share one set of spheres and each calls this for the state it

@@ -159,7 +159,8 @@ void ToolsForce::apply(const Contact& contact, const Vec3& normal, double axial,
 }
 
 const ToolsForce::Contact& ToolsForce::apply_sphere(const spline::SegmentWeights& weights, const ContactForce& cf,
-                                                     const Vec3& normal, double scale, const Vec3& velocity,
+                                                     const Vec3& normal, double scale, const Vec3& position,
+                                                     const Vec3& velocity,
                                                      const Vec3& arm, double* force,
                                                      const mechanics::Linearization* lin) {
     const Mat3 nn = outer(normal);
@@ -168,6 +169,7 @@ const ToolsForce::Contact& ToolsForce::apply_sphere(const spline::SegmentWeights
     contact.force = scale * cf.force;
     contact.stiffness = (scale * cf.stiffness) * nn;
     contact.damping = scale * (cf.damping * nn + cf.friction_damping * (Mat3::Identity() - nn));
+    contact.position = position;
     contact.velocity = velocity;
     contact.arm = arm;
     // The implicit system's block, scaled with the force.
@@ -274,7 +276,8 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     tool.stiffness = bounded ? Mat3(-scale * (total_rate - total * magnitude_rate / total_magnitude)) : Mat3(-total_rate);
 
     for (const Hit& hit : hits_)
-        apply_sphere(spheres_[hit.sphere].weights, hit.force, hit.normal, scale, hit.velocity, hit.arm, force, lin);
+        apply_sphere(spheres_[hit.sphere].weights, hit.force, hit.normal, scale, spheres_[hit.sphere].center,
+                     hit.velocity, hit.arm, force, lin);
     // A slack grasp spring pulls nothing.
     if (holding && !tool.slipped && spring.taut) {
         Contact contact;
@@ -283,6 +286,7 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
         contact.stiffness =
             scale * (spring.axial_stiffness * outer(spring.direction) + spring.isotropic_stiffness * Mat3::Identity());
         contact.damping = (scale * tool.settings.grasp_damping) * Mat3::Identity();
+        contact.position = spline::evaluate(state.q.data(), tool.grasp_point);
         contact.velocity = grasp_v;
         contact.arm = Vec3::Zero();
         const double h = lin != nullptr ? lin->h : 0.0;
@@ -353,7 +357,7 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
     for (const ProxyContact& c : proxy_.contacts()) {
         const ProxyCandidate& candidate = candidates_[c.candidate];
         const Sphere& sphere = spheres_[candidate.sphere];
-        const Contact& contact = apply_sphere(sphere.weights, c.force, c.normal, scale, candidate.velocity,
+        const Contact& contact = apply_sphere(sphere.weights, c.force, c.normal, scale, candidate.center, candidate.velocity,
                                               c.s * problem.shaft + tool.settings.radius * c.normal, force, lin);
         const ContactLinearization l = contact_linearization(c.force, h);
         block += l.axial * outer(c.normal) + l.transverse * Mat3::Identity();
@@ -372,6 +376,7 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
         contact.force = scale * result.grasp_force;
         contact.stiffness = scale * (a * outer(n) + b * Mat3::Identity());
         contact.damping = (scale * tool.settings.grasp_damping) * Mat3::Identity();
+        contact.position = problem.grasp.point;
         contact.velocity = problem.grasp.velocity;
         contact.arm = Vec3::Zero();
         const double axial = h * h * a, transverse = h * tool.settings.grasp_damping + h * h * b;
@@ -412,7 +417,7 @@ void ToolsForce::evaluation_used(double duration, const mechanics::State* after)
             if (after != nullptr) {
                 // The linearised force at the end of the substep: F - H (dq - dp) - C (dv - dp / h).
                 const Vec3 v = spline::evaluate(after->v.data(), contact.weights);
-                const Vec3 moved = duration * v - proxy_move;
+                const Vec3 moved = spline::evaluate(after->q.data(), contact.weights) - contact.position - proxy_move;
                 const Vec3 sped = v - contact.velocity - proxy_move / duration;
                 force -= contact.stiffness * moved + contact.damping * sped;
             }

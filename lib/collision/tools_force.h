@@ -97,6 +97,7 @@ private:
         Vec3 force;      // on the bowel, N
         Mat3 stiffness;  // H of the implicit system, N/m
         Mat3 damping;    // C of the implicit system, N s/m
+        Vec3 position;   // of the bowel's point at the evaluation, m
         Vec3 velocity;   // of the bowel's point at the evaluation, m/s
         Vec3 arm;        // from the tool's tip to where the force acts on the tool, m
     };
@@ -165,7 +166,7 @@ private:
     // A collision sphere's contact (the law's force cf along `normal`, scaled by `scale`;
     // the sphere's velocity; the arm from the tip) made and applied; returns it.
     const Contact& apply_sphere(const spline::SegmentWeights& weights, const ContactForce& cf, const Vec3& normal,
-                                double scale, const Vec3& velocity, const Vec3& arm, double* force,
+                                double scale, const Vec3& position, const Vec3& velocity, const Vec3& arm, double* force,
                                 const mechanics::Linearization* lin);
 
     CollisionSpheres& spheres_;  // shared with the other contact effects

@@ -2,8 +2,9 @@
 
 namespace enteron::mechanics {
 
-AxialBlocks::AxialBlocks(std::size_t control_points, std::pmr::memory_resource* memory)
-    : nodes_(spline::segment_quadrature(control_points, spline::Derivative::first, kNodesPerSegment, memory)),
+AxialBlocks::AxialBlocks(const AxisModel& model, std::pmr::memory_resource* memory)
+    : nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first, kNodesPerSegment, memory,
+                                        model.ends)),
       blocks_(nodes_.size(), Block{}, memory) {}
 
 void AxialBlocks::add_to(SystemMatrix& system) const {

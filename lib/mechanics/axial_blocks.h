@@ -11,6 +11,7 @@
 #include <memory_resource>
 #include <vector>
 
+#include "mechanics/axis_model.h"
 #include "mechanics/system_matrix.h"
 #include "spline/segment_quadrature.h"
 
@@ -22,7 +23,7 @@ public:
 
     // The nodes of a 2-point Gauss rule on the first derivative of each segment, in
     // segment order (the laws' own nodes: node k lies on segment k / 2).
-    AxialBlocks(std::size_t control_points, std::pmr::memory_resource* memory);
+    AxialBlocks(const AxisModel& model, std::pmr::memory_resource* memory);
 
     // Forgets every coefficient and tangent (in O(1): the blocks of older rounds no longer count).
     void clear() { round_ += 1; }

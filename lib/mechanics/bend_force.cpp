@@ -9,7 +9,7 @@ BendForce::BendForce(const AxisModel& model, double bend_stiffness, std::pmr::me
     stiffness_.resize(model.control_points);
     const double l0 = model.rest_segment_length;
     spline::add_gram_matrix(model.control_points, spline::Derivative::second,
-                            bend_stiffness / (l0 * l0 * l0), stiffness_);
+                            bend_stiffness / (l0 * l0 * l0), stiffness_, model.ends);
     stiffness_products_.assign(stiffness_);
 }
 

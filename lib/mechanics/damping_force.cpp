@@ -18,12 +18,13 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
       constant_(memory),
       constant_products_(memory),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory)) {
+                                        kNodesPerSegment, memory, model.ends)) {
     const std::size_t n = model.control_points;
     const double l0 = model.rest_segment_length;
     constant_.resize(n);
-    spline::add_gram_matrix(n, spline::Derivative::value, coefficients.drag * l0, constant_);
-    spline::add_gram_matrix(n, spline::Derivative::second, coefficients.bend / (l0 * l0 * l0), constant_);
+    spline::add_gram_matrix(n, spline::Derivative::value, coefficients.drag * l0, constant_, model.ends);
+    spline::add_gram_matrix(n, spline::Derivative::second, coefficients.bend / (l0 * l0 * l0), constant_,
+                            model.ends);
     constant_products_.assign(constant_);
 }
 
@@ -80,7 +81,7 @@ void DampingForce::add_constant_linearization(double h, SystemMatrix& system) co
 void DampingForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     bound.add_scaled(constant_, 1.0);
     spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
-                            coefficients_.stretch / model_.rest_segment_length, bound);
+                            coefficients_.stretch / model_.rest_segment_length, bound, model_.ends);
 }
 
 }  // namespace enteron::mechanics

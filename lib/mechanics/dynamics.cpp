@@ -29,6 +29,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       mass_(memory),
       mass_products_(memory),
       mass_factor_(memory),
+      clamped_mass_factor_(memory),
       constant_system_(memory),
       border_(memory),
       scratch_(memory),
@@ -36,7 +37,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
     const std::size_t n = model.control_points;
     mass_.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value,
-                            model.linear_density * model.rest_segment_length, mass_);
+                            model.linear_density * model.rest_segment_length, mass_, model.ends);
     mass_products_.assign(mass_);
     mass_factor_.resize(n);
     constant_system_.resize(3 * n);
@@ -54,12 +55,23 @@ void Dynamics::add_pins(Owned<PinnedPoints> pins) {
     pinned_ = std::move(pins);
 }
 
+void Dynamics::add_clamps(Owned<ClampedEnds> clamps) { clamped_ = std::move(clamps); }
+
 void Dynamics::add_shared_loads(SharedLoads* loads, EffectId owner) { shared_loads_.emplace_back(loads, owner); }
 
 void Dynamics::finalize() {
     mass_factor_.assign(mass_);
     if (pinned_) pinned_->constrain(mass_factor_);
     if (!mass_factor_.factor()) throw Error(ErrorCode::internal, "the mass matrix is not positive definite");
+    if (clamped_) {
+        // The clamps mix x, y and z: M over the 3n coordinates, with the same constraints.
+        clamped_mass_factor_.resize(coordinates());
+        add_per_coordinate(mass_, 1.0, clamped_mass_factor_);
+        if (pinned_) pinned_->constrain(clamped_mass_factor_);
+        clamped_->reduce(clamped_mass_factor_);
+        if (!clamped_mass_factor_.factor())
+            throw Error(ErrorCode::internal, "the clamped mass matrix is not positive definite");
+    }
 
     const std::size_t n = model_.control_points;
     numerics::ScalarBandMatrix stiffness(memory_), damping(memory_);
@@ -152,7 +164,26 @@ void Dynamics::acceleration(const State& state, double* acceleration) {
     solve_mass(acceleration);
 }
 
-void Dynamics::solve_mass(double* x) const { mass_factor_.solve(x, 3, 3); }
+void Dynamics::solve_mass(double* x) const {
+    if (!clamped_) return mass_factor_.solve(x, 3, 3);
+    clamped_->reduce_rhs(x, nullptr);
+    clamped_mass_factor_.solve(x);
+    clamped_->expand(x);
+}
+
+bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const State& state,
+                                     BorderedSystem* border) const {
+    if (pinned_) pinned_->zero_rows(rhs);
+    if (clamped_) {
+        clamped_->reduce(system);
+        clamped_->reduce_rhs(rhs, state.v.data());
+    }
+    if (!system.factor()) return false;
+    system.solve(rhs);
+    if (border != nullptr) border->solve(system, rhs);  // the bodies of effects that have them (tools' proxies)
+    if (clamped_) clamped_->expand(rhs);
+    return true;
+}
 
 const SystemMatrix& Dynamics::constant_system(double h) {
     if (h == constant_system_h_) return constant_system_;

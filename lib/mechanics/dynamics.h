@@ -12,6 +12,7 @@
 #include "base/memory.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/bordered_system.h"
+#include "mechanics/clamped_ends.h"
 #include "mechanics/effect.h"
 #include "mechanics/per_coordinate_matrix.h"
 #include "mechanics/pinned_points.h"
@@ -32,6 +33,9 @@ public:
     // and again after adding an effect later.
     void add_effect(Owned<Effect> effect);
     void add_pins(Owned<PinnedPoints> pins);
+    // Clamps ends (clamped_ends.h): every linear solve below then keeps their tangents. The
+    // end points themselves must be among the pins.
+    void add_clamps(Owned<ClampedEnds> clamps);
     // Loads that effects share (effect.h): forces() clears them before the effects and
     // applies them after, their time counted as `owner`'s. Not owned: they must outlive
     // every call to forces().
@@ -49,18 +53,28 @@ public:
     // force = F(state); with lin, also the linearisation (see effect.h), the shared axial
     // blocks (lin->axial) cleared first and added to the system before the pins. Times each effect.
     void forces(const State& state, double* force, const Linearization* lin);
-    // acceleration = M^-1 F(state).
+    // acceleration = M^-1 F(state) (with the clamps' constraints).
     void acceleration(const State& state, double* acceleration);
-    // x = M^-1 x for a 3n vector.
+    // out = M x for a 3n vector (the unconstrained mass matrix).
+    void multiply_mass(const double* x, double* out) const { mass_products_.multiply(x, out); }
+    // x = M^-1 x for a 3n vector (with the clamps' constraints).
     void solve_mass(double* x) const;
+    // Solves system dv = rhs in place for the velocity change dv of the state `state`: the
+    // implicit integrators' system, assembled by forces() with a linearisation. The pinned
+    // rows of rhs are zeroed (dv = 0 there), the clamps' constraints hold for v + dv. Factors
+    // (and, with clamps, changes) `system`. False if it is not positive definite.
+    // With `border` (border()), its bodies are solved with the bowel (bordered_system.h).
+    bool solve_velocity_change(SystemMatrix& system, double* rhs, const State& state,
+                               BorderedSystem* border = nullptr) const;
 
     // Builds M + sum of the constant parts of h C + h^2 H, pins applied: the start of the
     // implicit system for substep h. Cached: rebuilt only when h changes.
     const SystemMatrix& constant_system(double h);
 
     // The border of the implicit system (bordered_system.h), sized by finalize() for the
-    // bodies the effects may add.
-    BorderedSystem& border() { return border_; }
+    // bodies the effects may add; null with clamped ends, whose reduced system the border
+    // does not know (the tools' proxies then stay put through each substep).
+    BorderedSystem* border() { return clamped_ ? nullptr : &border_; }
     // Tells every effect how the integrator used its last evaluation (Effect::evaluation_used).
     void evaluation_used(double duration, const State* after);
 
@@ -109,12 +123,14 @@ private:
     std::pmr::memory_resource* memory_;
     std::pmr::vector<Owned<Effect>> effects_;
     Owned<PinnedPoints> pinned_;
+    Owned<ClampedEnds> clamped_;
     std::pmr::vector<std::pair<SharedLoads*, EffectId>> shared_loads_;
     std::array<bool, kEffectCount> enabled_{};
     std::array<EffectCounters, kEffectCount> counters_{};
     numerics::ScalarBandMatrix mass_;          // M per coordinate, unfactored
     PerCoordinateMatrix mass_products_;      // M again, for M v
     numerics::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
+    SystemMatrix clamped_mass_factor_;         // with clamps: M over the 3n coordinates, pinned, clamped, factored
     SystemMatrix constant_system_;
     BorderedSystem border_;
     double constant_system_h_ = -1.0;

@@ -9,7 +9,7 @@ GravityForce::GravityForce(const AxisModel& model, const Vec3& gravity,
     numerics::ScalarBandMatrix mass(memory);
     mass.resize(n);
     spline::add_gram_matrix(n, spline::Derivative::value,
-                            model.linear_density * model.rest_segment_length, mass);
+                            model.linear_density * model.rest_segment_length, mass, model.ends);
     std::pmr::vector<double> ones(n, 1.0, memory);
     lumped_mass_.assign(n, 0.0);
     mass.multiply(ones.data(), lumped_mass_.data());

@@ -13,7 +13,7 @@ namespace enteron::mechanics {
 
 class ImplicitEuler final : public Integrator {
 public:
-    ImplicitEuler(std::size_t coordinates, std::pmr::memory_resource* memory);
+    ImplicitEuler(const AxisModel& model, std::pmr::memory_resource* memory);
     bool step(Dynamics& dynamics, State& state, double h) override;
     double stability_interval() const override { return std::numeric_limits<double>::infinity(); }
 

@@ -23,9 +23,16 @@ public:
     // Stability interval beta of the method on the imaginary axis: an explicit method is
     // stable for h (omega + gamma) <= beta. Infinite for an implicit method.
     virtual double stability_interval() const = 0;
+
+    // A multistep method's history of earlier substeps (bdf2.h) is state: save_history keeps
+    // a copy when the scene backs up its state before a step, restore_history brings it back
+    // with a rolled-back state, and restart forgets it (the next substep starts the method
+    // again, as after the state was set from outside). One-step methods have none.
+    virtual void save_history() {}
+    virtual void restore_history() {}
+    virtual void restart() {}
 };
 
-Owned<Integrator> make_integrator(IntegratorKind kind, std::size_t coordinates,
-                                  std::pmr::memory_resource* memory);
+Owned<Integrator> make_integrator(IntegratorKind kind, const AxisModel& model, std::pmr::memory_resource* memory);
 
 }  // namespace enteron::mechanics

@@ -6,6 +6,6 @@
 
 namespace enteron::mechanics {
 
-enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2 };
+enum class IntegratorKind : int32_t { rk4 = 0, symplectic_euler = 1, implicit_euler = 2, bdf2 = 3 };
 
 }  // namespace enteron::mechanics

@@ -14,7 +14,7 @@ MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters
         const double fraction = (static_cast<double>(k) + 0.5) / static_cast<double>(count);
         Spring spring;
         spring.weights = spline::weights_at(n, fraction * static_cast<double>(n - 1),
-                                            spline::Derivative::value);
+                                            spline::Derivative::value, model.ends);
         spring.root = parameters.root_start + fraction * (parameters.root_end - parameters.root_start);
         spring.rest_length =
             parameters.rest_length > 0.0 ? parameters.rest_length : stretch_vector(initial, spring).norm();

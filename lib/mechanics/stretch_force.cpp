@@ -16,7 +16,7 @@ StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
     : model_(model),
       stiffness_(stretch_stiffness),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory)) {}
+                                        kNodesPerSegment, memory, model.ends)) {}
 
 void StretchForce::evaluate(const State& state, double* force, const Linearization* lin) {
     const double* q = state.q.data();
@@ -84,7 +84,7 @@ void StretchForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const 
     // At a node H <= EA/l0 I: the transverse factor eps/|P'| = eps / (l0 (1 + eps)) stays
     // below 1/l0. Per coordinate that is EA/l0 times the first-derivative Gram matrix.
     spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
-                            stiffness_ / model_.rest_segment_length, bound);
+                            stiffness_ / model_.rest_segment_length, bound, model_.ends);
 }
 
 }  // namespace enteron::mechanics

@@ -125,7 +125,8 @@ const Choice<ShapeKind> kShapeKinds[] = {{"line", ShapeKind::line},
                                          {"points", ShapeKind::points}};
 const Choice<IntegratorKind> kIntegrators[] = {{"rk4", IntegratorKind::rk4},
                                                {"symplectic_euler", IntegratorKind::symplectic_euler},
-                                               {"implicit_euler", IntegratorKind::implicit_euler}};
+                                               {"implicit_euler", IntegratorKind::implicit_euler},
+                                               {"bdf2", IntegratorKind::bdf2}};
 const Choice<collision::ToolMode> kToolModes[] = {{"proxy", collision::ToolMode::proxy},
                                                   {"direct", collision::ToolMode::direct}};
 const Choice<int32_t> kPinnedEnds[] = {
@@ -268,6 +269,7 @@ void read_pinned_points(const json& value, const std::string& path, PinnedConfig
 const Key<PinnedConfig> kPinnedKeys[] = {
     {"ends", [](auto& v, auto& p, auto& c) { c.ends = read_choice(v, p, kPinnedEnds); }},
     {"control_points", read_pinned_points},
+    {"clamped", [](auto& v, auto& p, auto& c) { c.clamped = read_choice(v, p, kPinnedEnds); }},
 };
 
 const Key<CollisionConfig> kCollisionKeys[] = {

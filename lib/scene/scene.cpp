@@ -23,18 +23,24 @@ namespace {
 
 using namespace enteron::mechanics;
 
-AxisModel make_model(const IntestineConfig& intestine) {
+int32_t clamped_ends(const SceneConfig& config) { return config.pinned ? config.pinned->clamped : pin_none; }
+
+AxisModel make_model(const SceneConfig& config) {
+    const IntestineConfig& intestine = config.intestine;
     AxisModel model;
     model.control_points = intestine.control_points;
     model.rest_segment_length = intestine.length / static_cast<double>(intestine.control_points - 1);
     model.linear_density = intestine.linear_density;
+    model.ends = spline_ends(config);
     return model;
 }
 
+// The point pins, a clamped end's end point among them.
 std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t count) {
     std::vector<uint32_t> points = pinned.points;
-    if (pinned.ends & pin_first) points.push_back(0);
-    if (pinned.ends & pin_last) points.push_back(static_cast<uint32_t>(count - 1));
+    const int32_t ends = pinned.ends | pinned.clamped;
+    if (ends & pin_first) points.push_back(0);
+    if (ends & pin_last) points.push_back(static_cast<uint32_t>(count - 1));
     std::sort(points.begin(), points.end());
     points.erase(std::unique(points.begin(), points.end()), points.end());
     return points;
@@ -56,7 +62,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     : memory_(memory),
       logger_(logger),
       solver_(config.solver),
-      model_(make_model(config.intestine)),
+      model_(make_model(config)),
       tool_channels_(memory),
       dynamics_(model_, memory),
       state_(memory),
@@ -96,6 +102,9 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     }
     if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), memory));
+    if (const int32_t clamped = clamped_ends(config))
+        dynamics_.add_clamps(make_owned<ClampedEnds>(memory, (clamped & pin_first) != 0, (clamped & pin_last) != 0,
+                                                     state_.q.data(), n));
     // The self-contact's time takes the shared contact loads', even though the environment
     // is made first.
     if (config.self_collision) contact_loads(EffectId::self_collision);
@@ -106,7 +115,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
                                                                      state_, memory,
                                                                      contact_loads(EffectId::self_collision)));
 
-    integrator_ = make_integrator(solver_.integrator, 3 * n, memory);
+    integrator_ = make_integrator(solver_.integrator, model_, memory);
     published_.reserve_tools(tool_channels_.size());
     refinalize();
     publish();
@@ -162,7 +171,7 @@ void Scene::remove_tool(std::size_t index) {
 collision::CollisionSpheres& Scene::collision_spheres() {
     if (!spheres_)
         spheres_ = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,
-                                                           sphere_spacing(), radius_, memory_);
+                                                           sphere_spacing(), radius_, memory_, model_.ends);
     return *spheres_;
 }
 
@@ -204,6 +213,7 @@ void Scene::step(double dt) {
     const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
 
     backup_.assign(state_);
+    integrator_->save_history();
     // A grasp taken or let go changes the stored energy: the guard measures it again.
     if (dynamics_.begin_step(state_, dt)) guard_.set_reference(dynamics_.energies(state_));
     for (std::size_t attempt = 0;; ++attempt) {
@@ -217,12 +227,14 @@ void Scene::step(double dt) {
         }
         if (attempt == solver_.max_subdivisions) break;
         state_.assign(backup_);
+        integrator_->restore_history();
         if (logger_.enabled())
             logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard (%s); retrying with %zu substeps",
                         state_.time, guard_check_name(guard_.last_finding().check), substeps << (attempt + 1));
     }
     const std::string message = unstable_message(dt, substeps);
     state_.assign(backup_);
+    integrator_->restore_history();
     dynamics_.end_step(false);
     stats_.last_step_ns = elapsed_ns(start);
     publish();  // the same state, with the counters of the failed attempts

@@ -15,6 +15,7 @@
 #include "collision/obstacle.h"
 #include "collision/tool.h"
 #include "mechanics/integrator_kind.h"
+#include "spline/catmull_rom.h"
 
 namespace enteron::scene {
 
@@ -70,6 +71,7 @@ enum PinnedEnds : int32_t { pin_none = 0, pin_first = 1, pin_last = 2, pin_both 
 struct PinnedConfig {
     int32_t ends = pin_none;
     std::vector<uint32_t> points;  // further control point indices
+    int32_t clamped = pin_none;    // ends held in place and in direction (mechanics/clamped_ends.h)
 };
 
 // Settings shared by every contact of the bowel: the environment, the self-contact and
@@ -114,5 +116,16 @@ struct SceneConfig {
     // Set by validate(): the initial control points of the shape (control_points x 3, m).
     std::vector<double> start_points;
 };
+
+// How the axis' spline continues past its ends: quadratic at a clamped end
+// (mechanics/clamped_ends.h), linear otherwise. The mechanics and every reader of the axis
+// use the same.
+inline spline::Ends spline_ends(const SceneConfig& config) {
+    const int32_t clamped = config.pinned ? config.pinned->clamped : pin_none;
+    spline::Ends ends;
+    if (clamped & pin_first) ends.first = spline::EndTreatment::quadratic;
+    if (clamped & pin_last) ends.last = spline::EndTreatment::quadratic;
+    return ends;
+}
 
 }  // namespace enteron::scene

@@ -5,8 +5,8 @@
 
 namespace enteron::scene {
 
-SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory)
-    : slots_(memory) {
+SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory, spline::Ends ends)
+    : slots_(memory), ends_(ends) {
     slots_.reserve(kSlots);
     for (std::size_t i = 0; i < kSlots; ++i) {
         slots_.emplace_back(memory);

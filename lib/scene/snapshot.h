@@ -22,6 +22,7 @@
 
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
+#include "spline/catmull_rom.h"
 
 namespace enteron::scene {
 
@@ -55,7 +56,9 @@ class SnapshotPublisher {
 public:
     static constexpr std::size_t kSlots = 8;
 
-    SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory);
+    // `ends`: how the axis' spline continues past its ends (scene_config.h spline_ends), for
+    // the readers that evaluate the axis from the control points.
+    SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory, spline::Ends ends = {});
 
     // A slot the stepping thread may fill, or nullptr if every slot is busy (then this
     // publication is skipped; the next one will go through).
@@ -68,6 +71,8 @@ public:
     void reserve_tools(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
+    // The spline's end treatment of every snapshot's axis.
+    spline::Ends ends() const { return ends_; }
 
     // Pins the latest snapshot for reading while it lives.
     class Reader {
@@ -89,6 +94,7 @@ private:
     std::pmr::vector<Snapshot> slots_;
     mutable std::array<std::atomic<uint32_t>, kSlots> readers_{};  // readers pinning each slot
     std::atomic<std::size_t> latest_{0};
+    spline::Ends ends_;
 };
 
 }  // namespace enteron::scene

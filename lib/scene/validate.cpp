@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "mechanics/clamped_ends.h"
 #include "scene/checked_value.h"
 #include "scene/plausible_ranges.h"
 #include "scene/shape_builder.h"
@@ -126,6 +127,7 @@ public:
     void damping(const DampingConfig& damping) const;
     void mesentery(const MesenteryConfig& mesentery) const;
     void pinned(const PinnedConfig& pinned, std::size_t control_points) const;
+    void clamped_tangents(const PinnedConfig& pinned, const double* start_points, std::size_t control_points) const;
     void collision(const CollisionConfig& collision, double radius) const;
     void obstacle(const collision::Obstacle& obstacle, const std::string& name) const;
     collision::ToolPose tool_pose(const collision::ToolPose& pose, const std::string& prefix) const;
@@ -239,7 +241,7 @@ void Validator::shape(const IntestineConfig& intestine) const {
 void Validator::solver(const SolverConfig& solver) const {
     check(static_cast<int32_t>(solver.integrator), Field::integrator)
         .at_least(static_cast<int32_t>(IntegratorKind::rk4))
-        .at_most(static_cast<int32_t>(IntegratorKind::implicit_euler));
+        .at_most(static_cast<int32_t>(IntegratorKind::bdf2));
     check(solver.timestep, Field::timestep).above(0.0).at_most(kMaxTimestep);
     check(solver.max_substeps, Field::max_substeps).at_least(1).at_most(kMaxSubsteps);
     check(solver.max_subdivisions, Field::max_subdivisions).at_most(kMaxSubdivisions);
@@ -262,9 +264,38 @@ void Validator::mesentery(const MesenteryConfig& mesentery) const {
 
 void Validator::pinned(const PinnedConfig& pinned, std::size_t control_points) const {
     check(pinned.ends, Field::pinned_ends).at_least(pin_none).at_most(pin_both);
+    check(pinned.clamped, Field::pinned_clamped).at_least(pin_none).at_most(pin_both);
+    // The two clamps' constraints (mechanics/clamped_ends.h) must not share a control point.
+    constexpr std::size_t kBothClampedPoints = 6;
+    if (pinned.clamped == pin_both && control_points < kBothClampedPoints)
+        fail(name(Field::pinned_clamped), "clamps both ends, which needs at least " +
+                                              std::to_string(kBothClampedPoints) + " control points (" +
+                                              name(Field::control_points) + " is " +
+                                              std::to_string(control_points) + ")");
     for (std::size_t i = 0; i < pinned.points.size(); ++i) {
-        check_element(std::size_t{pinned.points[i]}, Field::pinned_points, i)
-            .below(control_points, name(Field::control_points));
+        const std::size_t point = pinned.points[i];
+        check_element(point, Field::pinned_points, i).below(control_points, name(Field::control_points));
+        const bool first = (pinned.clamped & pin_first) != 0 && (point == 1 || point == 2);
+        const bool last = (pinned.clamped & pin_last) != 0 && (point + 2 == control_points || point + 3 == control_points);
+        if (first || last)
+            fail(indexed(name(Field::pinned_points), i),
+                 "is " + std::to_string(point) + ", a control point whose motion the clamped " +
+                     (first ? "first" : "last") + " end already constrains (" + name(Field::pinned_clamped) +
+                     "): a point pin there would fight the clamp; remove it");
+    }
+}
+
+void Validator::clamped_tangents(const PinnedConfig& pinned, const double* start_points,
+                                 std::size_t control_points) const {
+    for (const bool first : {true, false}) {
+        if ((pinned.clamped & (first ? pin_first : pin_last)) == 0) continue;
+        if (mechanics::clamped_end_is_degenerate(start_points, control_points, first))
+            fail(name(Field::pinned_clamped),
+                 std::string("clamps the ") + (first ? "first" : "last") +
+                     " end, but the initial shape gives it no direction to hold: its tangent " +
+                     (first ? "4 q1 - 3 q0 - q2" : "3 q[n-1] - 4 q[n-2] + q[n-3]") +
+                     " is zero (the end folds back on itself); change the shape's " + (first ? "first" : "last") +
+                     " three points");
     }
 }
 
@@ -393,6 +424,7 @@ const FieldNames& json_field_names() {
             {Field::mesentery_rest_length, "mesentery.rest_length"},
             {Field::pinned_ends, "pinned.ends"},
             {Field::pinned_points, "pinned.control_points"},
+            {Field::pinned_clamped, "pinned.clamped"},
             {Field::sphere_spacing, "collision.sphere_spacing"},
             {Field::contact_stiffness, "collision.stiffness"},
             {Field::contact_damping, "collision.damping"},
@@ -440,6 +472,7 @@ const FieldNames& c_field_names() {
             {Field::mesentery_rest_length, "mesentery_rest_length_m"},
             {Field::pinned_ends, "pinned_ends"},
             {Field::pinned_points, "pinned_points"},
+            {Field::pinned_clamped, "clamped_ends"},
             {Field::sphere_spacing, "collision_sphere_spacing_m"},
             {Field::contact_stiffness, "contact_stiffness_N_per_m"},
             {Field::contact_damping, "contact_damping_N_s_per_m"},
@@ -470,6 +503,7 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     const std::size_t n = config.intestine.control_points;
     config.start_points.assign(3 * n, 0.0);
     build_shape(config.intestine.shape, config.intestine.length, n, config.start_points.data());
+    if (config.pinned) validator.clamped_tangents(*config.pinned, config.start_points.data(), n);
     const StartClearance clearance = start_clearance(config);
     for (std::size_t i = 0; i < config.environment.size(); ++i)
         check_clearance(config.environment[i], indexed(names[Field::obstacle], i), names.code,

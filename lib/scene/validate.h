@@ -48,6 +48,7 @@ enum class Field : std::size_t {
     mesentery_rest_length,
     pinned_ends,
     pinned_points,
+    pinned_clamped,
     sphere_spacing,
     contact_stiffness,
     contact_damping,

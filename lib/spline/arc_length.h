@@ -7,6 +7,8 @@
 #include <memory_resource>
 #include <vector>
 
+#include "spline/catmull_rom.h"
+
 namespace enteron::spline {
 
 class ArcLengthTable {
@@ -14,9 +16,9 @@ public:
     explicit ArcLengthTable(std::pmr::memory_resource* memory = std::pmr::get_default_resource())
         : cumulative_(memory) {}
 
-    // Builds the table for `count` control points (x y z each). Allocates only when the
-    // count grows.
-    void build(const double* points_xyz, std::size_t count);
+    // Builds the table for `count` control points (x y z each) and the end treatment `ends`.
+    // Allocates only when the count grows.
+    void build(const double* points_xyz, std::size_t count, Ends ends = {});
 
     // Total arc length of the axis, m.
     double total_length() const { return cumulative_.empty() ? 0.0 : cumulative_.back(); }
@@ -38,11 +40,12 @@ private:
 
     const double* points_ = nullptr;
     std::size_t count_ = 0;
+    Ends ends_;
     std::pmr::vector<double> cumulative_;  // length at s = k / 8 (8 intervals per segment)
 };
 
 // Samples `samples` points (>= 2) evenly in arc length without a table: two passes over
 // the axis, no allocation (what a reader thread wants for a one-off query).
-void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samples, double* out_xyz);
+void sample_evenly(const double* points_xyz, std::size_t count, std::size_t samples, double* out_xyz, Ends ends = {});
 
 }  // namespace enteron::spline

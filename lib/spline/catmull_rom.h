@@ -4,12 +4,24 @@
 // [0, n-1] and segment i covers [i, i+1] with local t = s - i. On segment i
 //   P(t) = 1/2 [(-t^3+2t^2-t) q_{i-1} + (3t^3-5t^2+2) q_i + (-3t^3+4t^2+t) q_{i+1} + (t^3-t^2) q_{i+2}].
 //
-// End treatment: phantom points by linear extrapolation, q_{-1} = 2 q_0 - q_1 and
-// q_n = 2 q_{n-1} - q_{n-2}. The spline then reproduces straight evenly spaced points
-// exactly (a straight bowel at rest has no bending energy), its end tangents are the end
-// chords, and the basis stays a linear map of the real control points only, so the mass
-// matrix keeps half bandwidth 3. Folding the phantoms into their neighbours makes every
-// segment a combination of four consecutive real points q_first .. q_first+3.
+// End treatment: a phantom point beyond each end, a fixed combination of the real points
+// next to it (Ends, per end):
+//   linear (the default)  q_{-1} = 2 q_0 - q_1            the end tangent is the end chord
+//   quadratic             q_{-1} = 3 q_0 - 3 q_1 + q_2    the phantom continues the parabola
+//                                                          through q_0, q_1, q_2
+// and the same at the last end (q_n from q_{n-1}, q_{n-2}, q_{n-3}). Both reproduce straight
+// evenly spaced points exactly (a straight bowel at rest has no bending energy) and keep the
+// basis a linear map of the real control points only, so the mass matrix keeps half
+// bandwidth 3. Folding the phantoms into their neighbours makes every segment a combination
+// of four consecutive real points q_first .. q_first+3.
+//
+// Why two: with the linear phantom, d2P/dt2 on the end segment is (3t - 1) (q_0 - 2 q_1 + q_2):
+// it changes sign a third of the way along, so the end segment cannot carry the curvature
+// that is largest at a clamp, and a clamped beam converges at first order only. The
+// quadratic phantom reproduces parabolas: its end segment is the parabola through q_0, q_1,
+// q_2 (d2P/dt2 = q_0 - 2 q_1 + q_2), with the end tangent (4 q_1 - 3 q_0 - q_2) / 2, and a
+// clamp holding that tangent converges at second order (mechanics/clamped_ends.h,
+// docs/architecture.md).
 #pragma once
 
 #include <array>
@@ -49,20 +61,34 @@ inline std::array<double, 4> raw_weights(double t, Derivative order) {
     }
 }
 
+// How the spline continues past each end (see the top of this file).
+enum class EndTreatment { linear, quadratic };
+struct Ends {
+    EndTreatment first = EndTreatment::linear;
+    EndTreatment last = EndTreatment::linear;
+};
+
 // The weights on real control points for segment `segment` of a spline of `count` points
 // (count >= 4, segment <= count - 2), phantom points folded in.
-inline SegmentWeights segment_weights(std::size_t count, std::size_t segment, double t, Derivative order) {
+inline SegmentWeights segment_weights(std::size_t count, std::size_t segment, double t, Derivative order,
+                                      Ends ends = {}) {
     const std::array<double, 4> r = raw_weights(t, order);
     SegmentWeights out;
     // With count >= 4 the first and the last segment are never the same one.
     if (segment == 0) {
-        // q_{-1} = 2 q_0 - q_1 ; the window is q_0 .. q_3.
+        // The window is q_0 .. q_3.
         out.first = 0;
-        out.w = {r[1] + 2 * r[0], r[2] - r[0], r[3], 0.0};
+        if (ends.first == EndTreatment::linear)  // q_{-1} = 2 q_0 - q_1
+            out.w = {r[1] + 2 * r[0], r[2] - r[0], r[3], 0.0};
+        else  // q_{-1} = 3 q_0 - 3 q_1 + q_2
+            out.w = {r[1] + 3 * r[0], r[2] - 3 * r[0], r[3] + r[0], 0.0};
     } else if (segment + 2 == count) {
-        // q_n = 2 q_{n-1} - q_{n-2} ; the window is q_{n-4} .. q_{n-1}.
+        // The window is q_{n-4} .. q_{n-1}.
         out.first = count - 4;
-        out.w = {0.0, r[0], r[1] - r[3], r[2] + 2 * r[3]};
+        if (ends.last == EndTreatment::linear)  // q_n = 2 q_{n-1} - q_{n-2}
+            out.w = {0.0, r[0], r[1] - r[3], r[2] + 2 * r[3]};
+        else  // q_n = 3 q_{n-1} - 3 q_{n-2} + q_{n-3}
+            out.w = {0.0, r[0] + r[3], r[1] - 3 * r[3], r[2] + 3 * r[3]};
     } else {
         out.first = segment - 1;
         out.w = r;
@@ -83,11 +109,11 @@ inline void locate(std::size_t count, double s, std::size_t* segment, double* t)
 }
 
 // Weights on real control points at global parameter s.
-inline SegmentWeights weights_at(std::size_t count, double s, Derivative order) {
+inline SegmentWeights weights_at(std::size_t count, double s, Derivative order, Ends ends = {}) {
     std::size_t segment = 0;
     double t = 0.0;
     locate(count, s, &segment, &t);
-    return segment_weights(count, segment, t, order);
+    return segment_weights(count, segment, t, order, ends);
 }
 
 // The point sum_k w[k] q_{first+k} of control points stored x y z per point. A tuned kernel

@@ -16,6 +16,7 @@ namespace enteron::spline {
 
 // Adds the Gram matrix to `out`, which must already be count x count. Four-point Gauss
 // quadrature per segment: exact, since the integrand is a polynomial of degree <= 6.
-void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics::ScalarBandMatrix& out);
+void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics::ScalarBandMatrix& out,
+                     Ends ends = {});
 
 }  // namespace enteron::spline

@@ -24,12 +24,13 @@ inline const char* integrator_name(int32_t integrator) {
         case ENT_INTEGRATOR_RK4: return "rk4";
         case ENT_INTEGRATOR_SYMPLECTIC_EULER: return "symplectic_euler";
         case ENT_INTEGRATOR_IMPLICIT_EULER: return "implicit_euler";
+        case ENT_INTEGRATOR_BDF2: return "bdf2";
         default: return "unknown";
     }
 }
 
 inline const int32_t kIntegrators[] = {ENT_INTEGRATOR_RK4, ENT_INTEGRATOR_SYMPLECTIC_EULER,
-                                       ENT_INTEGRATOR_IMPLICIT_EULER};
+                                       ENT_INTEGRATOR_IMPLICIT_EULER, ENT_INTEGRATOR_BDF2};
 
 inline ent_scene_desc default_desc() {
     ent_scene_desc desc;

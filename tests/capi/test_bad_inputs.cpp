@@ -351,7 +351,7 @@ std::vector<BadInput> table() {
              d.shape_points_xyz_m = points_with_nan();
          }),
          kArg, "shape_points_xyz_m"},
-        {"ent_scene_create", "integrator 3", create_with([](ent_scene_desc& d) { d.integrator = 3; }), kArg,
+        {"ent_scene_create", "integrator 4", create_with([](ent_scene_desc& d) { d.integrator = 4; }), kArg,
          "integrator"},
         {"ent_scene_create", "integrator -1", create_with([](ent_scene_desc& d) { d.integrator = -1; }), kArg,
          "integrator"},
@@ -414,6 +414,19 @@ std::vector<BadInput> table() {
              d.pinned_ends = 4;
          }),
          kArg, "pinned_ends"},
+        {"ent_scene_create", "clamped_ends 4",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.clamped_ends = 4;
+         }),
+         kArg, "clamped_ends"},
+        {"ent_scene_create", "clamped_ends both with 5 control points",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.control_points = 5;
+             d.clamped_ends = ENT_PIN_BOTH;
+         }),
+         kArg, "clamped_ends"},
         {"ent_scene_create", "collision_sphere_spacing_m above R",
          create_with([](ent_scene_desc& d) { d.collision_sphere_spacing_m = 1.0; }), kArg,
          "collision_sphere_spacing_m"},

@@ -116,7 +116,8 @@ TEST_P(Convergence, ObservedOrderAtTheEndTime) {
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, Convergence,
                          ::testing::Values(Expectation{ENT_INTEGRATOR_RK4, 3.7, 4.3},
                                            Expectation{ENT_INTEGRATOR_SYMPLECTIC_EULER, 0.9, 1.1},
-                                           Expectation{ENT_INTEGRATOR_IMPLICIT_EULER, 0.9, 1.1}),
+                                           Expectation{ENT_INTEGRATOR_IMPLICIT_EULER, 0.9, 1.1},
+                                           Expectation{ENT_INTEGRATOR_BDF2, 1.8, 2.2}),
                          [](const ::testing::TestParamInfo<Expectation>& info) {
                              return std::string(integrator_name(info.param.integrator));
                          });

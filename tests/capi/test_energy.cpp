@@ -7,6 +7,8 @@
 //    E_{k+1} = E_k - 1/2 |v_{k+1} - v_k|^2_M - 1/2 |q_{k+1} - q_k|^2_K, so E never rises.
 #include "capi_test_support.h"
 
+#include <cstdio>
+
 using namespace capi_test;
 
 namespace {
@@ -92,6 +94,31 @@ TEST(Energy, ImplicitEulerNeverIncreasesTotalEnergy) {
     EXPECT_LT(previous, e0);
     RecordProperty("largest_relative_rise", std::to_string(largest_rise));
     RecordProperty("final_over_initial", std::to_string(previous / e0));
+}
+
+// bdf2 is not monotone step by step (it is G-stable: a norm over two steps decays), but it
+// never holds more energy than it started with, and it dissipates far less than implicit
+// Euler. Measured over 10 s at 1 ms: E stays at least 2.96 % below E0 after the first step
+// (an implicit Euler step for both) with either; at 10 s bdf2 keeps 17.9 % of E0, implicit
+// Euler 1.3 %.
+TEST(Energy, Bdf2NeverExceedsItsInitialEnergyAndKeepsMoreThanImplicitEuler) {
+    double kept[2] = {0.0, 0.0};
+    for (const int32_t integrator : {ENT_INTEGRATOR_BDF2, ENT_INTEGRATOR_IMPLICIT_EULER}) {
+        ScenePtr scene = vibrating_scene(integrator, 1e-3);
+        ASSERT_TRUE(scene);
+        const double e0 = total_energy(scene.get());
+        double largest_excess = -1.0, e = e0;
+        for (int k = 0; k < 10000; ++k) {
+            ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << "step " << k << ": " << ent_last_error();
+            e = total_energy(scene.get());
+            largest_excess = std::max(largest_excess, (e - e0) / e0);
+        }
+        kept[integrator == ENT_INTEGRATOR_BDF2 ? 0 : 1] = e / e0;
+        std::printf("%s: largest (E - E0) / E0 %.3e, E(10 s) / E0 %.4f\n", integrator_name(integrator),
+                    largest_excess, e / e0);
+        EXPECT_LE(largest_excess, 1e-9) << integrator_name(integrator);
+    }
+    EXPECT_GT(kept[0], kept[1]);
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 # against it, the way a user outside the project would, then moves the staged tree and
 # does it again to prove that the installed package is relocatable.
 #
-# Usage: run_consumer_test.sh --build-dir DIR --work-dir DIR [--mode cmake|pkg-config|all]
-#                             [--libdir lib] [--includedir include]
+# Usage: run_consumer_test.sh (--build-dir DIR | --installed-tree DIR) --work-dir DIR
+#                             [--mode cmake|pkg-config|all] [--libdir lib] [--includedir include]
 #   --build-dir   the configured and built Enteron build tree (cmake --install reads it)
+#   --installed-tree  an already installed prefix (e.g. the usr/ of unpacked Debian
+#                 packages, tests/packaging): copied, not installed; left as it is
 #   --work-dir    scratch directory for this test; emptied first
 #   --mode        cmake: find_package(enteron CONFIG) project in this folder;
 #                 pkg-config: cc $(pkg-config --cflags --libs enteron); all: both (default)
@@ -17,6 +19,7 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 build_dir=""
+installed_tree=""
 work_dir=""
 mode="all"
 libdir="lib"
@@ -24,6 +27,7 @@ includedir="include"
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --build-dir) build_dir="$2"; shift 2 ;;
+    --installed-tree) installed_tree="$2"; shift 2 ;;
     --work-dir) work_dir="$2"; shift 2 ;;
     --mode) mode="$2"; shift 2 ;;
     --libdir) libdir="$2"; shift 2 ;;
@@ -31,8 +35,8 @@ while [[ $# -gt 0 ]]; do
     *) echo "run_consumer_test.sh: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
-if [[ -z "$build_dir" || -z "$work_dir" ]]; then
-  echo "usage: run_consumer_test.sh --build-dir DIR --work-dir DIR [--mode cmake|pkg-config|all]" >&2
+if [[ -z "$build_dir" && -z "$installed_tree" || -n "$build_dir" && -n "$installed_tree" || -z "$work_dir" ]]; then
+  echo "usage: run_consumer_test.sh (--build-dir DIR | --installed-tree DIR) --work-dir DIR [--mode cmake|pkg-config|all]" >&2
   exit 2
 fi
 case "$mode" in
@@ -50,12 +54,17 @@ fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
 rm -rf "$work_dir"
 mkdir -p "$work_dir"
 work_dir="$(cd "$work_dir" && pwd -P)"
-build_dir="$(cd "$build_dir" && pwd -P)"
 stage="$work_dir/stage"
 moved="$work_dir/moved/somewhere/else"
 
-step "install $build_dir into $stage"
-"$cmake_cmd" --install "$build_dir" --prefix "$stage"
+if [[ -n "$installed_tree" ]]; then
+  step "copy the installed tree $installed_tree to $stage"
+  cp -a "$installed_tree" "$stage"
+else
+  build_dir="$(cd "$build_dir" && pwd -P)"
+  step "install $build_dir into $stage"
+  "$cmake_cmd" --install "$build_dir" --prefix "$stage"
+fi
 
 step "check the installed layout"
 check_layout() {

@@ -41,7 +41,8 @@ bool check(ent_status status, const char* call) {
     return false;
 }
 
-void run(int32_t integrator, const char* name, double length_m, uint32_t control_points) {
+void run(int32_t integrator, const char* name, double length_m, uint32_t control_points,
+         int32_t clamped_ends = ENT_PIN_NONE) {
     ent_scene_desc desc;
     ent_scene_desc_default(&desc);
     desc.length_m = length_m;
@@ -49,6 +50,10 @@ void run(int32_t integrator, const char* name, double length_m, uint32_t control
     desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY) | ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) |
                     ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
     desc.integrator = integrator;
+    if (clamped_ends != ENT_PIN_NONE) {
+        desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+        desc.clamped_ends = clamped_ends;
+    }
     ent_scene* scene = nullptr;
     if (!check(ent_scene_create(&desc, &scene), "ent_scene_create")) return;
     ent_obstacle_desc box;
@@ -165,6 +170,10 @@ int main() {
     run(ENT_INTEGRATOR_RK4, "rk4 (1 m)", 1.0, 40);
     run(ENT_INTEGRATOR_SYMPLECTIC_EULER, "symplectic (1 m)", 1.0, 40);
     run(ENT_INTEGRATOR_IMPLICIT_EULER, "implicit_euler", 6.0, 240);
+    run(ENT_INTEGRATOR_BDF2, "bdf2", 6.0, 240);
+    // Clamped ends change every solve (clamped_ends.h): the implicit and the explicit path.
+    run(ENT_INTEGRATOR_BDF2, "bdf2, both ends clamped", 6.0, 240, ENT_PIN_BOTH);
+    run(ENT_INTEGRATOR_SYMPLECTIC_EULER, "symplectic, clamped (1 m)", 1.0, 40, ENT_PIN_BOTH);
     if (failures != 0) {
         std::printf("%d failure(s)\n", failures);
         return 1;

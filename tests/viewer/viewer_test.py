@@ -208,7 +208,10 @@ class ViewerTest(unittest.TestCase):
         for args, message in ((["--seconds", "x"], "--seconds wants a number"),
                               (["--headless"], "--headless needs --seconds"),
                               (["--video", "a.avi", "--headless", "--seconds", "1"], "--video wants a .mp4 or .gif"),
-                              (["--script", script], "bad_script.txt:1: mouse wants X Y down|up")):
+                              (["--script", script], "bad_script.txt:1: mouse wants X Y down|up"),
+                              (["--lcm", "memq://", "scene.json"], "--lcm shows the server's scene"),
+                              (["--channel-suffix", "_A"], "--channel-suffix goes with --lcm"),
+                              (["--lcm", "memq://", "--script", "demo"], "mouse lines, not tool lines")):
             with self.subTest(args=args):
                 status, out, err = self.run_viewer(args, window=False)
                 self.assertIn(message, err)

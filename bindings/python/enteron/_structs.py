@@ -64,6 +64,7 @@ class ent_scene_desc(ctypes.Structure):
         ("contact_damping_N_s_per_m", ctypes.c_double),
         ("contact_friction", ctypes.c_double),
         ("contact_slip_speed_m_per_s", ctypes.c_double),
+        ("clamped_ends", ctypes.c_int32),
     ]
 
 

@@ -40,7 +40,7 @@ int main(void) {
     FIELD(mesentery_stiffness_N_per_m) FIELD(mesentery_rest_length_m) FIELD(pinned_ends) FIELD(pinned_points)
     FIELD(pinned_point_count) FIELD(callbacks)
     FIELD(collision_sphere_spacing_m) FIELD(contact_stiffness_N_per_m) FIELD(contact_damping_N_s_per_m)
-    FIELD(contact_friction) FIELD(contact_slip_speed_m_per_s)
+    FIELD(contact_friction) FIELD(contact_slip_speed_m_per_s) FIELD(clamped_ends)
     END()
     BEGIN(ent_stats)
     FIELD(struct_size) FIELD(control_points) FIELD(time_s) FIELD(steps) FIELD(substeps) FIELD(rollbacks)

@@ -113,6 +113,52 @@ class SameAsTheCApi(unittest.TestCase):
             np.testing.assert_array_equal(after[[0, 10]], points[[0, 10]])
             self.assertLess(after[5, 2], 0.0)  # the middle falls
 
+    def test_bdf2_integrator_by_constant_and_by_name(self):
+        # The same scene from SceneDesc(integrator=INTEGRATOR_BDF2) and JSON "bdf2", bit for bit;
+        # a free fall follows bdf2's exact discrete solution g (t^2 / 2 + 3/4 h^2 (1 - 3^-k)).
+        scenes = (enteron.Scene(dict(FREE_FALL, solver={"integrator": "bdf2", "timestep": H})),
+                  enteron.Scene(desc=enteron.SceneDesc(
+                      control_points=20, length_m=1.0, stretch_stiffness_N=0.0, bend_stiffness_N_m2=0.0,
+                      effects={"gravity"}, shape=enteron.SHAPE_LINE, shape_center_m=(0.1, -0.2, 0.3),
+                      shape_direction=(1, 1, 0), gravity_m_per_s2=G, integrator=enteron.INTEGRATOR_BDF2,
+                      timestep_s=H)))
+        results = []
+        for scene in scenes:
+            with scene:
+                start = scene.control_points()
+                k = 50
+                for _ in range(k):
+                    scene.step(H)
+                t = k * H
+                moved = scene.control_points() - start
+                expected = np.array(G) * (t * t / 2 + 0.75 * H * H * (1 - 3.0 ** -k))
+                np.testing.assert_allclose(moved, np.tile(expected, (20, 1)), rtol=0, atol=1e-12)
+                results.append(moved)
+        np.testing.assert_array_equal(results[0], results[1])
+
+    def test_clamped_end_keeps_its_point_and_tangent(self):
+        # A horizontal cantilever clamped at its first end sags, its end tangent
+        # (4 q1 - 3 q0 - q2) / 2 staying horizontal; the same through JSON's pinned.clamped.
+        points = np.column_stack([np.linspace(0, 0.5, 11), np.zeros(11), np.zeros(11)])
+        desc = enteron.SceneDesc(shape_points_xyz_m=points, clamped_ends=enteron.PIN_FIRST,
+                                 effects={"gravity", "stretch", "bend", "damping", "pinned"},
+                                 integrator=enteron.INTEGRATOR_IMPLICIT_EULER)
+        text = {"intestine": {"length": 0.5, "control_points": 11, "shape": {"kind": "line"}},
+                "gravity": [0, 0, -9.81], "damping": {},
+                "solver": {"integrator": "implicit_euler"}, "pinned": {"clamped": "first"}}
+        for scene in (enteron.Scene(desc=desc), enteron.Scene(text)):
+            with scene:
+                start = scene.control_points()
+                for _ in range(200):
+                    scene.step(H)
+                q = scene.control_points()
+                np.testing.assert_array_equal(q[0], start[0])
+                self.assertLess(q[-1, 2], start[-1, 2] - 1e-3)  # the tip sags
+                tangent = (4 * q[1] - 3 * q[0] - q[2]) / 2
+                direction = (4 * start[1] - 3 * start[0] - start[2]) / 2
+                across = np.linalg.norm(np.cross(tangent, direction)) / np.dot(tangent, direction)
+                self.assertLess(abs(across), 1e-9)
+
 
 class Errors(unittest.TestCase):
     def assertRaisesStatus(self, status, text, function, *args, **kwargs):
@@ -132,6 +178,10 @@ class Errors(unittest.TestCase):
                                 enteron.Scene, {"intestine": {"lenght": 1}})
         self.assertRaisesStatus(enteron.ERROR_INVALID_ARGUMENT, "radius_m must be > 0",
                                 enteron.Scene, desc={"radius_m": -1.0})
+        self.assertRaisesStatus(enteron.ERROR_INVALID_ARGUMENT, "clamped_ends must be <= 3, got 7",
+                                enteron.Scene, desc={"clamped_ends": 7, "effects": {"pinned"}})
+        self.assertRaisesStatus(enteron.ERROR_INVALID_SCENE, 'pinned.clamped must be one of',
+                                enteron.Scene, {"pinned": {"clamped": "middle"}})
 
     def test_call_errors(self):
         with enteron.Scene(FREE_FALL) as scene:

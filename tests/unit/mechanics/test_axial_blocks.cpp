@@ -35,7 +35,7 @@ TEST(AxialBlocks, SharedBlocksOfStretchAndDampingEqualEachAddingItsOwn) {
     stretch.evaluate(s, force_apart.data(), &own);
     damping.evaluate(s, force_apart.data(), &own);
     // One set of blocks through every round, as in the integrator: a round forgets the last.
-    mech::AxialBlocks blocks(kPoints, std::pmr::get_default_resource());
+    mech::AxialBlocks blocks(model(), std::pmr::get_default_resource());
     for (const bool stretch_first : {true, false}) {
         mech::SystemMatrix shared;
         shared.resize(3 * kPoints);

@@ -149,6 +149,9 @@ TEST(JsonLoader, IntegratorsAndPinnedEndsByName) {
               IntegratorKind::implicit_euler);
     EXPECT_EQ(load(R"({"pinned": {"ends": "first"}})").pinned->ends, pin_first);
     EXPECT_EQ(load(R"({"pinned": {"ends": "both"}})").pinned->ends, pin_both);
+    EXPECT_EQ(load(R"({"pinned": {"clamped": "last"}})").pinned->clamped, pin_last);
+    EXPECT_EQ(load(R"({"pinned": {"ends": "first", "clamped": "both"}})").pinned->clamped, pin_both);
+    EXPECT_EQ(load(R"({"pinned": {}})").pinned->clamped, pin_none);
 }
 
 TEST(JsonLoader, PointsShapeSetsControlPointCount) {
@@ -372,7 +375,7 @@ TEST(JsonLoader, WrongTypesNameThePath) {
         {R"({"intestine": {"shape": {"kind": "points", "points": {"a": 1}}}})",
          "intestine.shape.points must be an array of [x, y, z] points, got an object"},
         {R"({"solver": {"integrator": "rk5"}})",
-         "solver.integrator must be one of \"rk4\", \"symplectic_euler\", \"implicit_euler\", got \"rk5\""},
+         "solver.integrator must be one of \"rk4\", \"symplectic_euler\", \"implicit_euler\", \"bdf2\", got \"rk5\""},
         {R"({"solver": {"max_substeps": [1]}})",
          "solver.max_substeps must be an integer, got an array of 1 element"},
         {R"({"gravity": [0, 0]})",
@@ -385,6 +388,8 @@ TEST(JsonLoader, WrongTypesNameThePath) {
          "mesentery.root[1][2] must be a number, got an object"},
         {R"({"pinned": {"ends": "middle"}})",
          "pinned.ends must be one of \"none\", \"first\", \"last\", \"both\", got \"middle\""},
+        {R"({"pinned": {"clamped": "middle"}})",
+         "pinned.clamped must be one of \"none\", \"first\", \"last\", \"both\", got \"middle\""},
         {R"({"pinned": {"control_points": [1, -2]}})",
          "pinned.control_points[1] must be a non-negative integer, got -2"},
         {R"({"pinned": {"control_points": 3}})",
@@ -470,6 +475,11 @@ TEST(JsonLoader, ValuesOutOfRangeNameThePathAndTheLimit) {
         {R"({"mesentery": {"rest_length": -0.5}})", "mesentery.rest_length must be >= 0, got -0.5"},
         {R"({"intestine": {"control_points": 80}, "pinned": {"control_points": [0, 80]}})",
          "pinned.control_points[1] must be < intestine.control_points (80), got 80"},
+        {R"({"intestine": {"control_points": 5}, "pinned": {"clamped": "both"}})",
+         "pinned.clamped clamps both ends, which needs at least 6 control points (intestine.control_points is 5)"},
+        {R"({"pinned": {"clamped": "first", "control_points": [2]}})",
+         "pinned.control_points[0] is 2, a control point whose motion the clamped first end already constrains "
+         "(pinned.clamped): a point pin there would fight the clamp; remove it"},
     };
     for (const auto& [text, message] : cases) expect_scene_error(text, message);
 }

@@ -1,0 +1,84 @@
+// Clamped ends: an end of the axis held where it started AND pointing where it started, as
+// the bowel is held where it joins fixed anatomy (the duodenojejunal flexure, the
+// ileocaecal junction). A boundary condition of the spline, not a second pinned point.
+//
+// The spline's end treatment at a clamped end is quadratic (spline/catmull_rom.h): the
+// phantom q_{-1} = 3 q_0 - 3 q_1 + q_2, so the end segment is the parabola through q_0, q_1,
+// q_2 and can carry the curvature a clamp carries, and the end tangent is
+//   P'(0) = (4 q_1 - 3 q_0 - q_2) / 2.
+// The end point q_0 is pinned (pinned_points.h); the clamp holds the tangent's direction d
+// (unit, as at creation): its two components across d stay zero,
+//   e_k . (4 q_1 - 3 q_0 - q_2) = 0,   k = 1, 2,   (e_1, e_2, d) orthonormal,
+// two linear constraints, held in velocity form, e_k . (4 v_1 - 3 v_0 - v_2) = 0 (the
+// positions then keep them exactly: they are linear in q). Its length is free: the end
+// stretches as the stretch law says. The last end is the mirror image (q_{n-1}, q_{n-2},
+// q_{n-3}).
+//
+// The constraint is eliminated from each linear system A x = b that the integrators solve
+// (the implicit system, or the mass matrix for the explicit ones) by a change of variables
+// that keeps the band: with u = 4 x_1 - x_2 written in the frame (d, e_1, e_2),
+//   x_1 = (R u + x_2) / 4,   x_2 = x_2,   R = [d e_1 e_2],
+// i.e. x = T x' with T the identity but for the blocks of points 1 and 2. T^T A T couples
+// only the points A already coupled (points 1 and 2 reach points 0 .. 5 either way), so it
+// is still a band matrix of half bandwidth 11; the two rows of u across d become identity
+// rows whose right-hand sides are the constraint's values; after the solve, x = T x'.
+// The cost is a few 3 x 3 block products per end and step.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "base/geometry.h"
+#include "mechanics/system_matrix.h"
+
+namespace enteron::mechanics {
+
+// The tangent dP/dt at an end of the axis through `points` (count x 3, m) with the quadratic
+// end treatment there: (4 q_1 - 3 q_0 - q_2) / 2 at the first end, (3 q_{n-1} - 4 q_{n-2} +
+// q_{n-3}) / 2 at the last (m per unit of spline parameter, towards the last end).
+Vec3 clamped_end_tangent(const double* points, std::size_t count, bool first_end);
+
+// True if that tangent is too short to have a direction (the end folds back on itself).
+bool clamped_end_is_degenerate(const double* points, std::size_t count, bool first_end);
+
+class ClampedEnds {
+public:
+    // Clamps the first and/or last end of the axis through `start_points` (count x 3, m),
+    // each along its tangent there (spline with quadratic ends at the clamped ones).
+    // Requires count >= 4, and >= 6 with both ends (the two constraints share no point).
+    // Throws Error(internal) if a clamped end's tangent is degenerate (validate() refuses such
+    // a scene first, naming the key).
+    ClampedEnds(bool first, bool last, const double* start_points, std::size_t count);
+
+    // The direction held at an end (unit, dP/dt's), or zero if that end is free.
+    Vec3 direction(bool first_end) const;
+
+    // The control points the clamps constrain besides their end points: 1, 2 and n-2, n-3
+    // for the clamped ends. A point pin on one of them would fight the change of variables.
+    bool constrains(std::size_t control_point) const;
+
+    // A x = b  ->  (T^T A T) x' = T^T b with the constraint rows made identity. `reduce_rhs`
+    // sets those rows of the right-hand side to the change that brings the velocity
+    // `velocity` (3n, m/s) back onto the constraint, e_k . (4 dv_1 - dv_2) =
+    // -e_k . (4 v_1 - 3 v_0 - v_2) (the end point's dv_0 is zero: it is pinned); null for a
+    // system whose solution must itself satisfy the constraint (accelerations): zero.
+    void reduce(SystemMatrix& system) const;
+    void reduce_rhs(double* rhs, const double* velocity) const;
+    // x = T x' (the solution in the original coordinates).
+    void expand(double* x) const;
+
+private:
+    struct Clamp {
+        std::size_t end;     // q_0 (pinned)
+        std::size_t near;    // q_1
+        std::size_t far;     // q_2
+        Vec3 direction;      // d
+        Vec3 across[2];      // e_1, e_2
+    };
+
+    std::array<Clamp, 2> clamps_{};
+    std::size_t count_ = 0;  // clamps in use
+    std::size_t control_points_ = 0;
+};
+
+}  // namespace enteron::mechanics
