@@ -692,7 +692,25 @@ typedef struct ent_tool_desc {
     double grasp_damping_N_s_per_m;  /**< damping of the grasp spring, >= 0 (default 2). */
     double position_m[3];            /**< initial tip position, m (default 0, 0, 0). */
     double orientation_wxyz[4];      /**< initial orientation, a quaternion normalised by the library (default 1, 0, 0, 0). */
+    /* Later fields (an older struct_size leaves them at their defaults; docs/haptics.md): */
+    int32_t mode;                    /**< ENT_TOOL_MODE_PROXY (default) or ENT_TOOL_MODE_DIRECT. */
+    int32_t passivity_limiter;       /**< 1: Hannaford and Ryu's time-domain passivity controller keeps ent_tool_stats' balance >= 0; 0 (default): off. */
+    double coupling_stiffness_N_per_m; /**< proxy mode: the virtual coupling's spring from the proxy to the commanded tip, > 0 (default 1000, 1 N/mm). */
+    double coupling_damping_N_s_per_m; /**< proxy mode: the coupling's damper, >= 0 (default 1). */
+    double friction;                 /**< Coulomb coefficient of this tool's contacts, >= 0; < 0 (default -1): the scene's (contact_friction). */
 } ent_tool_desc;
+
+/**
+ * How a tool meets the bowel (ent_tool_desc.mode; docs/haptics.md).
+ * Proxy: the capsule in the scene is a proxy that the bowel's contacts keep out of the tube
+ * (it never passes through the bowel, however fast the device moves), joined to the
+ * commanded pose by a virtual coupling (a spring-damper bounded by max_force_N). The bowel
+ * receives what the proxy gives it; the wrench is the coupling's. Direct: the capsule is
+ * where the caller puts it and its contacts are bounded together by max_force_N (the
+ * behaviour before 0.2: a fast or forceful tool can pass through the tube).
+ */
+#define ENT_TOOL_MODE_PROXY 0
+#define ENT_TOOL_MODE_DIRECT 1
 
 /**
  * Fills the first struct_size bytes of *desc with the defaults listed above and sets
@@ -708,8 +726,9 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
 
 /**
  * Adds a tool at the desc's pose. The first tool turns ENT_EFFECT_TOOLS on. Every collision
- * sphere of the bowel touching the capsule gets the scene's penalty contact (ent_scene_desc
- * contact_* fields, JSON "collision"). The JSON description lists tools under "tools"
+ * sphere of the bowel touching the capsule (the proxy's in proxy mode, the default: see
+ * ENT_TOOL_MODE_PROXY) gets the scene's penalty contact (ent_scene_desc contact_* fields,
+ * JSON "collision"; the tool's own friction if set). The JSON description lists tools under "tools"
  * instead (they come first). Allocates; not on a hard real-time path.
  * @code
  *   ent_tool_desc tool;
@@ -744,10 +763,11 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 
 /**
  * The force (N) and the torque about the tip (N m) the bowel exerted on the tool in the
- * last step (its last evaluation): equal and opposite to what the bowel received, the
- * sum of the tool's contacts and grasp, bounded by max_force_N: when the magnitudes of
- * those forces add up to more, they are all scaled down by one factor, on the bowel as on
- * the tool, so action equals reaction. Zero before the first step.
+ * last accepted step: exactly minus what the bowel received over that step (the time
+ * average of the forces the integrator applied), bounded by max_force_N. Proxy mode: the
+ * virtual coupling's force, bounded. Direct mode: the sum of the tool's contacts and
+ * grasp; when their magnitudes add up to more than max_force_N they are all scaled down by
+ * one factor, on the bowel as on the tool. Zero before the first step.
  * Reads the last published snapshot (as ent_tool_read_feedback does, which tells more):
  * any thread, never waits, allocates nothing.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
@@ -798,6 +818,11 @@ typedef struct ent_tool_feedback {
     uint32_t contacts;     /**< collision spheres touching the tool in the step's last evaluation. */
     double time_s;         /**< simulated time of the published state this comes from. */
     uint64_t steps;        /**< successful steps at that state (ent_stats.steps): a new value, a new step. */
+    /* Later fields (an older struct_size does not get them): */
+    double stiffness_N_per_m[9];      /**< as ent_tool_stiffness: d(force_N)/d(tip position), row-major, N/m. */
+    double proxy_position_m[3];       /**< the tip of the tool in the scene (the proxy's; the commanded one in direct mode), m: what a viewer draws. */
+    double commanded_position_m[3];   /**< the tip the caller commanded for that step, m. */
+    double orientation_wxyz[4];       /**< the commanded orientation for that step (the proxy's too). */
 } ent_tool_feedback;
 
 /**
@@ -816,6 +841,62 @@ typedef struct ent_tool_feedback {
  *         ENT_ERROR_NOT_FOUND (unknown tool).
  */
 ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, ent_tool_feedback* out);
+
+/**
+ * The tool's local stiffness at the last published step: K = d(force_N)/d(tip position),
+ * N/m, row-major (K[3 i + j] = dF_i/dx_j), with the bowel held where it was and the
+ * velocities held; contacts and grasp, within the max_force_N bound (a saturated coupling
+ * is stiff only across the force). A device loop running faster than the physics renders
+ * F + K (x - x_k) between physics ticks (examples/multirate_device.c, docs/haptics.md).
+ * Symmetric where the law is (springs); friction and the bound make it non-symmetric.
+ * Zero before the first step and with nothing touched.
+ * Any thread; reads the published snapshot; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown or removed tool).
+ */
+ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, double K_N_per_m[9]);
+
+/** A tool's counters since it was added (ent_tool_read_stats): its passivity observer. */
+typedef struct ent_tool_stats {
+    uint32_t struct_size;             /**< set by the caller to sizeof(ent_tool_stats). */
+    int32_t grasping;                 /**< 1 while a grasp holds, else 0. */
+    uint32_t contacts;                /**< collision spheres touching the tool in the last step. */
+    uint32_t reserved;                /**< 0. */
+    double energy_in_J;               /**< work the tool did on the scene (the device put in), J, >= 0. */
+    double energy_out_J;              /**< work the scene did on the tool (given back to the device), J, >= 0. */
+    double limiter_energy_J;          /**< energy the passivity limiter took out, J (0 when it is off). */
+    double largest_force_change_N;    /**< largest change of the rendered force from one step to the next, N. */
+    uint64_t steps;                   /**< successful scene steps at that state. */
+} ent_tool_stats;
+
+/**
+ * Copies the tool's passivity observer and counters from the last published snapshot. The
+ * work is that of the rendered wrench on the commanded motion of each step:
+ * W = -(F . dx + tau . dtheta); energy_in_J sums the positive W, energy_out_J the negative.
+ * The scene is passive at the tool while energy_in_J - energy_out_J >= 0: with the limiter
+ * on (ent_tool_desc.passivity_limiter) it always is; off, a small deficit (the integrator's
+ * own damping is the usual margin) tells a vendor the model gave the device energy.
+ * Set out->struct_size first. Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
+ *         ENT_ERROR_NOT_FOUND (unknown or removed tool).
+ */
+ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent_tool_stats* out);
+
+/**
+ * Removes a tool: from the next step it touches nothing and lets go of what it held, and
+ * its id answers ENT_ERROR_NOT_FOUND from then on (ids are not reused: the other tools
+ * keep theirs). Allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown or
+ *         already removed tool); ENT_ERROR_BUSY; nothing changes on failure.
+ * @warning A driving call: one at a time per scene.
+ */
+ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool);
+
+/**
+ * The number of tools in the scene: added and not removed. Ids run from 0 to the number
+ * ever added minus one (removed ids stay unused). Any thread; never waits.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL).
+ */
+ENT_API ent_status ent_scene_tool_count(const ent_scene* scene, int32_t* out_count);
 
 /* ------------------------------------------------------------------------------------ */
 /* Skins: a closed triangle mesh of the bowel surface, for rendering                    */

@@ -31,6 +31,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       mass_factor_(memory),
       clamped_mass_factor_(memory),
       constant_system_(memory),
+      border_(memory),
       scratch_(memory),
       one_effect_force_(memory) {
     const std::size_t n = model.control_points;
@@ -84,6 +85,9 @@ void Dynamics::finalize() {
         pinned_->constrain(stiffness);
         pinned_->constrain(damping);
     }
+    std::size_t bodies = 0;
+    for (const Owned<Effect>& effect : effects_) bodies += effect->border_bodies();
+    border_.reserve(bodies, coordinates());
     max_frequency_ = std::sqrt(kEigenvalueMargin * largest_eigenvalue(stiffness));
     max_damping_rate_ = kEigenvalueMargin * largest_eigenvalue(damping);
     constant_system_h_ = -1.0;
@@ -167,7 +171,8 @@ void Dynamics::solve_mass(double* x) const {
     clamped_->expand(x);
 }
 
-bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const State& state) const {
+bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const State& state,
+                                     BorderedSystem* border) const {
     if (pinned_) pinned_->zero_rows(rhs);
     if (clamped_) {
         clamped_->reduce(system);
@@ -175,6 +180,7 @@ bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const St
     }
     if (!system.factor()) return false;
     system.solve(rhs);
+    if (border != nullptr) border->solve(system, rhs);  // the bodies of effects that have them (tools' proxies)
     if (clamped_) clamped_->expand(rhs);
     return true;
 }
@@ -211,6 +217,10 @@ bool Dynamics::begin_step(const State& state, double dt) {
     for (Owned<Effect>& effect : effects_) energy_changed |= effect->begin_step(state, dt);
     if (pinned_) pinned_->begin_step(state, dt);
     return energy_changed;
+}
+
+void Dynamics::evaluation_used(double duration, const State* after) {
+    for (Owned<Effect>& effect : effects_) effect->evaluation_used(duration, after);
 }
 
 void Dynamics::begin_attempt() {

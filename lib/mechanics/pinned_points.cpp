@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mechanics/bordered_system.h"
+
 namespace enteron::mechanics {
 
 PinnedPoints::PinnedPoints(const std::vector<uint32_t>& points, const RigidFrames& frames, double max_speed,
@@ -23,6 +25,9 @@ void PinnedPoints::evaluate(const State& state, double* force, const Linearizati
     if (lin != nullptr) {
         constrain(*lin->system);
         zero_rows(lin->stiffness_times_velocity);
+        if (lin->border != nullptr)
+            for (uint32_t p : points_)
+                for (std::size_t c = 0; c < 3; ++c) lin->border->zero_row(3 * std::size_t{p} + c);
     }
 }
 

@@ -82,6 +82,11 @@ std::uint64_t read_count(const json& value, const std::string& path,
     return count;
 }
 
+bool read_bool(const json& value, const std::string& path) {
+    if (!value.is_boolean()) fail(path + " must be true or false, got " + describe(value));
+    return value.get<bool>();
+}
+
 Vec3 read_vec3(const json& value, const std::string& path) {
     if (!value.is_array() || value.size() != 3) {
         fail(path + " must be an array of 3 numbers [x, y, z], got " + describe(value));
@@ -123,6 +128,8 @@ const Choice<IntegratorKind> kIntegrators[] = {{"rk4", IntegratorKind::rk4},
                                                {"symplectic_euler", IntegratorKind::symplectic_euler},
                                                {"implicit_euler", IntegratorKind::implicit_euler},
                                                {"bdf2", IntegratorKind::bdf2}};
+const Choice<collision::ToolMode> kToolModes[] = {{"proxy", collision::ToolMode::proxy},
+                                                  {"direct", collision::ToolMode::direct}};
 const Choice<int32_t> kPinnedEnds[] = {
     {"none", pin_none}, {"first", pin_first}, {"last", pin_last}, {"both", pin_both}};
 
@@ -450,6 +457,11 @@ const Key<ToolConfig> kToolKeys[] = {
          for (int c = 0; c < 3; ++c) t.pose.position[c] = position[c];
      }},
     {"orientation", [](auto& v, auto& p, auto& t) { t.pose.orientation = read_quaternion(v, p); }},
+    {"mode", [](auto& v, auto& p, auto& t) { t.settings.mode = read_choice(v, p, kToolModes); }},
+    {"coupling_stiffness", [](auto& v, auto& p, auto& t) { t.settings.coupling_stiffness = read_number(v, p); }},
+    {"coupling_damping", [](auto& v, auto& p, auto& t) { t.settings.coupling_damping = read_number(v, p); }},
+    {"friction", [](auto& v, auto& p, auto& t) { t.settings.friction = read_number(v, p); }},
+    {"passivity_limiter", [](auto& v, auto& p, auto& t) { t.settings.passivity_limiter = read_bool(v, p); }},
 };
 
 void read_tools(const json& value, const std::string& path, std::vector<ToolConfig>& tools) {

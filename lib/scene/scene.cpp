@@ -310,6 +310,12 @@ std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
     return index;
 }
 
+void Scene::remove_tool(std::size_t index) {
+    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
+    tools->remove_tool(index);
+    publish();
+}
+
 collision::CollisionSpheres& Scene::collision_spheres() {
     if (!spheres_)
         spheres_ = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,

@@ -87,6 +87,10 @@ public:
     // The tools' mailboxes: any thread posts poses, grasps and releases here; the next step
     // takes them (tool_channels.h).
     collision::ToolChannels& tool_channels() { return tool_channels_; }
+    const collision::ToolChannels& tool_channels() const { return tool_channels_; }
+    // Removes tool `index` (it exists and is not removed yet: tools_force.h) and publishes;
+    // allocates nothing.
+    void remove_tool(std::size_t index);
 
     // How deep beyond an obstacle's surface the bowel may be and still start (validate.h),
     // for an obstacle added later.

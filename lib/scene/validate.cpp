@@ -425,6 +425,12 @@ void Validator::tool_settings(const collision::ToolSettings& s, const std::strin
     check_named(s.grasp_margin, prefix + n.grasp_margin).at_least(0.0).at_most(kMaxToolRadius);
     check_named(s.grasp_stiffness, prefix + n.grasp_stiffness).above(0.0);
     check_named(s.grasp_damping, prefix + n.grasp_damping).at_least(0.0);
+    check_named(static_cast<int32_t>(s.mode), prefix + n.mode)
+        .at_least(static_cast<int32_t>(collision::ToolMode::proxy))
+        .at_most(static_cast<int32_t>(collision::ToolMode::direct));
+    check_named(s.coupling_stiffness, prefix + n.coupling_stiffness).above(0.0);
+    check_named(s.coupling_damping, prefix + n.coupling_damping).at_least(0.0);
+    check_named(s.friction, prefix + n.friction);  // finite; < 0: the scene's
 }
 
 FieldNames make_field_names(ErrorCode code, bool shape_points_nested, const ToolFieldNames& tool,
@@ -440,7 +446,7 @@ const FieldNames& json_field_names() {
     static const FieldNames names = make_field_names(
         ErrorCode::invalid_scene, true,
         {"radius", "length", "max_force", "grasp_margin", "grasp_stiffness", "grasp_damping", "position",
-         "orientation"},
+         "orientation", "mode", "coupling_stiffness", "coupling_damping", "friction"},
         {
             {Field::length, "intestine.length"},
             {Field::radius, "intestine.radius"},
@@ -487,7 +493,8 @@ const FieldNames& c_field_names() {
     static const FieldNames names = make_field_names(
         ErrorCode::invalid_argument, false,
         {"radius_m", "length_m", "max_force_N", "grasp_margin_m", "grasp_stiffness_N_per_m",
-         "grasp_damping_N_s_per_m", "position_m", "orientation_wxyz"},
+         "grasp_damping_N_s_per_m", "position_m", "orientation_wxyz", "mode", "coupling_stiffness_N_per_m",
+         "coupling_damping_N_s_per_m", "friction"},
         {
             {Field::length, "length_m"},
             {Field::radius, "radius_m"},

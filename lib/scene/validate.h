@@ -73,6 +73,10 @@ struct ToolFieldNames {
     const char* grasp_damping;
     const char* position;
     const char* orientation;
+    const char* mode;
+    const char* coupling_stiffness;
+    const char* coupling_damping;
+    const char* friction;
 };
 
 // How the fields are called in messages, and what error a bad value raises.

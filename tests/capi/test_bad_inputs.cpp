@@ -1008,6 +1008,52 @@ std::vector<BadInput> table() {
              return status;
          },
          ENT_ERROR_NOT_FOUND, "tool -3"},
+        {"ent_tool_stiffness", "scene NULL", [](L) { double k[9]; return ent_tool_stiffness(nullptr, 0, k); }, kArg,
+         "scene"},
+        {"ent_tool_stiffness", "K_N_per_m NULL", [](L l) { return ent_tool_stiffness(l.scene, l.tool, nullptr); }, kArg,
+         "K_N_per_m"},
+        {"ent_tool_stiffness", "unknown tool 1",
+         [](L l) {
+             double k[9] = {7, 7, 7, 7, 7, 7, 7, 7, 7};
+             const ent_status status = ent_tool_stiffness(l.scene, l.tool + 1, k);
+             EXPECT_EQ(k[0], 7.0) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_stats", "scene NULL",
+         [](L) {
+             ent_tool_stats s;
+             s.struct_size = sizeof s;
+             return ent_tool_read_stats(nullptr, 0, &s);
+         },
+         kArg, "scene"},
+        {"ent_tool_read_stats", "out NULL", [](L l) { return ent_tool_read_stats(l.scene, l.tool, nullptr); }, kArg,
+         "out"},
+        {"ent_tool_read_stats", "unknown tool 1",
+         [](L l) {
+             ent_tool_stats s;
+             s.struct_size = sizeof s;
+             return ent_tool_read_stats(l.scene, l.tool + 1, &s);
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_remove", "scene NULL", [](L) { return ent_tool_remove(nullptr, 0); }, kArg, "scene"},
+        {"ent_tool_remove", "unknown tool 1", [](L l) { return ent_tool_remove(l.scene, l.tool + 1); },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_remove", "unknown tool -1", [](L l) { return ent_tool_remove(l.scene, -1); }, ENT_ERROR_NOT_FOUND,
+         "tool -1"},
+        {"ent_scene_tool_count", "scene NULL", [](L) { int32_t n; return ent_scene_tool_count(nullptr, &n); }, kArg,
+         "scene"},
+        {"ent_scene_tool_count", "out_count NULL", [](L l) { return ent_scene_tool_count(l.scene, nullptr); }, kArg,
+         "out_count"},
+        {"ent_tool_add", "mode 2", tool_with([](ent_tool_desc& d) { d.mode = 2; }), kArg, "mode"},
+        {"ent_tool_add", "coupling_stiffness_N_per_m 0",
+         tool_with([](ent_tool_desc& d) { d.coupling_stiffness_N_per_m = 0.0; }), kArg, "coupling_stiffness_N_per_m"},
+        {"ent_tool_add", "coupling_damping_N_s_per_m NaN",
+         tool_with([](ent_tool_desc& d) { d.coupling_damping_N_s_per_m = kNaN; }), kArg, "coupling_damping_N_s_per_m"},
+        {"ent_tool_add", "friction Inf",
+         tool_with([](ent_tool_desc& d) { d.friction = std::numeric_limits<double>::infinity(); }), kArg, "friction"},
+        {"ent_tool_add", "passivity_limiter 3", tool_with([](ent_tool_desc& d) { d.passivity_limiter = 3; }), kArg,
+         "passivity_limiter"},
     };
 
     // Every struct that carries a struct_size, with each size no release has.
@@ -1036,6 +1082,8 @@ std::vector<BadInput> table() {
         add("ent_tool_read_feedback", out_struct_with_size<ent_tool_feedback>(size, [](L l, ent_tool_feedback* f) {
                 return ent_tool_read_feedback(l.scene, l.tool, f);
             }));
+        add("ent_tool_read_stats", out_struct_with_size<ent_tool_stats>(
+                                       size, [](L l, ent_tool_stats* s) { return ent_tool_read_stats(l.scene, l.tool, s); }));
     }
     for (int32_t effect : {-1, ENT_EFFECT_COUNT, INT32_MAX}) {
         rows.push_back({"ent_scene_effect_stats", "an effect this library does not know",

@@ -4,7 +4,7 @@
 // process replaced by a counting one (operator new and delete here, malloc and friends in
 // alloc_counter.c). After the first step the counter is reset; 200 steps and the queries a
 // render or haptics thread makes every frame (axis, control points, stats, effect stats) and the
-// tool calls of a haptic loop (pose, wrench, grasp, release) must then allocate nothing. Links only the shared library, like a simulator would.
+// tool calls of a haptic loop (pose, wrench, grasp, release, stiffness, stats, count) must then allocate nothing. Links only the shared library, like a simulator would.
 // The same for moving anatomy: a mesh organ posed at every step, a pin and the mesentery on
 // it, run-time velocity, friction, gravity and unpinning, the obstacle queries.
 #include <enteron/enteron.h>
@@ -93,6 +93,11 @@ void run(int32_t integrator, const char* name, double length_m, uint32_t control
     std::memset(&effect, 0, sizeof effect);
     effect.struct_size = sizeof effect;
     uint32_t count = 0;
+    double stiffness[9];
+    ent_tool_stats tool_stats;
+    std::memset(&tool_stats, 0, sizeof tool_stats);
+    tool_stats.struct_size = sizeof tool_stats;
+    int32_t tools = 0;
 
     if (check(ent_scene_step(scene, 1e-3), "first ent_scene_step")) {
         alloc_counter_start();
@@ -102,7 +107,10 @@ void run(int32_t integrator, const char* name, double length_m, uint32_t control
             ok = check(ent_tool_set_pose(scene, 0, tip, upright), "ent_tool_set_pose") &&
                  check(ent_scene_step(scene, 1e-3), "ent_scene_step") &&
                  check(ent_tool_wrench(scene, 0, force, torque), "ent_tool_wrench") &&
-                 check(ent_tool_state(scene, 0, &grasping), "ent_tool_state");
+                 check(ent_tool_state(scene, 0, &grasping), "ent_tool_state") &&
+                 check(ent_tool_stiffness(scene, 0, stiffness), "ent_tool_stiffness") &&
+                 check(ent_tool_read_stats(scene, 0, &tool_stats), "ent_tool_read_stats") &&
+                 check(ent_scene_tool_count(scene, &tools), "ent_scene_tool_count");
             if (ok && i == 100) ok = check(ent_tool_grasp(scene, 0), "ent_tool_grasp");
             if (ok && i == 150) ok = check(ent_tool_release(scene, 0), "ent_tool_release");
         }

@@ -36,7 +36,7 @@ from .scene import (EFFECT_BEND, EFFECT_COUNT, EFFECT_DAMPING, EFFECT_ENVIRONMEN
                     PIN_BOTH, PIN_FIRST, PIN_LAST, PIN_NONE, SHAPE_HELIX, SHAPE_LINE, SHAPE_POINTS, SHAPE_SERPENTINE,
                     EffectStats, Scene, SceneDesc, Stats, effect_name)
 from .skin import SKIN_CONVOLUTION, SKIN_POINT_SKELETON, SKIN_TUBE, Mesh, Skin, SkinMetrics
-from .tool import Tool, ToolFeedback, Wrench
+from .tool import TOOL_MODE_DIRECT, TOOL_MODE_PROXY, Tool, ToolFeedback, ToolStats, Wrench
 
 #: The loaded library's version, (major, minor, patch).
 version = (_version >> 16, (_version >> 8) & 0xFF, _version & 0xFF)

@@ -183,6 +183,11 @@ class ent_tool_desc(ctypes.Structure):
         ("grasp_damping_N_s_per_m", ctypes.c_double),
         ("position_m", _vec3),
         ("orientation_wxyz", ctypes.c_double * 4),
+        ("mode", ctypes.c_int32),
+        ("passivity_limiter", ctypes.c_int32),
+        ("coupling_stiffness_N_per_m", ctypes.c_double),
+        ("coupling_damping_N_s_per_m", ctypes.c_double),
+        ("friction", ctypes.c_double),
     ]
 
 
@@ -195,8 +200,26 @@ class ent_tool_feedback(ctypes.Structure):
         ("contacts", ctypes.c_uint32),
         ("time_s", ctypes.c_double),
         ("steps", ctypes.c_uint64),
+        ("stiffness_N_per_m", ctypes.c_double * 9),
+        ("proxy_position_m", _vec3),
+        ("commanded_position_m", _vec3),
+        ("orientation_wxyz", ctypes.c_double * 4),
+    ]
+
+
+class ent_tool_stats(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("grasping", ctypes.c_int32),
+        ("contacts", ctypes.c_uint32),
+        ("reserved", ctypes.c_uint32),
+        ("energy_in_J", ctypes.c_double),
+        ("energy_out_J", ctypes.c_double),
+        ("limiter_energy_J", ctypes.c_double),
+        ("largest_force_change_N", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
     ]
 
 
 ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_obstacle_desc, ent_tool_desc,
-       ent_tool_feedback, ent_skin_desc, ent_mesh_view, ent_skin_metrics)
+       ent_tool_feedback, ent_tool_stats, ent_skin_desc, ent_mesh_view, ent_skin_metrics)

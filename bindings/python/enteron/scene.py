@@ -358,7 +358,10 @@ class Scene(OwnedHandle):
         units, library defaults for those not given: radius (m, shaft radius), length (m, of
         the shaft from the tip along local +z), max_force (N, bound of the force it exerts
         and reports), grasp_margin (m), grasp_stiffness (N/m), grasp_damping (N s/m),
-        position (m, of the tip), orientation (w, x, y, z; identity: vertical, tip lowest).
+        position (m, of the tip), orientation (w, x, y, z; identity: vertical, tip lowest),
+        mode ("proxy", the default, or "direct"), coupling_stiffness (N/m), coupling_damping
+        (N s/m), friction (its contacts' Coulomb coefficient; < 0: the scene's),
+        passivity_limiter (True or False) (docs/haptics.md).
         The first tool turns the tools effect on. Allocates: call it between steps."""
         desc = tool_desc(position, orientation, **settings)
         index = ctypes.c_int32(-1)
@@ -373,8 +376,17 @@ class Scene(OwnedHandle):
 
     @property
     def tools(self):
-        """The scene's tools, in id order (a tuple of Tool)."""
-        return tuple(Tool(self, n) for n in range(self._tool_count))
+        """The scene's tools, in id order (a tuple of Tool), without the removed ones."""
+        grasping = ctypes.c_int32()
+        return tuple(Tool(self, n) for n in range(self._tool_count)
+                     if lib.ent_tool_state(self._live(), n, ctypes.byref(grasping)) == 0)
+
+    @property
+    def tool_count(self):
+        """The number of tools added and not removed (ent_scene_tool_count)."""
+        count = ctypes.c_int32()
+        check(lib.ent_scene_tool_count(self._live(), ctypes.byref(count)), "ent_scene_tool_count")
+        return count.value
 
     def _count_tools(self):
         # The C API has no tool count: the JSON tools are ids 0..n-1, so ask for each until
