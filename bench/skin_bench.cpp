@@ -1,11 +1,16 @@
-// Cost and accuracy of each skinning method on the settled 6 m bowel of the demo (dropped
-// as a helix into the abdominal cavity, held by its mesentery, its folds piled on each
-// other with self-collision; 2 s simulated first), at three resolutions. Through the C
-// API. Every benchmark iteration is one ent_skin_update of the same state (after two
-// untimed updates, so temporal coherence and buffers are warm, as on a render thread
-// following a slowly moving bowel). Counters: ms per update (wall), updates per second,
-// triangles, radius and facet error RMS / max (% of R), unwanted-blending vertices,
-// inverted triangles and watertightness, from ent_skin_metrics.
+// Cost and accuracy of each skinning method on the two settled piles of bench/skin_piles.h,
+// at three resolutions, through the C API: the demo's 6 m bowel (dropped as a helix into the
+// abdominal cavity, held by its mesentery, its folds piled on each other with
+// self-collision; 2 s simulated first), skin/<method>/<resolution>, and the tight-fold pile
+// (more than half of its axis bends with a radius under 4 R, U-turns down to 1.5 R; 6 s),
+// tight_fold_pile/<method>/<resolution>. Every benchmark iteration is one ent_skin_update of
+// the same state (after two untimed updates, so temporal coherence and buffers are warm, as
+// on a render thread following a slowly moving bowel). Counters: ms per update (wall),
+// updates per second, triangles, radius and facet error RMS / max (% of R),
+// unwanted-blending vertices, inverted triangles and watertightness, from ent_skin_metrics;
+// and what a renderer uploads (ent_mesh_view): vertex_bytes (positions, normals, tangents:
+// every update), index_bytes (only when topology_changed), topology_changes over the timed
+// updates. How tightly each pile bends is printed first (bend_radii()).
 //
 // skin/convolution_rings/*: the level of detail of the convolution skin, even rings
 // (ring_spacing_radii) against rings closer where the axis bends
@@ -13,15 +18,16 @@
 //
 // marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
 // (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
-// grid: the point-skeleton field of the settled bowel (the library's internals, not the C
-// API), sampled on the dense lattice of voxel R / 3 that covers its band (0 outside the
+// grid: the point-skeleton field of the settled demo pile (the library's internals, not the
+// C API), sampled on the dense lattice of voxel R / 3 that covers its band (0 outside the
 // band). Counter voxels_per_s: lattice cells / time. marching_cubes/enteron_band is ours
 // on the band alone, as the skin runs it.
 //
 //   build/bench/enteron_skin_bench --benchmark_min_time=0.5 [--mesh_dir=DIR]
 //
 // --mesh_dir=DIR also writes the mesh of each method at its default resolution, all of the
-// same state, as DIR/<method>.ply and DIR/<method>.obj (scripts/render_mesh.py draws them).
+// same state of the demo pile, as DIR/<method>.ply and DIR/<method>.obj
+// (scripts/render_mesh.py draws them).
 #include <enteron/enteron.h>
 
 #include <benchmark/benchmark.h>
@@ -31,10 +37,12 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "skin_piles.h"
 #include "skinning/marching_cubes.h"
 #include "skinning/mesh_writers.h"
 #include "skinning/point_skeleton_skin.h"
@@ -49,29 +57,18 @@ namespace sk = enteron::skinning;
 
 constexpr double kRadius = 0.0125;  // m
 
-// The demo's scene (examples/demo.c) without its tool.
-constexpr char kScene[] =
-    "{\"intestine\": {\"length\": 6.0, \"radius\": 0.0125, \"control_points\": 240, \"linear_density\": 0.3,"
-    " \"stretch_stiffness\": 100, \"bend_stiffness\": 2.5e-3,"
-    " \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, -0.13], \"helix_radius\": 0.1, \"helix_pitch\": 0.025}},"
-    " \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001},"
-    " \"gravity\": [0, 0, -9.81],"
-    " \"damping\": {\"drag\": 0.05, \"stretch\": 0.05, \"bend\": 0},"
-    " \"mesentery\": {\"root\": [[-0.075, 0, 0], [0.075, 0, 0]], \"stiffness\": 5, \"attachments\": 60,"
-    " \"rest_length\": 0},"
-    " \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0], \"half_extents\": [0.15, 0.15, 0.15]}],"
-    " \"self_collision\": {}}";
-
-ent_scene* settled_bowel() {
-    static ent_scene* scene = [] {
-        ent_scene* s = nullptr;
-        if (ent_scene_create_json(kScene, std::strlen(kScene), &s) != ENT_OK) return static_cast<ent_scene*>(nullptr);
-        for (int i = 0; i < 2000; ++i)
-            if (ent_scene_step(s, 1e-3) != ENT_OK) break;
-        return s;
-    }();
-    return scene;
+// The settled piles, made once each (NULL if a pile could not be made).
+ent_scene* settled(const enteron::bench::SkinPile& pile) {
+    static ent_scene* scenes[std::size(enteron::bench::kSkinPiles)] = {};
+    static bool tried[std::size(enteron::bench::kSkinPiles)] = {};
+    const std::size_t i = std::size_t(&pile - enteron::bench::kSkinPiles);
+    if (!tried[i]) {
+        tried[i] = true;
+        scenes[i] = enteron::bench::settle_pile(pile);
+    }
+    return scenes[i];
 }
+ent_scene* settled_bowel() { return settled(enteron::bench::kSkinPiles[0]); }
 
 struct Resolution {
     const char* name;
@@ -111,13 +108,23 @@ ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resoluti
     return skin;
 }
 
-void skin_benchmark(benchmark::State& state, int32_t method, Resolution resolution) {
-    ent_scene* scene = settled_bowel();
+ent_mesh_view mesh_of(const ent_skin* skin) {
+    ent_mesh_view view;
+    std::memset(&view, 0, sizeof view);
+    view.struct_size = sizeof view;
+    if (ent_skin_mesh(skin, &view) != ENT_OK) view.vertex_count = 0;
+    return view;
+}
+
+void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method,
+                    Resolution resolution) {
+    ent_scene* scene = settled(*pile);
     ent_skin* skin = scene != nullptr ? make_skin(scene, method, resolution) : nullptr;
     if (skin == nullptr) {
         state.SkipWithError(ent_last_error());
         return;
     }
+    const uint64_t serial_before = mesh_of(skin).topology_serial;
     const auto start = std::chrono::steady_clock::now();
     for (auto _ : state) {
         if (ent_skin_update(skin) != ENT_OK) {
@@ -126,6 +133,11 @@ void skin_benchmark(benchmark::State& state, int32_t method, Resolution resoluti
         }
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const ent_mesh_view view = mesh_of(skin);
+    // What a renderer uploads: the vertex data every update, the indices on a topology change.
+    state.counters["vertex_bytes"] = double(view.vertex_count) * 3 * 3 * sizeof(float);
+    state.counters["index_bytes"] = double(view.triangle_count) * 3 * sizeof(uint32_t);
+    state.counters["topology_changes"] = double(view.topology_serial - serial_before);
     struct ent_skin_metrics m;
     std::memset(&m, 0, sizeof m);
     m.struct_size = sizeof m;
@@ -326,23 +338,27 @@ int main(int argc, char** argv) {
     }
     argc = kept;
 
-    for (const Method& method : kMethods)
-        for (const Resolution& resolution : kResolutions) {
-            const std::string name = std::string("skin/") + method.name + "/" + resolution.name;
-            benchmark::RegisterBenchmark(name.c_str(), skin_benchmark, method.id, resolution)->Unit(benchmark::kMillisecond);
-        }
+    // The demo pile keeps its names of before (skin/...), the tight-fold pile has its own.
+    for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles)
+        for (const Method& method : kMethods)
+            for (const Resolution& resolution : kResolutions) {
+                const std::string prefix = &pile == &enteron::bench::kSkinPiles[0] ? "skin" : pile.name;
+                const std::string name = prefix + "/" + method.name + "/" + resolution.name;
+                benchmark::RegisterBenchmark(name.c_str(), skin_benchmark, &pile, method.id, resolution)
+                    ->Unit(benchmark::kMillisecond);
+            }
     // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
     for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
         char name[64];
         std::snprintf(name, sizeof name, "skin/convolution_rings/even_%.2f", spacing);
-        benchmark::RegisterBenchmark(name, skin_benchmark, ENT_SKIN_CONVOLUTION,
+        benchmark::RegisterBenchmark(name, skin_benchmark, &enteron::bench::kSkinPiles[0], ENT_SKIN_CONVOLUTION,
                                      Resolution{"even", 16, spacing, 0.25, 1.0 / 3.0, 0.0})
             ->Unit(benchmark::kMillisecond);
     }
     for (double chord_error : {0.02, 0.01, 0.005, 0.0025}) {
         char name[64];
         std::snprintf(name, sizeof name, "skin/convolution_rings/lod_%.4f", chord_error);
-        benchmark::RegisterBenchmark(name, skin_benchmark, ENT_SKIN_CONVOLUTION,
+        benchmark::RegisterBenchmark(name, skin_benchmark, &enteron::bench::kSkinPiles[0], ENT_SKIN_CONVOLUTION,
                                      Resolution{"lod", 16, 1.0, 0.25, 1.0 / 3.0, chord_error})
             ->Unit(benchmark::kMillisecond);
     }
@@ -364,9 +380,19 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     if (!mesh_dir.empty() && !write_meshes(mesh_dir)) return 1;
+    for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) {
+        const ent_scene* scene = settled(pile);
+        if (scene == nullptr) continue;
+        const enteron::bench::BendRadii bends = enteron::bench::bend_radii(scene, kRadius);
+        std::fprintf(stderr, "%s: axis bending with a radius under", pile.name);
+        for (std::size_t k = 0; k < std::size(bends.fraction_under); ++k)
+            std::fprintf(stderr, " %g R %.0f %%%s", enteron::bench::BendRadii::kThresholds[k],
+                         100.0 * bends.fraction_under[k], k + 1 < std::size(bends.fraction_under) ? "," : ";");
+        std::fprintf(stderr, " smallest radius %.2f R, tightest U-turn %.2f R\n", bends.smallest, bends.tightest_u_turn);
+    }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     band_field_storage.reset();
-    ent_scene_destroy(settled_bowel());
+    for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) ent_scene_destroy(settled(pile));
     return 0;
 }

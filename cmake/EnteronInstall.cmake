@@ -4,7 +4,7 @@
 #
 # Layout under the prefix (GNUInstallDirs; "lib" below is CMAKE_INSTALL_LIBDIR):
 #   lib/libenteron.so.<version>, lib/libenteron.so.<major> (SONAME), lib/libenteron.so
-#   include/enteron/enteron.h
+#   include/enteron/enteron.h, enteron.hpp (the header-only C++ layer)
 #   lib/cmake/enteron/enteronConfig.cmake, enteronConfigVersion.cmake, enteronTargets*.cmake
 #   lib/pkgconfig/enteron.pc
 #

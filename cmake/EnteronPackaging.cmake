@@ -4,7 +4,7 @@
 #
 #   component    package           holds
 #   Runtime      libenteron0       libenteron.so.0 and libenteron.so.<version>
-#   Development  libenteron-dev    enteron.h, libenteron.so, the CMake package, enteron.pc
+#   Development  libenteron-dev    enteron.h, enteron.hpp, libenteron.so, the CMake package, enteron.pc
 #   Viewer       enteron-viewer    bin/enteron-viewer, when it is built
 #   with the LCM bridge (ENTERON_WITH_LCM, docs/lcm.md):
 #   LcmRuntime      libenteron-lcm0     libenteron_lcm.so.0 and libenteron_lcm.so.<version>
@@ -123,7 +123,7 @@ enteron_debian_package(COMPONENT Runtime NAME libenteron${PROJECT_VERSION_MAJOR}
   DESCRIPTION "${_enteron_about} This package holds the shared library, libenteron.so.${PROJECT_VERSION_MAJOR}, behind a stable C ABI.")
 enteron_debian_package(COMPONENT Development NAME libenteron-dev SECTION libdevel DEPENDS Runtime
   SUMMARY "real-time small intestine model for surgery simulators (development files)"
-  DESCRIPTION "${_enteron_about} This package holds the C header enteron/enteron.h, the CMake package (find_package(enteron), target enteron::enteron) and the pkg-config file enteron.pc.")
+  DESCRIPTION "${_enteron_about} This package holds the C header enteron/enteron.h, the header-only C++17 layer enteron/enteron.hpp, the CMake package (find_package(enteron), target enteron::enteron) and the pkg-config file enteron.pc.")
 if(TARGET enteron-viewer)
   # With the bridge built, the viewer's --lcm mode links libenteron_lcm.
   set(_enteron_viewer_needs Runtime)

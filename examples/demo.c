@@ -359,6 +359,15 @@ int main(int argc, char** argv) {
         }
     }
     printf("tool: largest force %.3f N (bound 5 N)\n", tool_force_max_N);
+    {
+        /* The tool's passivity observer over the whole path (docs/haptics.md, Passivity). */
+        ent_tool_stats observer;
+        memset(&observer, 0, sizeof observer);
+        observer.struct_size = sizeof observer;
+        if (ent_tool_read_stats(scene, 0, &observer) == ENT_OK)
+            printf("tool: passivity: %.4f J put in, %.4f J given back, balance %.4f J\n", observer.energy_in_J,
+                   observer.energy_out_J, observer.energy_in_J - observer.energy_out_J);
+    }
 
     if (write_outputs(scene, out_dir) != 0 || write_skin(scene, out_dir) != 0) {
         ent_scene_destroy(scene);

@@ -1,10 +1,14 @@
 // Skin accuracy: for each skinning method and resolution, how far the mesh is from the
 // ideal tube of radius R around the axis (ent_skin_metrics: radius error RMS and max,
 // unwanted blending, volume error, watertightness), against the wall time of one
-// ent_skin_update (median), on the settled 6 m pile (study_scenes.h, default collision).
+// ent_skin_update (median), on the settled 6 m pile (study_scenes.h, default collision):
+// skin.csv; and on the tight-fold pile of the skin benchmark (bench/skin_piles.h):
+// skin_tight_fold.csv.
 #include "skin_study.h"
 
 #include "study_scenes.h"
+
+#include "../skin_piles.h"
 
 #include <cmath>
 #include <cstring>
@@ -36,15 +40,10 @@ struct Method {
 constexpr Method kMethods[] = {
     {"tube", ENT_SKIN_TUBE}, {"point_skeleton", ENT_SKIN_POINT_SKELETON}, {"convolution", ENT_SKIN_CONVOLUTION}};
 
-}  // namespace
-
-void run_skin_study(const Options& options) {
-    const double settle_s = options.fast ? 1.0 : 2.0;
+// One table: every method at every resolution on the settled scene, into `file`.
+void skin_table(const Options& options, ent_scene* scene, const char* pile, const std::string& file) {
     const int timed_updates = options.fast ? 3 : 15;
-    ScenePtr scene = make_scene(pile_json(PileSettings{}));
-    for (long k = 0; k < std::lround(settle_s / 1e-3); ++k) check(ent_scene_step(scene.get(), 1e-3), "ent_scene_step");
-
-    Csv csv(options.out_dir + "/skin.csv",
+    Csv csv(options.out_dir + "/" + file,
             {"method", "resolution", "segments", "ring_spacing_radii", "skeleton_spacing_radii", "voxel_size_radii",
              "triangles", "radius_error_rms", "radius_error_max", "blended_vertices", "inverted_triangles",
              "volume_error", "watertight", "open_edges", "nonmanifold_edges", "normal_deviation_rms_rad", "ms_per_update"});
@@ -60,7 +59,7 @@ void run_skin_study(const Options& options) {
             desc.skeleton_spacing_radii = resolution.skeleton_spacing;
             desc.voxel_size_radii = resolution.voxel_size;
             ent_skin* raw = nullptr;
-            check(ent_skin_create(scene.get(), &desc, &raw), "ent_skin_create");
+            check(ent_skin_create(scene, &desc, &raw), "ent_skin_create");
             SkinPtr skin(raw);
             // Two untimed updates: buffers and temporal coherence warm, as on a render thread.
             check(ent_skin_update(skin.get()), "ent_skin_update");
@@ -76,7 +75,7 @@ void run_skin_study(const Options& options) {
             m.struct_size = sizeof m;
             check(ent_skin_metrics(skin.get(), &m), "ent_skin_metrics");
             const double ms_median = median(ms);
-            progress("skin %-14s %-7s %7u triangles, radius RMS %.3f %% R, blended %u, %.2f ms", method.name,
+            progress("skin %s %-14s %-7s %7u triangles, radius RMS %.3f %% R, blended %u, %.2f ms", pile, method.name,
                      resolution.name, m.triangle_count, 100 * m.radius_error_rms, m.blended_vertices, ms_median);
             csv.row({method.name, resolution.name, num(resolution.segments), num(resolution.ring_spacing),
                      num(resolution.skeleton_spacing), num(resolution.voxel_size), num(m.triangle_count),
@@ -84,6 +83,20 @@ void run_skin_study(const Options& options) {
                      num(m.inverted_triangles), num(m.volume_error), num(m.watertight), num(m.open_edges), num(m.nonmanifold_edges),
                      num(m.normal_deviation_rms_rad), num(ms_median)});
         }
+}
+
+}  // namespace
+
+void run_skin_study(const Options& options) {
+    const double settle_s = options.fast ? 1.0 : 2.0;
+    ScenePtr scene = make_scene(pile_json(PileSettings{}));
+    for (long k = 0; k < std::lround(settle_s / 1e-3); ++k) check(ent_scene_step(scene.get(), 1e-3), "ent_scene_step");
+    skin_table(options, scene.get(), "pile", "skin.csv");
+    // The tight-fold pile of the skin benchmark: more than half of the axis bends with a
+    // radius under 4 R, U-turns down to 1.5 R (bench/skin_piles.h).
+    ScenePtr tight(enteron::bench::settle_pile(enteron::bench::kTightFoldPile));
+    check(tight ? ENT_OK : ENT_ERROR_INVALID_ARGUMENT, "settle_pile(tight_fold_pile)");
+    skin_table(options, tight.get(), "tight_fold_pile", "skin_tight_fold.csv");
 }
 
 }  // namespace study

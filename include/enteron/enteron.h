@@ -17,8 +17,11 @@
  *
  * Threads (a physics thread at 1 kHz, a haptic thread, a render thread):
  * - The driving calls change (or read) the live simulation: ent_scene_step,
- *   ent_scene_add_obstacle, ent_tool_add, ent_scene_save_state and ent_scene_restore_state.
- *   One of them at a time per scene: a driving call made while another runs
+ *   ent_scene_add_obstacle, ent_tool_add, ent_scene_save_state, ent_scene_restore_state,
+ *   and the changes between steps of the anatomy (ent_obstacle_set_pose,
+ *   _set_velocity, _set_friction, ent_scene_remove_obstacle, ent_obstacle_mesh,
+ *   ent_scene_set_gravity, ent_scene_pin_point, ent_scene_unpin_point,
+ *   ent_scene_attach_mesentery). One of them at a time per scene: a driving call made while another runs
  *   on the same scene on another thread returns ENT_ERROR_BUSY at once and changes nothing
  *   (the check costs one atomic operation). The driving thread may change between calls.
  * - The tool commands (ent_tool_set_pose, ent_tool_grasp, ent_tool_release) are safe from
@@ -27,13 +30,14 @@
  *   before that wins). A haptic thread posts poses while the physics thread steps.
  * - The queries read the last published snapshot: ent_scene_axis,
  *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, the contacts
- *   (ent_scene_contacts, ent_scene_contact_summary) and each tool's output
- *   (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state, ent_tool_read_contacts). A
- *   snapshot is an immutable copy of the state made at creation, after each driving call
- *   and at the end of every step (a step that fails publishes the same state with its work
- *   counters). Any number of threads may query at the same time as each other and as the
- *   step; each query sees one whole snapshot, never a mix of two, and snapshots seen by one
- *   thread never go back in the order they were published (a restore publishes an earlier
+ *   (ent_scene_contacts, ent_scene_contact_summary), each tool's output
+ *   (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state, ent_tool_read_contacts) and
+ *   each obstacle's pose (ent_obstacle_pose, ent_scene_obstacle_count). A snapshot is an
+ *   immutable copy of the state made at creation, after each driving call and at the end
+ *   of every step (a step that fails publishes the same state with its work counters).
+ *   Any number of threads may query at the same time as each other and as the step; each
+ *   query sees one whole snapshot, never a mix of two, and snapshots seen by one thread
+ *   never go back in the order they were published (a restore publishes an earlier
  *   instant as a new snapshot: its time and step count go back). A query pins a snapshot only while it copies from it, and the
  *   stepping thread never waits for a copy: it publishes into a free slot of a small pool
  *   (8 slots; with up to 7 queries running at once every step is published, beyond that a
@@ -364,6 +368,20 @@ ENT_API ent_status ent_scene_create_json_with(const char* json, size_t length,
                                               ent_scene** out_scene);
 
 /**
+ * Creates a scene from a JSON description in a file: like ent_scene_create_json_with, and a
+ * mesh obstacle's "file" is found relative to this file's directory (with
+ * ent_scene_create_json*, relative to the process's current directory). Reading the mesh
+ * files and preparing their distance fields takes time (docs/anatomy.md): not on a
+ * real-time thread.
+ * @param path the scene file (UTF-8, NUL-terminated); @param callbacks may be NULL.
+ * @return as ent_scene_create_json; ENT_ERROR_INVALID_ARGUMENT also when the file cannot
+ *         be read (the message names it); ENT_ERROR_INVALID_SCENE for a mesh file that is
+ *         missing or not a mesh (the message names the obstacle and the file).
+ */
+ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callbacks* callbacks,
+                                              ent_scene** out_scene);
+
+/**
  * Destroys a scene and everything it owns. NULL is ignored. Its skins stay valid: they keep
  * the last published state (and its memory) until they are destroyed too.
  * @warning No other call on this scene may run during or after this one.
@@ -506,8 +524,19 @@ ENT_API ent_status ent_scene_restore_state(ent_scene* scene, const void* buffer,
 #define ENT_OBSTACLE_PLANE 1      /**< a plane; the bowel is kept on the side its normal points to */
 #define ENT_OBSTACLE_SPHERE 2     /**< a solid sphere (an organ) */
 #define ENT_OBSTACLE_CAPSULE 3    /**< a solid capsule: a segment swept by a sphere (an organ, a vessel) */
+/** A triangle mesh (an organ segmented from CT), met through its signed distance field.
+ *  Added in 0.1 with moving anatomy; docs/anatomy.md tells its accuracy and cost. */
+#define ENT_OBSTACLE_MESH 4
 
-/** A rigid obstacle. Fill with ent_obstacle_desc_default first; fields a kind does not use are ignored. */
+/** No obstacle: the world (ent_scene_pin_point, ent_scene_attach_mesentery). */
+#define ENT_NO_OBSTACLE (-1)
+
+/**
+ * A rigid obstacle. Fill with ent_obstacle_desc_default first; fields a kind does not use
+ * are ignored. Every obstacle has a frame (position_m, orientation_wxyz) and its shape is
+ * given in that frame; the default frame is the world, so the shape is where its fields
+ * say. ent_obstacle_set_pose moves the frame.
+ */
 typedef struct ent_obstacle_desc {
     uint32_t struct_size;      /**< sizeof(ent_obstacle_desc); set by ent_obstacle_desc_default. */
     int32_t kind;              /**< ENT_OBSTACLE_* (default ENT_OBSTACLE_BOX_INSIDE). */
@@ -517,6 +546,26 @@ typedef struct ent_obstacle_desc {
     double start_m[3];         /**< capsule: first end of its axis (default 0, 0, 0). */
     double end_m[3];           /**< capsule: second end of its axis (default 0, 0, 0.1). */
     double radius_m;           /**< sphere, capsule: radius, > 0 (default 0.05). */
+    /* Added in 0.1 with moving anatomy: a caller built against the older, smaller struct
+       gets the defaults below. */
+    /** mesh: vertex_count x 3 coordinates in the obstacle's frame, m; copied (default NULL). */
+    const double* mesh_vertices_xyz_m;
+    uint32_t mesh_vertex_count;        /**< mesh: vertices (default 0). */
+    /** mesh: triangle_count x 3 vertex indices (from 0), counter-clockwise seen from the side
+     *  the bowel is kept on; copied (default NULL). A closed mesh keeps the bowel outside
+     *  (normals out) or inside (normals in: a cavity); an open or non-manifold one is
+     *  accepted with a warning and pushes the bowel to the side its normals face. */
+    const uint32_t* mesh_triangles;
+    uint32_t mesh_triangle_count;      /**< mesh: triangles, 1 to 16777216 (default 0). */
+    /** mesh: edge of the distance field's voxels, m, >= 0; 0: a quarter of the bowel's
+     *  radius R (default 0). Coarser costs less memory and time to prepare; above R/4 the
+     *  contacts near the surface take the exact closest point (docs/anatomy.md). */
+    double mesh_voxel_size_m;
+    double position_m[3];              /**< origin of the obstacle's frame, m (default 0, 0, 0). */
+    double orientation_wxyz[4];        /**< orientation of its frame, normalised by the library (default 1, 0, 0, 0). */
+    /** Coulomb friction coefficient of this obstacle's contacts, >= 0; negative: the scene's
+     *  contact_friction (default -1). */
+    double friction;
 } ent_obstacle_desc;
 
 /**
@@ -534,9 +583,11 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
 /**
  * Adds a rigid obstacle to the scene's environment. The first obstacle turns the
  * environment effect on; its contacts use the scene's collision spheres and contact law
- * (ent_scene_desc collision_* and contact_* fields, JSON "collision"). The JSON
- * description lists obstacles under "environment" instead. Obstacles do not move.
- * Allocates; not on a hard real-time path.
+ * (ent_scene_desc collision_* and contact_* fields, JSON "collision"), with the obstacle's
+ * own friction if it has one. The JSON description lists obstacles under "environment"
+ * instead. A mesh's arrays are copied and its distance field built here: about 0.5 s of CPU
+ * for 100k triangles at the default resolution (docs/anatomy.md); a mesh that is not
+ * closed is accepted with a warning through the log callback. Allocates; not on a hard real-time path.
  * @param out_obstacle receives the obstacle's index (0, 1, ... in order of addition; JSON
  *        obstacles come first); may be NULL.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, unknown kind, non-finite value, size
@@ -546,6 +597,130 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
  * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle);
+
+/**
+ * Moves an obstacle: its frame reaches this pose (origin, m; orientation w x y z, normalised)
+ * at the end of the next ent_scene_step, moving within that step continuously (the origin
+ * linearly, the orientation by normalised linear interpolation), so a moved organ pushes
+ * the bowel instead of jumping through it. The contacts see the bowel's velocity relative to
+ * the moving surface (the pose change over the step, or the velocity ent_obstacle_set_velocity
+ * gives), so damping and friction carry the bowel. Once an obstacle has moved, each of its
+ * contacts pushes with at most k R (contact_stiffness times the radius): an obstacle that
+ * jumps far in one step sweeps through the bowel, or lands on it, with a bounded force, as a
+ * teleported tool does (an obstacle never moved keeps the plain law). Pins and a
+ * mesentery root attached to the obstacle move with it. Setting the pose again before the
+ * step replaces the target.
+ * Thread: the driving thread, between steps (the organ's pose comes from the loop that
+ * steps: a retractor, breathing, a table tilt); no lock, allocates nothing: may be called
+ * before every step at 1 kHz.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite, zero quaternion);
+ *         ENT_ERROR_NOT_FOUND (no such obstacle, or removed); ENT_ERROR_BUSY.
+ * @warning A driving call: one at a time per scene.
+ */
+ENT_API ent_status ent_obstacle_set_pose(ent_scene* scene, int32_t obstacle, const double position_m[3],
+                                         const double orientation_wxyz[4]);
+
+/**
+ * Gives the velocity the obstacle's contacts see during the next step, instead of the one of
+ * its motion: the origin's (m/s) and the angular velocity (rad/s, world axes); a point x
+ * moves at linear + angular x (x - origin). For a surface that slides without moving (a
+ * belt) or a motion known exactly. Only for the next step; its pose still follows
+ * ent_obstacle_set_pose. Thread and errors: as ent_obstacle_set_pose.
+ */
+ENT_API ent_status ent_obstacle_set_velocity(ent_scene* scene, int32_t obstacle, const double linear_m_per_s[3],
+                                             const double angular_rad_per_s[3]);
+
+/**
+ * Sets an obstacle's Coulomb friction coefficient (>= 0; negative: the scene's
+ * contact_friction) from the next step on. Recomputes the stability bounds (allocates;
+ * about as long as one step). Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, NaN); ENT_ERROR_NOT_FOUND; ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_obstacle_set_friction(ent_scene* scene, int32_t obstacle, double friction);
+
+/**
+ * Removes an obstacle from the next step on and frees its memory. Its id is not reused
+ * (the others keep theirs); pins and a mesentery root attached to it stay where it left
+ * them. Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (no such obstacle,
+ *         or already removed); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_remove_obstacle(ent_scene* scene, int32_t obstacle);
+
+/**
+ * The number of obstacles in the last published state (removed ones not counted).
+ * Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL).
+ */
+ENT_API ent_status ent_scene_obstacle_count(const ent_scene* scene, uint32_t* out_count);
+
+/**
+ * Where an obstacle's frame rests in the last published state (origin, m; orientation
+ * w x y z): for a renderer. Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (no such obstacle,
+ *         or removed).
+ */
+ENT_API ent_status ent_obstacle_pose(const ent_scene* scene, int32_t obstacle, double position_m[3],
+                                     double orientation_wxyz[4]);
+
+/**
+ * Copies a mesh obstacle's vertices (x y z each, in its frame, m) and triangles (3 indices
+ * each), as the obstacle holds them: for a renderer. Either buffer may be NULL (its count is
+ * still reported); a capacity below the count gives ENT_ERROR_BUFFER_TOO_SMALL with the
+ * counts set and nothing copied. Thread: the driving thread, between steps (a removal frees
+ * the mesh); call it before handing the scene to a physics thread.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL counts, not a mesh); ENT_ERROR_NOT_FOUND;
+ *         ENT_ERROR_BUFFER_TOO_SMALL; ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_obstacle_mesh(ent_scene* scene, int32_t obstacle, uint32_t vertex_capacity,
+                                     double* vertices_xyz_m, uint32_t* out_vertex_count, uint32_t triangle_capacity,
+                                     uint32_t* triangles, uint32_t* out_triangle_count);
+
+/* ------------------------------------------------------------------------------------ */
+/* Run-time changes: gravity, pins, the mesentery's root                                */
+/* ------------------------------------------------------------------------------------ */
+
+/**
+ * Sets gravity (m/s^2) from the next step on: a table tilted to Trendelenburg. A scene
+ * without gravity gets it (ENT_EFFECT_GRAVITY turns on; allocates once); with gravity the
+ * call allocates nothing, so a table may tilt a little before every step. The stability
+ * guard measures the energy again, so the change is no energy from nothing.
+ * Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, non-finite); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_set_gravity(ent_scene* scene, const double gravity_m_per_s2[3]);
+
+/**
+ * Holds a control point where it is now: in the world (obstacle ENT_NO_OBSTACLE), or on an
+ * obstacle's frame, moving with it from then on (a bowel end stapled to an organ). Its
+ * velocity becomes zero (or its frame's). After a jump of its obstacle it follows at up to
+ * half the scene's max_speed and catches up over the next steps. Pinning a pinned point
+ * again moves it to the new frame. ENT_EFFECT_PINNED turns on with the first pin.
+ * Thread: the driving thread, between steps; allocates, refactors the mass matrix (about
+ * as long as one step).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, control_point out of range);
+ *         ENT_ERROR_NOT_FOUND (no such obstacle); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point, int32_t obstacle);
+
+/**
+ * Lets a pinned control point go (a surgeon frees a loop), from the next step on.
+ * Refactors the mass matrix (allocates; about as long as one step).
+ * Thread: the driving thread, between steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range); ENT_ERROR_NOT_FOUND (the
+ *         point is not pinned); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_point);
+
+/**
+ * Attaches the mesentery's root to an obstacle's frame: from then on it moves with the
+ * obstacle (the posterior wall as a mesh the simulator moves), from where it is now.
+ * ENT_NO_OBSTACLE leaves it in the world where it is. Thread: the driving thread, between
+ * steps.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (no mesentery, no
+ *         such obstacle); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_attach_mesentery(ent_scene* scene, int32_t obstacle);
 
 /* ------------------------------------------------------------------------------------ */
 /* Tools: surgical instruments that push and grasp the bowel                            */
@@ -568,7 +743,25 @@ typedef struct ent_tool_desc {
     double grasp_damping_N_s_per_m;  /**< damping of the grasp spring, >= 0 (default 2). */
     double position_m[3];            /**< initial tip position, m (default 0, 0, 0). */
     double orientation_wxyz[4];      /**< initial orientation, a quaternion normalised by the library (default 1, 0, 0, 0). */
+    /* Later fields (an older struct_size leaves them at their defaults; docs/haptics.md): */
+    int32_t mode;                    /**< ENT_TOOL_MODE_PROXY (default) or ENT_TOOL_MODE_DIRECT. */
+    int32_t passivity_limiter;       /**< 1: Hannaford and Ryu's time-domain passivity controller keeps ent_tool_stats' balance >= 0; 0 (default): off. */
+    double coupling_stiffness_N_per_m; /**< proxy mode: the virtual coupling's spring from the proxy to the commanded tip, > 0 (default 1000, 1 N/mm). */
+    double coupling_damping_N_s_per_m; /**< proxy mode: the coupling's damper, >= 0 (default 1). */
+    double friction;                 /**< Coulomb coefficient of this tool's contacts, >= 0; < 0 (default -1): the scene's (contact_friction). */
 } ent_tool_desc;
+
+/**
+ * How a tool meets the bowel (ent_tool_desc.mode; docs/haptics.md).
+ * Proxy: the capsule in the scene is a proxy that the bowel's contacts keep out of the tube
+ * (it never passes through the bowel, however fast the device moves), joined to the
+ * commanded pose by a virtual coupling (a spring-damper bounded by max_force_N). The bowel
+ * receives what the proxy gives it; the wrench is the coupling's. Direct: the capsule is
+ * where the caller puts it and its contacts are bounded together by max_force_N (the
+ * behaviour before 0.2: a fast or forceful tool can pass through the tube).
+ */
+#define ENT_TOOL_MODE_PROXY 0
+#define ENT_TOOL_MODE_DIRECT 1
 
 /**
  * Fills the first struct_size bytes of *desc with the defaults listed above and sets
@@ -584,8 +777,9 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
 
 /**
  * Adds a tool at the desc's pose. The first tool turns ENT_EFFECT_TOOLS on. Every collision
- * sphere of the bowel touching the capsule gets the scene's penalty contact (ent_scene_desc
- * contact_* fields, JSON "collision"). The JSON description lists tools under "tools"
+ * sphere of the bowel touching the capsule (the proxy's in proxy mode, the default: see
+ * ENT_TOOL_MODE_PROXY) gets the scene's penalty contact (ent_scene_desc contact_* fields,
+ * JSON "collision"; the tool's own friction if set). The JSON description lists tools under "tools"
  * instead (they come first). Allocates; not on a hard real-time path.
  * @code
  *   ent_tool_desc tool;
@@ -620,10 +814,11 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 
 /**
  * The force (N) and the torque about the tip (N m) the bowel exerted on the tool in the
- * last step (its last evaluation): equal and opposite to what the bowel received, the
- * sum of the tool's contacts and grasp, bounded by max_force_N: when the magnitudes of
- * those forces add up to more, they are all scaled down by one factor, on the bowel as on
- * the tool, so action equals reaction. Zero before the first step.
+ * last accepted step: exactly minus what the bowel received over that step (the time
+ * average of the forces the integrator applied), bounded by max_force_N. Proxy mode: the
+ * virtual coupling's force, bounded. Direct mode: the sum of the tool's contacts and
+ * grasp; when their magnitudes add up to more than max_force_N they are all scaled down by
+ * one factor, on the bowel as on the tool. Zero before the first step.
  * Reads the last published snapshot (as ent_tool_read_feedback does, which tells more):
  * any thread, never waits, allocates nothing.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown tool).
@@ -674,6 +869,11 @@ typedef struct ent_tool_feedback {
     uint32_t contacts;     /**< collision spheres touching the tool in the step's last evaluation. */
     double time_s;         /**< simulated time of the published state this comes from. */
     uint64_t steps;        /**< successful steps at that state (ent_stats.steps): a new value, a new step. */
+    /* Later fields (an older struct_size does not get them): */
+    double stiffness_N_per_m[9];      /**< as ent_tool_stiffness: d(force_N)/d(tip position), row-major, N/m. */
+    double proxy_position_m[3];       /**< the tip of the tool in the scene (the proxy's; the commanded one in direct mode), m: what a viewer draws. */
+    double commanded_position_m[3];   /**< the tip the caller commanded for that step, m. */
+    double orientation_wxyz[4];       /**< the commanded orientation for that step (the proxy's too). */
 } ent_tool_feedback;
 
 /**
@@ -692,6 +892,62 @@ typedef struct ent_tool_feedback {
  *         ENT_ERROR_NOT_FOUND (unknown tool).
  */
 ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, ent_tool_feedback* out);
+
+/**
+ * The tool's local stiffness at the last published step: K = d(force_N)/d(tip position),
+ * N/m, row-major (K[3 i + j] = dF_i/dx_j), with the bowel held where it was and the
+ * velocities held; contacts and grasp, within the max_force_N bound (a saturated coupling
+ * is stiff only across the force). A device loop running faster than the physics renders
+ * F + K (x - x_k) between physics ticks (examples/multirate_device.c, docs/haptics.md).
+ * Symmetric where the law is (springs); friction and the bound make it non-symmetric.
+ * Zero before the first step and with nothing touched.
+ * Any thread; reads the published snapshot; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown or removed tool).
+ */
+ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, double K_N_per_m[9]);
+
+/** A tool's counters since it was added (ent_tool_read_stats): its passivity observer. */
+typedef struct ent_tool_stats {
+    uint32_t struct_size;             /**< set by the caller to sizeof(ent_tool_stats). */
+    int32_t grasping;                 /**< 1 while a grasp holds, else 0. */
+    uint32_t contacts;                /**< collision spheres touching the tool in the last step. */
+    uint32_t reserved;                /**< 0. */
+    double energy_in_J;               /**< work the tool did on the scene (the device put in), J, >= 0. */
+    double energy_out_J;              /**< work the scene did on the tool (given back to the device), J, >= 0. */
+    double limiter_energy_J;          /**< energy the passivity limiter took out, J (0 when it is off). */
+    double largest_force_change_N;    /**< largest change of the rendered force from one step to the next, N. */
+    uint64_t steps;                   /**< successful scene steps at that state. */
+} ent_tool_stats;
+
+/**
+ * Copies the tool's passivity observer and counters from the last published snapshot. The
+ * work is that of the rendered wrench on the commanded motion of each step:
+ * W = -(F . dx + tau . dtheta); energy_in_J sums the positive W, energy_out_J the negative.
+ * The scene is passive at the tool while energy_in_J - energy_out_J >= 0: with the limiter
+ * on (ent_tool_desc.passivity_limiter) it always is; off, a small deficit (the integrator's
+ * own damping is the usual margin) tells a vendor the model gave the device energy.
+ * Set out->struct_size first. Any thread; never waits; allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
+ *         ENT_ERROR_NOT_FOUND (unknown or removed tool).
+ */
+ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent_tool_stats* out);
+
+/**
+ * Removes a tool: from the next step it touches nothing and lets go of what it held, and
+ * its id answers ENT_ERROR_NOT_FOUND from then on (ids are not reused: the other tools
+ * keep theirs). Allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_NOT_FOUND (unknown or
+ *         already removed tool); ENT_ERROR_BUSY; nothing changes on failure.
+ * @warning A driving call: one at a time per scene.
+ */
+ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool);
+
+/**
+ * The number of tools in the scene: added and not removed. Ids run from 0 to the number
+ * ever added minus one (removed ids stay unused). Any thread; never waits.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL).
+ */
+ENT_API ent_status ent_scene_tool_count(const ent_scene* scene, int32_t* out_count);
 
 /* ------------------------------------------------------------------------------------ */
 /* Contacts: what touches the bowel, where and how hard (for scoring a trainee)          */
@@ -854,9 +1110,18 @@ typedef struct ent_skin_desc {
      *  Above 0, rings come closer where the axis bends, so that the straight edge between two rings departs
      *  from the tube by at most this (its sag on the outer side of the bend), down to 1/16 of
      *  ring_spacing_radii; ring_spacing_radii is then the spacing on straight parts. The ring count
-     *  follows the bends from frame to frame. Added in 0.1 after the first skins: a caller built
-     *  against the older, smaller ent_skin_desc gets 0. */
+     *  follows the bends from frame to frame (in steps, with stable_topology). Added in 0.1 after the
+     *  first skins: a caller built against the older, smaller ent_skin_desc gets 0. */
     double ring_chord_error_radii;
+    /** tube, convolution: 1 (default) keeps the vertex count and the triangle indices from update to update
+     *  while the bowel moves, so that a renderer uploads the indices once (ent_mesh_view.topology_changed
+     *  says when to do it again): the rings are as many as the axis' length at the skin's first update
+     *  holds at ring_spacing_radii, spread evenly over its current length; with ring_chord_error_radii their count
+     *  moves in steps of a sixteenth of that, up at once where the bends need more rings, down only once a
+     *  whole step is spare. 0: rings every ring_spacing_radii of the current length, their count following
+     *  the stretch. point_skeleton: ignored, its topology changes on every update. Added after
+     *  ring_chord_error_radii: a caller built against an older, smaller ent_skin_desc gets 1. */
+    int32_t stable_topology;
 } ent_skin_desc;
 
 /**
@@ -910,6 +1175,29 @@ typedef struct ent_mesh_view {
     const uint32_t* indices;       /**< triangle_count x 3 vertex indices, counter-clockwise seen from outside. */
     double time_s;                 /**< simulated time of the state the mesh was made from. */
     uint64_t updates;              /**< ent_skin_update calls that succeeded so far. */
+    /* Added after the first skins: not written for an older, smaller struct_size. */
+    /** vertex_count floats in [0, 1): the vertex's angle around the axis / 2 pi, measured from the normal of
+     *  the rotation-minimising frame of its axis point towards its binormal (the frame does not twist along the
+     *  bowel, and starts each update from the last one's first normal, so v is continuous along the bowel and
+     *  from frame to frame). It wraps from just below 1 to 0 across one column of triangles: sample a periodic
+     *  texture there with care (e.g. fract in the fragment shader). */
+    const float* around_v;
+    /** vertex_count x 3 floats, unit, perpendicular to the normal: the surface's direction of increasing u
+     *  (along the axis; towards the last pole on the end caps). tangent x normal points towards increasing v
+     *  (for normal maps: the bitangent is cross(tangent, normal); glTF handedness -1). */
+    const float* tangents_xyz;
+    /** Counts the updates that changed the topology (vertex_count or indices), the first included: equal
+     *  values, the same indices. A renderer that may skip updates compares it with the value of the indices
+     *  it holds. */
+    uint64_t topology_serial;
+    /** 1 if the last ent_skin_update changed vertex_count or indices (the first update does), else 0: upload
+     *  the indices only then. Positions, normals and tangents change on every update; around_v of the tube
+     *  and convolution skins only with the topology, and axis_u too when their rings are even
+     *  (ring_chord_error_radii 0) and stable_topology is 1. */
+    int32_t topology_changed;
+    /** 1 if this skin keeps its topology while the bowel moves (tube and convolution with
+     *  ent_skin_desc.stable_topology), 0 if it may change on any update (point_skeleton: every update). */
+    int32_t stable_topology;
 } ent_mesh_view;
 
 /**

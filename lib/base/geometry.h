@@ -19,6 +19,7 @@ namespace enteron {
 
 using Vec3 = Eigen::Vector3d;
 using Vec4 = Eigen::Vector4d;
+using Mat3 = Eigen::Matrix3d;
 
 inline constexpr double kPi = 3.14159265358979323846;
 

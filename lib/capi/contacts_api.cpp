@@ -130,6 +130,7 @@ ENT_API ent_status ent_tool_read_contacts(const ent_scene* scene, int32_t tool, 
             throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " does not exist (the scene has " +
                                                   std::to_string(snapshot->tools.size()) + " tools)");
         const enteron::collision::ToolOutput& output = snapshot->tools[static_cast<std::size_t>(tool)];
+        if (output.removed) throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " was removed");
         const ContactTotals& totals = snapshot->contact_totals;
         ent_tool_contacts full{};
         full.struct_size = out->struct_size;

@@ -1,5 +1,6 @@
 // The guard of the driving calls (ent_scene_step, ent_scene_add_obstacle, ent_tool_add,
-// ent_scene_save_state, ent_scene_restore_state):
+// ent_scene_save_state, ent_scene_restore_state and the anatomy's changes between steps,
+// enteron.h lists them):
 // one atomic exchange detects a driving call on the same scene that is still running on
 // another thread, and the call then fails with ENT_ERROR_BUSY before it touches anything.
 // Two threads stepping one scene at once used to hang in the near-pair search or publish
@@ -20,9 +21,10 @@ public:
         if (handle.driving.exchange(true, std::memory_order_acquire))
             throw Error(ErrorCode::busy, std::string(call) +
                                              ": another thread is in a driving call on this scene (ent_scene_step, "
-                                             "ent_scene_add_obstacle, ent_tool_add, ent_scene_save_state or "
-                                             "ent_scene_restore_state); driving calls on one scene "
-                                             "must not overlap. Nothing was done: call again once it has returned");
+                                             "ent_scene_add_obstacle, ent_tool_add, ent_scene_save_state, "
+                                             "ent_scene_restore_state or a change of the anatomy between steps); "
+                                             "driving calls on one scene must not overlap. Nothing was done: call "
+                                             "again once it has returned");
     }
     ~DrivingCall() { handle_.driving.store(false, std::memory_order_release); }
     DrivingCall(const DrivingCall&) = delete;

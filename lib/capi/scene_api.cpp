@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <memory_resource>
 #include <optional>
 #include <string>
@@ -49,7 +51,7 @@ ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::Sce
     }
     try {
         enteron::scene::warn_implausible(config, names, handle->logger);
-        handle->scene.emplace(config, *handle->published, handle->memory, handle->logger);
+        handle->scene.emplace(config, *handle->published, handle->memory, handle->logger, names);
     } catch (...) {
         enteron::capi::release(handle);
         throw;
@@ -91,6 +93,22 @@ ENT_API ent_status ent_scene_create_json_with(const char* json, size_t length, c
         require(json, "json");
         require(out_scene, "out_scene");
         const enteron::scene::SceneConfig config = enteron::scene::load_scene_json(json, length);
+        *out_scene = make_handle(callbacks, config, enteron::scene::json_field_names());
+    });
+}
+
+ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callbacks* callbacks, ent_scene** out_scene) {
+    return guarded([&] {
+        require(path, "path");
+        require(out_scene, "out_scene");
+        std::ifstream file(path, std::ios::binary);
+        if (!file) throw Error(ErrorCode::invalid_argument, std::string("path \"") + path + "\" cannot be opened");
+        const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        if (file.bad()) throw Error(ErrorCode::invalid_argument, std::string("path \"") + path + "\" cannot be read");
+        const std::string name(path);
+        const std::size_t slash = name.find_last_of('/');
+        const std::string directory = slash == std::string::npos ? "" : slash == 0 ? "/" : name.substr(0, slash);
+        const enteron::scene::SceneConfig config = enteron::scene::load_scene_json(text.data(), text.size(), directory);
         *out_scene = make_handle(callbacks, config, enteron::scene::json_field_names());
     });
 }

@@ -153,7 +153,7 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
                                                   vec3(desc.mesentery_root_end_m),
                                                   desc.mesentery_attachments,
                                                   desc.mesentery_stiffness_N_per_m,
-                                                  desc.mesentery_rest_length_m};
+                                                  desc.mesentery_rest_length_m, std::nullopt};
     if (has(ENT_EFFECT_PINNED)) {
         scene::PinnedConfig pinned;
         pinned.ends = desc.pinned_ends;

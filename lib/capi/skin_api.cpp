@@ -53,10 +53,19 @@ void check_knob(T value, T low, T high, const char* field) {
 // The sizes of ent_skin_desc in released headers. An older size is the offset of the first
 // field its header lacks; those fields take their defaults.
 //   0.1 first skins  without ring_chord_error_radii.
+//   0.1 skins' LOD   without stable_topology.
 //   0.1              the current header.
 void check_skin_desc_size(uint32_t struct_size) {
-    enteron::capi::check_struct_size(struct_size, {offsetof(ent_skin_desc, ring_chord_error_radii), sizeof(ent_skin_desc)},
+    enteron::capi::check_struct_size(struct_size,
+                                     {offsetof(ent_skin_desc, ring_chord_error_radii),
+                                      offsetof(ent_skin_desc, stable_topology), sizeof(ent_skin_desc)},
                                      "ent_skin_desc");
+}
+
+// The sizes of ent_mesh_view: without around_v and what follows it, and now.
+void check_mesh_view_size(uint32_t struct_size) {
+    enteron::capi::check_struct_size(struct_size, {offsetof(ent_mesh_view, around_v), sizeof(ent_mesh_view)},
+                                     "ent_mesh_view");
 }
 
 // The sizes of ent_skin_metrics: without facet_error_rms and facet_error_max, and now.
@@ -77,6 +86,7 @@ ent_skin_desc default_desc() {
     defaults.voxel_size_radii = 1.0 / 3.0;
     defaults.window_radii = 1.0;
     defaults.ring_chord_error_radii = 0.0;
+    defaults.stable_topology = 1;
     return defaults;
 }
 
@@ -99,6 +109,7 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, d
         .at_least(0.25)
         .below(2.0);
     check_knob(desc.ring_chord_error_radii, 0.0, 1.0, "ring_chord_error_radii");
+    check_knob(desc.stable_topology, 0, 1, "stable_topology");
     enteron::skinning::SkinSettings s;
     s.method = static_cast<enteron::skinning::SkinMethod>(desc.method);
     s.radius = radius;
@@ -109,6 +120,7 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, d
     s.voxel_size = desc.voxel_size_radii * radius;
     s.window = desc.window_radii * radius;
     s.ring_chord_error = desc.ring_chord_error_radii * radius;
+    s.stable_topology = desc.stable_topology != 0;
     return s;
 }
 
@@ -165,9 +177,10 @@ ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out) {
     return guarded([&] {
         require(skin, "skin");
         require(out, "out");
-        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_mesh_view)}, "ent_mesh_view");
+        check_mesh_view_size(out->struct_size);
         const SkinHandle& h = *handle_of(skin);
-        const enteron::skinning::Mesh& mesh = h.skin->mesh();
+        const enteron::skinning::Skin& sk = *h.skin;
+        const enteron::skinning::Mesh& mesh = sk.mesh();
         ent_mesh_view full{};
         full.struct_size = out->struct_size;
         const bool empty = h.updates == 0 || mesh.vertex_count() == 0;
@@ -179,6 +192,11 @@ ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out) {
         full.indices = empty ? nullptr : mesh.indices.data();
         full.time_s = h.time_s;
         full.updates = h.updates;
+        full.around_v = empty ? nullptr : mesh.v.data();
+        full.tangents_xyz = empty ? nullptr : mesh.tangents.data();
+        full.topology_serial = sk.topology_changes();
+        full.topology_changed = h.updates > 0 && sk.topology_changed() ? 1 : 0;
+        full.stable_topology = sk.stable_topology() ? 1 : 0;
         std::memcpy(out, &full, out->struct_size);
     });
 }

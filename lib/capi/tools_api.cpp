@@ -2,6 +2,9 @@
 // ent_tool_add is a driving call; the commands (pose, grasp, release) go through each
 // tool's wait-free mailbox and the outputs come from the published snapshot, so both work
 // from any thread while another steps.
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <cstring>
 #include <string>
 
@@ -33,6 +36,7 @@ ToolMailbox& mailbox_of(SceneHandle& handle, int32_t tool) {
     enteron::collision::ToolChannels& channels = handle.scene->tool_channels();
     ToolMailbox* mailbox = tool >= 0 ? channels.mailbox(static_cast<std::size_t>(tool)) : nullptr;
     if (mailbox == nullptr) unknown_tool(tool, channels.size());
+    if (mailbox->retired()) throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " was removed");
     return *mailbox;
 }
 
@@ -50,6 +54,18 @@ PublishedTool published_tool(const SceneHandle& handle, int32_t tool) {
     return {snapshot->tools[static_cast<std::size_t>(tool)], snapshot->stats.time, snapshot->stats.steps};
 }
 
+// The sizes of ent_tool_desc and ent_tool_feedback in released headers: before the fields
+// of the tool's proxy and stiffness, and now.
+constexpr std::size_t kToolDescFirstSize = offsetof(ent_tool_desc, mode);
+constexpr std::size_t kToolFeedbackFirstSize = offsetof(ent_tool_feedback, stiffness_N_per_m);
+
+// The published output of a tool that exists and is not removed.
+PublishedTool present_tool(const SceneHandle& handle, int32_t tool) {
+    PublishedTool published = published_tool(handle, tool);
+    if (published.output.removed) throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " was removed");
+    return published;
+}
+
 }  // namespace
 
 extern "C" {
@@ -57,7 +73,7 @@ extern "C" {
 ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size) {
     return guarded([&] {
         require(desc, "desc");
-        enteron::capi::check_struct_size(struct_size, {sizeof(ent_tool_desc)}, "ent_tool_desc");
+        enteron::capi::check_struct_size(struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
         const enteron::collision::ToolConfig tool;
         ent_tool_desc defaults;
         std::memset(&defaults, 0, sizeof defaults);
@@ -70,6 +86,11 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
         defaults.grasp_damping_N_s_per_m = tool.settings.grasp_damping;
         for (int c = 0; c < 3; ++c) defaults.position_m[c] = tool.pose.position[c];
         for (int c = 0; c < 4; ++c) defaults.orientation_wxyz[c] = tool.pose.orientation[c];
+        defaults.mode = static_cast<int32_t>(tool.settings.mode);
+        defaults.passivity_limiter = tool.settings.passivity_limiter ? 1 : 0;
+        defaults.coupling_stiffness_N_per_m = tool.settings.coupling_stiffness;
+        defaults.coupling_damping_N_s_per_m = tool.settings.coupling_damping;
+        defaults.friction = tool.settings.friction;
         std::memcpy(desc, &defaults, struct_size);
     });
 }
@@ -78,8 +99,13 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
     return guarded([&] {
         SceneHandle& handle = live_handle(scene);
         require(desc, "desc");
-        enteron::capi::check_struct_size(desc->struct_size, {sizeof(ent_tool_desc)}, "ent_tool_desc");
+        enteron::capi::check_struct_size(desc->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
         const enteron::capi::DrivingCall driving(handle, "ent_tool_add");
+        // An older, smaller desc: its missing fields take their defaults.
+        ent_tool_desc full;
+        ent_tool_desc_default(&full);
+        std::memcpy(&full, desc, desc->struct_size);
+        desc = &full;
         enteron::collision::ToolConfig tool;
         tool.settings.radius = desc->radius_m;
         tool.settings.length = desc->length_m;
@@ -89,6 +115,14 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
         tool.settings.grasp_damping = desc->grasp_damping_N_s_per_m;
         for (int c = 0; c < 3; ++c) tool.pose.position[c] = desc->position_m[c];
         for (int c = 0; c < 4; ++c) tool.pose.orientation[c] = desc->orientation_wxyz[c];
+        tool.settings.mode = static_cast<enteron::collision::ToolMode>(desc->mode);
+        tool.settings.coupling_stiffness = desc->coupling_stiffness_N_per_m;
+        tool.settings.coupling_damping = desc->coupling_damping_N_s_per_m;
+        tool.settings.friction = desc->friction;
+        if (desc->passivity_limiter != 0 && desc->passivity_limiter != 1)
+            throw Error(ErrorCode::invalid_argument,
+                        "passivity_limiter must be 0 or 1, got " + std::to_string(desc->passivity_limiter));
+        tool.settings.passivity_limiter = desc->passivity_limiter == 1;
         const enteron::scene::FieldNames& names = enteron::scene::c_field_names();
         tool = enteron::scene::validate_tool(tool, "", names);
         enteron::scene::warn_implausible(tool.settings, "", names, handle.logger);
@@ -124,7 +158,7 @@ ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double 
         const SceneHandle& handle = live_handle(scene);
         require(force_N, "force_N");
         require(torque_Nm, "torque_Nm");
-        const enteron::collision::ToolWrench wrench = published_tool(handle, tool).output.wrench;
+        const enteron::collision::ToolWrench wrench = present_tool(handle, tool).output.wrench;
         for (int c = 0; c < 3; ++c) force_N[c] = wrench.force[c], torque_Nm[c] = wrench.torque[c];
     });
 }
@@ -133,7 +167,7 @@ ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t*
     return guarded([&] {
         const SceneHandle& handle = live_handle(scene);
         require(out_grasping, "out_grasping");
-        *out_grasping = published_tool(handle, tool).output.grasping ? 1 : 0;
+        *out_grasping = present_tool(handle, tool).output.grasping ? 1 : 0;
     });
 }
 
@@ -142,8 +176,9 @@ ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, 
         const SceneHandle& handle = live_handle(scene);
         require(out, "out");
         // The sizes of ent_tool_feedback in released headers: only the current one so far.
-        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_tool_feedback)}, "ent_tool_feedback");
-        const PublishedTool published = published_tool(handle, tool);
+        enteron::capi::check_struct_size(out->struct_size, {kToolFeedbackFirstSize, sizeof(ent_tool_feedback)},
+                                         "ent_tool_feedback");
+        const PublishedTool published = present_tool(handle, tool);
         const enteron::collision::ToolOutput& output = published.output;
         ent_tool_feedback full{};
         full.struct_size = out->struct_size;
@@ -155,7 +190,59 @@ ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, 
         full.contacts = output.contacts;
         full.time_s = published.time_s;
         full.steps = published.steps;
+        std::copy(output.stiffness.begin(), output.stiffness.end(), full.stiffness_N_per_m);
+        for (int c = 0; c < 3; ++c) {
+            full.proxy_position_m[c] = output.proxy.position[c];
+            full.commanded_position_m[c] = output.commanded.position[c];
+        }
+        std::copy(output.commanded.orientation.begin(), output.commanded.orientation.end(), full.orientation_wxyz);
         std::memcpy(out, &full, out->struct_size);
+    });
+}
+
+ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, double K_N_per_m[9]) {
+    return guarded([&] {
+        const SceneHandle& handle = live_handle(scene);
+        require(K_N_per_m, "K_N_per_m");
+        const std::array<double, 9> stiffness = present_tool(handle, tool).output.stiffness;
+        std::copy(stiffness.begin(), stiffness.end(), K_N_per_m);
+    });
+}
+
+ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent_tool_stats* out) {
+    return guarded([&] {
+        const SceneHandle& handle = live_handle(scene);
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_tool_stats)}, "ent_tool_stats");
+        const PublishedTool published = present_tool(handle, tool);
+        const enteron::collision::ToolOutput& output = published.output;
+        ent_tool_stats full{};
+        full.struct_size = out->struct_size;
+        full.grasping = output.grasping ? 1 : 0;
+        full.contacts = output.contacts;
+        full.energy_in_J = output.stats.energy_in;
+        full.energy_out_J = output.stats.energy_out;
+        full.limiter_energy_J = output.stats.limiter_energy;
+        full.largest_force_change_N = output.stats.largest_force_change;
+        full.steps = published.steps;
+        std::memcpy(out, &full, out->struct_size);
+    });
+}
+
+ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool) {
+    return guarded([&] {
+        SceneHandle& handle = live_handle(scene);
+        const enteron::capi::DrivingCall driving(handle, "ent_tool_remove");
+        mailbox_of(handle, tool);  // NOT_FOUND for an unknown or removed tool
+        handle.scene->remove_tool(static_cast<std::size_t>(tool));
+    });
+}
+
+ENT_API ent_status ent_scene_tool_count(const ent_scene* scene, int32_t* out_count) {
+    return guarded([&] {
+        const SceneHandle& handle = live_handle(scene);
+        require(out_count, "out_count");
+        *out_count = static_cast<int32_t>(handle.scene->tool_channels().present());
     });
 }
 

@@ -1,25 +1,47 @@
 // Rigid shapes around the bowel: the abdominal cavity (inside of a box) and other organs
-// (planes, spheres, capsules). Each reports, for a sphere of radius R, the contacts it
-// makes: depth of penetration and the unit normal pushing the sphere out.
+// (planes, spheres, capsules, triangle meshes). Each reports, for a sphere of radius R, the
+// contacts it makes: depth of penetration and the unit normal pushing the sphere out.
+//
+// Every obstacle has a frame (its pose, mechanics/rigid_frames.h) and its shape is given in
+// that frame; the functions here take points in the frame and give normals in it. A frame
+// at the identity pose is the world.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 
 #include "base/geometry.h"
+#include "collision/mesh_distance_field.h"
+#include "collision/triangle_mesh.h"
+#include "mechanics/rigid_frames.h"
 
 namespace enteron::collision {
 
 // The numbers are those of ENT_OBSTACLE_* in enteron.h.
-enum class ObstacleKind : int32_t { box_inside = 0, plane = 1, sphere = 2, capsule = 3 };
+enum class ObstacleKind : int32_t { box_inside = 0, plane = 1, sphere = 2, capsule = 3, mesh = 4 };
 
 struct Obstacle {
     ObstacleKind kind = ObstacleKind::box_inside;
     Vec3 center = Vec3::Zero();  // box_inside, sphere: centre; plane: a point of it; capsule: axis start
     Vec3 extent = Vec3::Zero();  // box_inside: half extents; plane: normal (unit); capsule: axis end
     double radius = 0.0;  // sphere, capsule
+    // mesh: its triangles (copied once from the caller, then shared) and the edge of its
+    // distance field's voxels, m (0: the scene's default, kDefaultVoxelRadii R).
+    std::shared_ptr<const TriangleMesh> mesh;
+    double voxel_size = 0.0;
+    // Where the frame the shape is given in starts (identity: the shape as given, in the world).
+    mechanics::RigidPose pose;
+    // Coulomb coefficient of this obstacle's contacts; negative: the scene's.
+    double friction = -1.0;
+    // mesh: the prepared field (EnvironmentForce::prepare), shared by the copies.
+    std::shared_ptr<const MeshDistanceField> field;
 };
+
+// A mesh's voxel size when the obstacle leaves it to the scene, in units of the bowel's
+// radius R (docs/anatomy.md: the measurement behind it).
+constexpr double kDefaultVoxelRadii = 0.25;
 
 struct ObstacleContact {
     double depth;  // m, > 0
@@ -35,15 +57,16 @@ inline Vec3 closest_core_point(const Obstacle& o, const Vec3& p) {
     return o.center + t * axis;
 }
 
-// How far the point p lies beyond the obstacle's surface, m (<= 0: on the bowel's side):
-// outside the box_inside, behind the plane (its normal need not be unit), inside the sphere
-// or capsule.
+// How far the point p (in the obstacle's frame) lies beyond the obstacle's surface, m (<= 0:
+// on the bowel's side): outside the box_inside, behind the plane (its normal need not be
+// unit), inside the sphere, capsule or mesh (whose field must be prepared).
 inline double beyond_surface(const Obstacle& o, const Vec3& p) {
     switch (o.kind) {
         case ObstacleKind::box_inside: return ((p - o.center).cwiseAbs() - o.extent).maxCoeff();
         case ObstacleKind::plane: return -(p - o.center).dot(o.extent) / o.extent.norm();
         case ObstacleKind::sphere:
         case ObstacleKind::capsule: return o.radius - (p - closest_core_point(o, p)).norm();
+        case ObstacleKind::mesh: return -o.field->distance(p);
     }
     return 0.0;
 }
@@ -81,6 +104,11 @@ template <class OnContact>
             if (!(depth > 0.0)) return;
             // A centre exactly on the axis has no direction: push up, any direction will do.
             on_contact(ObstacleContact{depth, distance > 1e-12 ? Vec3(d / distance) : Vec3::UnitZ()});
+            return;
+        }
+        case ObstacleKind::mesh: {
+            MeshDistanceField::Sample sample;
+            if (o.field->sample_within(p, r, &sample)) on_contact(ObstacleContact{r - sample.distance, sample.normal});
             return;
         }
     }

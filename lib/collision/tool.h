@@ -3,6 +3,15 @@
 // axis for `length` metres (the identity orientation is a vertical tool pointing down,
 // tip lowest). Poses come from the caller (tool_mailbox.h); the tool moves continuously
 // from the previous pose to the new one over the next step.
+//
+// Two modes (docs/haptics.md):
+//  - proxy (the default): the capsule in the scene is a proxy (a god-object, Zilles and
+//    Salisbury 1995) that the bowel's contacts keep out of the tube, joined to the
+//    commanded pose by a virtual coupling (Colgate et al. 1995), a spring-damper bounded
+//    by max_force. The bowel receives what the proxy gives it; the device renders the
+//    coupling force (tool_proxy.h).
+//  - direct: the capsule is where the caller puts it, its contacts bounded together by
+//    max_force (the behaviour before the proxy).
 #pragma once
 
 #include <array>
@@ -12,6 +21,8 @@
 
 namespace enteron::collision {
 
+enum class ToolMode : int32_t { proxy = 0, direct = 1 };
+
 // The defaults of ent_tool_desc and of a JSON tool.
 struct ToolSettings {
     double radius = 0.005;           // m, > 0
@@ -20,6 +31,14 @@ struct ToolSettings {
     double grasp_margin = 0.005;     // m, >= 0: reach = radius + R + margin
     double grasp_stiffness = 200.0;  // N/m, > 0
     double grasp_damping = 2.0;      // N s/m, >= 0
+    ToolMode mode = ToolMode::proxy;
+    // The virtual coupling of the proxy to the commanded pose: 1 N/mm, within the stable
+    // range of a Touch-class device (1 to 2.3 N/mm) at 1 kHz, and a damper of 1 N s/m, twice
+    // the k T / 2 that Colgate's condition asks of a device's own damping at 1 kHz.
+    double coupling_stiffness = 1000.0;  // N/m, > 0
+    double coupling_damping = 1.0;       // N s/m, >= 0
+    double friction = -1.0;              // Coulomb coefficient of its contacts, >= 0; < 0: the scene's
+    bool passivity_limiter = false;      // Hannaford and Ryu's time-domain passivity controller
 };
 
 struct ToolPose {
@@ -37,16 +56,30 @@ struct ToolWrench {
     Vec3 torque = Vec3::Zero();  // N m, on the tool about its tip
 };
 
+// A tool's passivity observer and its counters since the tool was made (ent_tool_stats).
+struct ToolStats {
+    double largest_force_change = 0.0;  // N: the largest change of the rendered force from one step to the next
+    double energy_in = 0.0;             // J: work the tool did on the scene
+    double energy_out = 0.0;            // J: work the scene did on the tool (given back)
+    double limiter_energy = 0.0;        // J: what the passivity limiter took out (0 when it is off)
+};
+
 // What a tool reports after each step: published in the scene's snapshot, so that any
 // thread reads it without waiting for the step. A later output is one more field here.
 struct ToolOutput {
-    ToolWrench wrench;      // of the last accepted step (its last evaluation)
+    ToolWrench wrench;      // of the last accepted step: minus what the bowel received in it
     bool grasping = false;  // a grasp holds
+    bool removed = false;   // the tool was removed (ent_tool_remove)
     uint32_t contacts = 0;  // collision spheres touching the tool in that evaluation
+    // d(force)/d(tip position) at the last accepted step, row-major, N/m (velocities held).
+    std::array<double, 9> stiffness{};
+    ToolPose commanded;  // the pose the caller asked for, reached at the end of that step
+    ToolPose proxy;      // where the tool is in the scene (the commanded pose in direct mode)
+    ToolStats stats;
     uint32_t grasp_sphere = 0;  // while grasping: the collision sphere grasped, when the grasp took hold
-    // The impulse of the bowel's contacts on the tool since it was added (each accepted
-    // step's last evaluation times the step's dt): the vector sum, N s, and the sum of the
-    // magnitudes, N s (how hard for how long, whatever the direction).
+    // The impulse of the bowel's contacts on the tool since it was added (what the bowel
+    // received from the tool's contacts, not its grasp, over each accepted step): the vector
+    // sum, N s, and the sum of the magnitudes, N s (how hard for how long, whatever the direction).
     Vec3 contact_impulse = Vec3::Zero();
     double contact_impulse_magnitude = 0.0;
 };

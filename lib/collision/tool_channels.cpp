@@ -13,6 +13,12 @@ ToolMailbox* ToolChannels::mailbox(std::size_t index) {
     return index < table.size() ? table[index] : nullptr;
 }
 
+std::size_t ToolChannels::present() const {
+    std::size_t count = 0;
+    for (const ToolMailbox* mailbox : *table_.load(std::memory_order_acquire)) count += !mailbox->retired();
+    return count;
+}
+
 std::size_t ToolChannels::add() {
     // Everything that can fail is made before anything changes.
     mailboxes_.reserve(mailboxes_.size() + 1);

@@ -30,6 +30,8 @@ public:
     // no such tool).
     std::size_t size() const { return table_.load(std::memory_order_acquire)->size(); }
     ToolMailbox* mailbox(std::size_t index);
+    // Any thread: the tools added and not removed (ToolMailbox::retired).
+    std::size_t present() const;
 
     // The driving thread only. add() makes the channels of one more tool (allocates) and
     // returns its index; outputs() are the tools' outputs, by index.

@@ -37,6 +37,11 @@ public:
     // The last grasp or release posted since the last take (none if none).
     Grasp take_grasp();
 
+    // The tool was removed (the driving thread marks it; any thread asks): its commands
+    // are refused from then on.
+    void retire() { retired_.store(true, std::memory_order_release); }
+    bool retired() const { return retired_.load(std::memory_order_acquire); }
+
 private:
     static constexpr std::size_t kSlots = 4;
     static constexpr std::size_t kValues = 7;  // position x y z, orientation w x y z
@@ -49,6 +54,7 @@ private:
     std::atomic<uint64_t> tickets_{0};
     std::array<Slot, kSlots> slots_;
     std::atomic<Grasp> grasp_{Grasp::none};
+    std::atomic<bool> retired_{false};
     uint64_t taken_ = 0;  // the ticket of the last pose taken (stepping thread)
 };
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "collision/tool_shaft.h"
+#include "mechanics/bordered_system.h"
 #include "mechanics/system_matrix.h"
 
 namespace enteron::collision {
@@ -25,6 +27,8 @@ Vec4 nlerp(const Vec4& a, const Vec4& b, double t) {
 Vec3 tail_of(const ToolPose& pose, double length) {
     return pose.position + length * quaternion_z_axis(pose.orientation);
 }
+
+Mat3 outer(const Vec3& n) { return n * n.transpose(); }
 
 // The grasp: a tension-only spring-damper of rest length `rest` (the tool's radius plus
 // the bowel's: the held point sits on the tool's surface, where the contact neither pushes
@@ -56,38 +60,15 @@ GraspSpring grasp_spring(const ToolSettings& settings, double rest, const Vec3& 
     return spring;
 }
 
-// A tool's shaft at one instant, as the segment tip + s axis (s in [0, 1]) that sphere
-// centres are measured against: most spheres are far, so the test is on squared
-// distances and the square root waits for a contact.
-struct Shaft {
-    Vec3 tip;
-    Vec3 axis;
-    double inverse_axis2;  // 0 for a zero-length shaft (the tip alone)
-    double reach;          // the tool's radius plus the bowel's
-    // A box around the shaft, reach wide (and a hair more, for rounding): a centre outside
-    // it cannot touch, and most of the bowel's spheres are far from the tool.
+// The box around where a proxy may go in one solve: its shaft where it was and where the
+// device is, grown by twice the reach (it may slide half round a tube on its way).
+struct SweptBox {
     Vec3 low, high;
-
-    Shaft(const Vec3& tip_in, const Vec3& tail, double reach_in)
-        : tip(tip_in), axis(tail - tip_in), reach(reach_in) {
-        const double axis2 = axis.squaredNorm();
-        inverse_axis2 = axis2 > 0.0 ? 1.0 / axis2 : 0.0;
-        const double margin = reach * (1.0 + 1e-9);
-        low = tip.cwiseMin(tail).array() - margin;
-        high = tip.cwiseMax(tail).array() + margin;
+    SweptBox(const Vec3& from, const Vec3& to, const Vec3& shaft, double reach) {
+        low = from.cwiseMin(to).cwiseMin(from + shaft).cwiseMin(to + shaft).array() - 2.0 * reach;
+        high = from.cwiseMax(to).cwiseMax(from + shaft).cwiseMax(to + shaft).array() + 2.0 * reach;
     }
-
-    // For a centre p: s of the closest shaft point, d = p minus that point, and |d|^2;
-    // true if the sphere reaches into the tool (false, the rest unset, when p is outside
-    // the box).
-    bool touches(const Vec3& p, double* s, Vec3* d, double* distance2) const {
-        if (((p.array() < low.array()) || (p.array() > high.array())).any()) return false;
-        const Vec3 rel = p - tip;
-        *s = std::clamp(rel.dot(axis) * inverse_axis2, 0.0, 1.0);
-        *d = rel - *s * axis;
-        *distance2 = d->squaredNorm();
-        return *distance2 < reach * reach;
-    }
+    bool contains(const Vec3& p) const { return !((p.array() < low.array()) || (p.array() > high.array())).any(); }
 };
 
 }  // namespace
@@ -98,21 +79,52 @@ ToolsForce::ToolsForce(CollisionSpheres& spheres, const ContactParameters& conta
       channels_(channels),
       contact_(contact),
       tools_(memory),
-      hits_(memory),
+      contacts_(memory),
+      candidates_(memory),
+      proxy_(memory),
       log_(ContactKind::tool, kLoggedContactsPerSphere * spheres.size(), memory) {
-    hits_.reserve(spheres_.size());  // one contact per sphere and tool at most: no allocation in steps
+    candidates_.reserve(spheres_.size());
+    proxy_.reserve(spheres_.size());
     spheres_.update(initial.q.data());
 }
 
 std::size_t ToolsForce::add_tool(const ToolConfig& tool) {
     Tool t;
     t.settings = tool.settings;
+    t.contact = contact_;
+    if (t.settings.friction >= 0.0) t.contact.friction = t.settings.friction;
+    if (t.settings.mode == ToolMode::proxy)
+        t.contact.stiffness = proxy_contact_stiffness(contact_.stiffness, t.settings.max_force, spheres_.radius());
     t.current = tool.pose;
     t.target = tool.pose;
-    tools_.reserve(tools_.size() + 1);  // nothing changes if an allocation fails
+    t.proxy = t.step_proxy = tool.pose.position;
+    // Nothing changes if an allocation fails: every reservation comes first. Each tool may
+    // touch every sphere and hold one point.
+    tools_.reserve(tools_.size() + 1);
+    contacts_.reserve((tools_.size() + 1) * (spheres_.size() + 1));
     channels_.add();
     tools_.push_back(t);
     return tools_.size() - 1;
+}
+
+void ToolsForce::remove_tool(std::size_t index) {
+    Tool& tool = tools_[index];
+    tool.removed = true;
+    tool.grasping = false;
+    tool.contact_count = tool.sphere_contacts = tool.contacts = 0;
+    tool.wrench = ToolWrench{};
+    tool.stiffness = tool.accepted_stiffness = Mat3::Zero();
+    ToolOutput& output = channels_.outputs()[index];
+    output = ToolOutput{};
+    output.removed = true;
+    channels_.mailbox(index)->retire();
+}
+
+
+std::size_t ToolsForce::border_bodies() const {
+    std::size_t bodies = 0;
+    for (const Tool& tool : tools_) bodies += !tool.removed && tool.settings.mode == ToolMode::proxy;
+    return bodies;
 }
 
 double ToolsForce::fraction_of_step(double t) const {
@@ -138,97 +150,305 @@ ToolsForce::Segment ToolsForce::segment_at(const Tool& tool, double t) const {
     return segment;
 }
 
+void ToolsForce::apply(const Contact& contact, const Vec3& normal, double axial, double transverse, double scale,
+                       const Vec3& stiffness_times_velocity, double* force, const mechanics::Linearization* lin) {
+    add_point_force(contact.weights, contact.force, force);
+    if (lin != nullptr) {
+        add_axial_block(*lin->system, contact.weights, normal, axial, transverse, scale);
+        add_point_force(contact.weights, stiffness_times_velocity, lin->stiffness_times_velocity);
+    }
+    contacts_.push_back(contact);
+}
+
+const ToolsForce::Contact& ToolsForce::apply_sphere(std::size_t sphere, double depth, const ContactForce& cf,
+                                                     const Vec3& normal, double scale, const Vec3& position,
+                                                     const Vec3& velocity,
+                                                     const Vec3& arm, double* force,
+                                                     const mechanics::Linearization* lin) {
+    const Mat3 nn = outer(normal);
+    Contact contact;
+    contact.sphere = static_cast<uint32_t>(sphere);
+    contact.depth = depth;
+    contact.normal = normal;
+    contact.weights = spheres_[sphere].weights;
+    contact.force = scale * cf.force;
+    contact.stiffness = (scale * cf.stiffness) * nn;
+    contact.damping = scale * (cf.damping * nn + cf.friction_damping * (Mat3::Identity() - nn));
+    contact.position = position;
+    contact.velocity = velocity;
+    contact.arm = arm;
+    // The implicit system's block, scaled with the force.
+    const ContactLinearization l = contact_linearization(cf, lin != nullptr ? lin->h : 0.0);
+    apply(contact, normal, l.axial, l.transverse, scale, scale * cf.stiffness * velocity.dot(normal) * normal, force,
+          lin);
+    return contacts_.back();
+}
+
 void ToolsForce::evaluate(const mechanics::State& state, double* force, const mechanics::Linearization* lin) {
     spheres_.update(state.q.data());
     last_ = {};
-    log_.clear();
-    const double r = spheres_.radius();
+    contacts_.clear();
+    border_ = lin != nullptr ? lin->border : nullptr;
     // The implicit step solves for the end of the substep: meet the tool where it is then.
     const double t = state.time + (lin != nullptr ? lin->h : 0.0);
+    for (Tool& tool : tools_) {
+        tool.first_contact = contacts_.size();
+        tool.contact_count = 0;
+        tool.sphere_contacts = 0;
+        tool.has_body = false;
+        if (tool.removed) continue;
+        if (tool.settings.mode == ToolMode::proxy)
+            evaluate_proxy(tool, state, t, force, lin);
+        else
+            evaluate_direct(tool, state, t, force, lin);
+        tool.contact_count = contacts_.size() - tool.first_contact;
+        last_.count += tool.sphere_contacts;
+    }
+}
+
+void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, double t, double* force,
+                                 const mechanics::Linearization* lin) {
+    const double r = spheres_.radius();
+    const Segment segment = segment_at(tool, t);
+    const Shaft shaft(segment.tip, segment.tail, tool.settings.radius + r);
+    tool.evaluated_proxy = segment.tip;
+    tool.evaluated_proxy_velocity = segment.tip_velocity;
+    tool.evaluated_time = t;
+    // The contacts, first unscaled: the bound scales them all by one factor, set by the sum
+    // of their magnitudes (which bounds the net force and, unlike the net force, does not
+    // jump when contacts on opposite sides start to cancel).
+    hits_.clear();
+    Vec3 total = Vec3::Zero();     // on the bowel
+    double total_magnitude = 0.0;  // sum of the magnitudes of its parts
+    // Their change as the tool moves by dx (d moves by -dx), velocities held: for the stiffness.
+    Mat3 total_rate = Mat3::Zero();
+    Eigen::RowVector3d magnitude_rate = Eigen::RowVector3d::Zero();
+    for (std::size_t i = 0; i < spheres_.size(); ++i) {
+        const Sphere& sphere = spheres_[i];
+        double s, dist2;
+        Vec3 d;
+        if (!shaft.touches(sphere.center, &s, &d, &dist2)) continue;
+        const double dist = std::sqrt(dist2);
+        Hit hit;
+        hit.sphere = i;
+        const double depth = hit.depth = shaft.reach - dist;
+        // A centre on the tool's axis: push it up, any direction will do.
+        hit.normal = dist > 1e-12 ? Vec3(d / dist) : Vec3::UnitZ();
+        hit.velocity = spline::evaluate(state.v.data(), sphere.weights);
+        const Vec3 tool_v = (1.0 - s) * segment.tip_velocity + s * segment.tail_velocity;
+        hit.force = contact_force(tool.contact, depth, hit.normal, hit.velocity - tool_v);
+        hit.arm = s * shaft.axis + tool.settings.radius * hit.normal;
+        total += hit.force.force;
+        const double magnitude = hit.force.force.norm();
+        total_magnitude += magnitude;
+        const Mat3 jacobian = dist > 1e-12 ? contact_jacobian(tool.contact, depth, d, hit.velocity - tool_v).position
+                                           : Mat3(-tool.contact.stiffness * outer(hit.normal));
+        total_rate -= jacobian;
+        if (magnitude > 0.0) magnitude_rate -= (hit.force.force / magnitude).transpose() * jacobian;
+        hits_.push_back(hit);
+        last_.max_penetration = std::max(last_.max_penetration, depth);
+    }
+    tool.sphere_contacts = static_cast<uint32_t>(hits_.size());
+
+    Vec3 grasp = Vec3::Zero();  // on the bowel
+    GraspSpring spring;
+    Vec3 grasp_v = Vec3::Zero();
+    const bool holding = tool.grasping && !tool.slipped;
+    if (holding) {
+        const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
+        grasp_v = spline::evaluate(state.v.data(), tool.grasp_point);
+        spring = grasp_spring(tool.settings, tool.settings.radius + r, segment.tip, segment.tip_velocity, p, grasp_v);
+        grasp = spring.force;
+        if (grasp.norm() > tool.settings.max_force) {
+            tool.slipped = true;  // released when the step is accepted
+            grasp = Vec3::Zero();
+        }
+        total += grasp;
+        const double magnitude = grasp.norm();
+        total_magnitude += magnitude;
+        if (spring.taut && !tool.slipped) {
+            const Mat3 h = spring.axial_stiffness * outer(spring.direction) + spring.isotropic_stiffness * Mat3::Identity();
+            total_rate += h;
+            if (magnitude > 0.0) magnitude_rate += (grasp / magnitude).transpose() * h;
+        }
+    }
+
+    // Action = reaction within the bound: every force of this tool shares one scale.
+    const double max_force = tool.settings.max_force;
+    const bool bounded = total_magnitude > max_force;
+    const double scale = bounded ? max_force / total_magnitude : 1.0;
+    // The force on the tool is -scale total, the scale changing with the magnitudes.
+    tool.stiffness = bounded ? Mat3(-scale * (total_rate - total * magnitude_rate / total_magnitude)) : Mat3(-total_rate);
+
+    for (const Hit& hit : hits_)
+        apply_sphere(hit.sphere, hit.depth, hit.force, hit.normal, scale, spheres_[hit.sphere].center,
+                     hit.velocity, hit.arm, force, lin);
+    // A slack grasp spring pulls nothing.
+    if (holding && !tool.slipped && spring.taut) {
+        Contact contact;
+        contact.weights = tool.grasp_point;
+        contact.force = scale * grasp;
+        contact.stiffness =
+            scale * (spring.axial_stiffness * outer(spring.direction) + spring.isotropic_stiffness * Mat3::Identity());
+        contact.damping = (scale * tool.settings.grasp_damping) * Mat3::Identity();
+        contact.position = spline::evaluate(state.q.data(), tool.grasp_point);
+        contact.velocity = grasp_v;
+        contact.arm = Vec3::Zero();
+        const double h = lin != nullptr ? lin->h : 0.0;
+        // h C + h^2 H with C = c I and H = a n n^T + b I (grasp_spring).
+        apply(contact, spring.direction, h * h * spring.axial_stiffness,
+              h * tool.settings.grasp_damping + h * h * spring.isotropic_stiffness, scale,
+              scale * spring.stiffness_times_velocity, force, lin);
+    }
+}
+
+void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, double t, double* force,
+                                const mechanics::Linearization* lin) {
+    const double r = spheres_.radius();
+    const Segment segment = segment_at(tool, t);
+    ProxyProblem problem;
+    problem.shaft = segment.tail - segment.tip;
+    problem.shaft_velocity = segment.tail_velocity - segment.tip_velocity;
+    problem.reach = tool.settings.radius + r;
+    problem.contact = tool.contact;
+    problem.coupling_stiffness = tool.settings.coupling_stiffness;
+    problem.coupling_damping = tool.settings.coupling_damping;
+    problem.max_force = tool.settings.max_force;
+    problem.start = tool.proxy;
+    problem.start_velocity = tool.proxy_velocity;
+    problem.target = segment.tip;
+    problem.target_velocity = segment.tip_velocity;
+    problem.dt = std::max(0.0, t - tool.proxy_time);
+    // The spheres the proxy may meet on its way from where it was to the device.
+    candidates_.clear();
+    const SweptBox box(tool.proxy, segment.tip, problem.shaft, problem.reach);
+    for (std::size_t i = 0; i < spheres_.size(); ++i) {
+        const Sphere& sphere = spheres_[i];
+        if (!box.contains(sphere.center)) continue;
+        candidates_.push_back({i, sphere.center, spline::evaluate(state.v.data(), sphere.weights)});
+    }
+    const bool holding = tool.grasping && !tool.slipped;
+    if (holding) {
+        problem.grasp.holding = true;
+        problem.grasp.point = spline::evaluate(state.q.data(), tool.grasp_point);
+        problem.grasp.velocity = spline::evaluate(state.v.data(), tool.grasp_point);
+        problem.grasp.rest = problem.reach;
+        problem.grasp.stiffness = tool.settings.grasp_stiffness;
+        problem.grasp.damping = tool.settings.grasp_damping;
+    }
+    ProxyResult result = proxy_.solve(problem, candidates_);
+    // Holding would take more than max_force: the grasp slips (released when the step is
+    // accepted) and the proxy rests without it.
+    if (holding && result.grasp_taut && result.saturated) {
+        tool.slipped = true;
+        problem.grasp.holding = false;
+        result = proxy_.solve(problem, candidates_);
+    }
+    tool.evaluated_proxy = result.position;
+    tool.evaluated_proxy_velocity = result.velocity;
+    tool.evaluated_time = t;
+    tool.stiffness = result.device_stiffness;
+
+    // What the proxy gives the bowel: its contacts' forces, which balance the coupling force.
+    // Explicit methods take them as they are (scaled to the bound should the balance be a
+    // rounding off); the implicit step lets the proxy move with the bowel (its border body).
+    Vec3 total = result.grasp_force;
+    for (const ProxyContact& c : proxy_.contacts()) total += c.force.force;
+    const double magnitude = total.norm();
+    const double scale = lin == nullptr && magnitude > tool.settings.max_force ? tool.settings.max_force / magnitude : 1.0;
+    const double h = lin != nullptr ? lin->h : 0.0;
+    Mat3 block = Mat3::Zero();      // h sum E_i of the border body
+    Vec3 predicted = Vec3::Zero();  // sum of the forces less h K v: the g-hats of the border
+    for (const ProxyContact& c : proxy_.contacts()) {
+        const ProxyCandidate& candidate = candidates_[c.candidate];
+        const Contact& contact = apply_sphere(candidate.sphere, c.depth, c.force, c.normal, scale, candidate.center, candidate.velocity,
+                                              c.s * problem.shaft + tool.settings.radius * c.normal, force, lin);
+        const ContactLinearization l = contact_linearization(c.force, h);
+        block += l.axial * outer(c.normal) + l.transverse * Mat3::Identity();
+        predicted += contact.force - h * (contact.stiffness * contact.velocity);
+        last_.max_penetration = std::max(last_.max_penetration, c.depth);
+    }
+    tool.sphere_contacts = static_cast<uint32_t>(proxy_.contacts().size());
+    if (problem.grasp.holding && result.grasp_taut) {
+        const Vec3 gap = result.position - problem.grasp.point;
+        const double length = gap.norm();
+        const Vec3 n = gap / length;
+        const double a = tool.settings.grasp_stiffness * problem.grasp.rest / length;
+        const double b = tool.settings.grasp_stiffness * (1.0 - problem.grasp.rest / length);
+        Contact contact;
+        contact.weights = tool.grasp_point;
+        contact.force = scale * result.grasp_force;
+        contact.stiffness = scale * (a * outer(n) + b * Mat3::Identity());
+        contact.damping = (scale * tool.settings.grasp_damping) * Mat3::Identity();
+        contact.position = problem.grasp.point;
+        contact.velocity = problem.grasp.velocity;
+        contact.arm = Vec3::Zero();
+        const double axial = h * h * a, transverse = h * tool.settings.grasp_damping + h * h * b;
+        apply(contact, n, axial, transverse, scale, contact.stiffness * contact.velocity, force, lin);
+        block += axial * outer(n) + transverse * Mat3::Identity();
+        predicted += contact.force - h * (contact.stiffness * contact.velocity);
+    }
+    if (lin != nullptr && lin->border != nullptr) {
+        // The proxy's balance at the end of the substep (bordered_system.h, docs/haptics.md):
+        // h sum E_i e - B^T dv = h (F_c - sum g-hat_i), B = h sum W_i^T E_i.
+        tool.body = lin->border->add_body(block, h * (result.coupling_force - predicted));
+        tool.has_body = true;
+        for (std::size_t k = tool.first_contact; k < contacts_.size(); ++k) {
+            const Contact& contact = contacts_[k];
+            lin->border->add_coupling(tool.body, contact.weights, h * (h * contact.stiffness + contact.damping));
+        }
+    }
+}
+
+Vec3 ToolsForce::last_force(std::size_t index) const {
+    const Tool& tool = tools_[index];
+    Vec3 total = Vec3::Zero();
+    for (std::size_t k = tool.first_contact; k < tool.first_contact + tool.contact_count; ++k)
+        total += contacts_[k].force;
+    return -total;
+}
+
+void ToolsForce::evaluation_used(double duration, const mechanics::State* after) {
+    log_.clear();
     for (std::size_t index = 0; index < tools_.size(); ++index) {
         Tool& tool = tools_[index];
-        const Segment segment = segment_at(tool, t);
-        const Shaft shaft(segment.tip, segment.tail, tool.settings.radius + r);
-        hits_.clear();
-        tool.attempt_contacts = 0;
-        Vec3 total = Vec3::Zero();    // on the bowel
-        double total_magnitude = 0.0;  // sum of the magnitudes of its parts
-        for (std::size_t i = 0; i < spheres_.size(); ++i) {
-            const Sphere& sphere = spheres_[i];
-            double s, dist2;
-            Vec3 d;
-            if (!shaft.touches(sphere.center, &s, &d, &dist2)) continue;
-            const double dist = std::sqrt(dist2);
-            Hit hit;
-            hit.sphere = i;
-            hit.depth = shaft.reach - dist;
-            // A centre on the tool's axis: push it up, any direction will do.
-            hit.normal = dist > 1e-12 ? Vec3(d / dist) : Vec3::UnitZ();
-            const Vec3 v = spline::evaluate(state.v.data(), sphere.weights);
-            const Vec3 tool_v = (1.0 - s) * segment.tip_velocity + s * segment.tail_velocity;
-            hit.force = contact_force(contact_, hit.depth, hit.normal, v - tool_v);
-            hit.point = segment.tip + s * shaft.axis + tool.settings.radius * hit.normal;
-            total += hit.force.force;
-            total_magnitude += hit.force.force.norm();
-            hits_.push_back(hit);
-            tool.attempt_contacts += 1;
-            last_.count += 1;
-            last_.max_penetration = std::max(last_.max_penetration, hit.depth);
-        }
-
-        Vec3 grasp = Vec3::Zero();  // on the bowel
-        GraspSpring spring;
-        const bool holding = tool.grasping && !tool.slipped;
-        if (holding) {
-            const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
-            const Vec3 grasp_v = spline::evaluate(state.v.data(), tool.grasp_point);
-            spring = grasp_spring(tool.settings, tool.settings.radius + r, segment.tip, segment.tip_velocity, p, grasp_v);
-            grasp = spring.force;
-            if (grasp.norm() > tool.settings.max_force) {
-                tool.slipped = true;  // released when the step is accepted
-                grasp = Vec3::Zero();
+        if (tool.removed) continue;
+        // The proxy's motion over the substep, as the implicit step solved it with the bowel.
+        const Vec3 proxy_move =
+            after != nullptr && tool.has_body ? Vec3(duration * border_->solution(tool.body)) : Vec3::Zero();
+        Vec3 received = Vec3::Zero(), torque = Vec3::Zero(), touched = Vec3::Zero();
+        // The tip the arms start from, where this evaluation leaves it.
+        const Vec3 tip = tool.evaluated_proxy + proxy_move;
+        for (std::size_t k = tool.first_contact; k < tool.first_contact + tool.contact_count; ++k) {
+            const Contact& contact = contacts_[k];
+            Vec3 force = contact.force;
+            if (after != nullptr) {
+                // The linearised force at the end of the substep: F - H (dq - dp) - C (dv - dp / h).
+                const Vec3 v = spline::evaluate(after->v.data(), contact.weights);
+                const Vec3 moved = spline::evaluate(after->q.data(), contact.weights) - contact.position - proxy_move;
+                const Vec3 sped = v - contact.velocity - proxy_move / duration;
+                force -= contact.stiffness * moved + contact.damping * sped;
             }
-            total += grasp;
-            total_magnitude += grasp.norm();
+            received += force;
+            torque += contact.arm.cross(-force);
+            if (contact.sphere == Contact::kGrasp) continue;
+            touched += force;
+            log_.add(contact.sphere, static_cast<uint32_t>(index), contact.depth, tip + contact.arm, contact.normal,
+                     force);
         }
-
-        // Action = reaction within the bound: every force of this tool shares one scale, set
-        // by the sum of their magnitudes (which bounds the net force and, unlike the net
-        // force, does not jump when contacts on opposite sides start to cancel).
-        const double scale =
-            total_magnitude > tool.settings.max_force ? tool.settings.max_force / total_magnitude : 1.0;
-        ToolWrench wrench;
-        wrench.force = -scale * total;
-        Vec3 contact_force = Vec3::Zero();  // of the contacts on the bowel
-        for (const Hit& hit : hits_) {
-            const Sphere& sphere = spheres_[hit.sphere];
-            const Vec3 f = scale * hit.force.force;
-            add_point_force(sphere.weights, f, force);
-            wrench.torque += (hit.point - segment.tip).cross(-f);
-            contact_force += f;
-            log_.add(static_cast<uint32_t>(hit.sphere), static_cast<uint32_t>(index), hit.depth, hit.point, hit.normal,
-                     f);
-            if (lin == nullptr) continue;
-            const ContactForce& cf = hit.force;
-            // Scaled with the force.
-            const ContactLinearization l = contact_linearization(cf, lin->h);
-            add_axial_block(*lin->system, sphere.weights, hit.normal, l.axial, l.transverse, scale);
-            const Vec3 v = spline::evaluate(state.v.data(), sphere.weights);
-            add_point_force(sphere.weights, scale * cf.stiffness * v.dot(hit.normal) * hit.normal,
-                            lin->stiffness_times_velocity);
-        }
-        if (holding && !tool.slipped) {
-            add_point_force(tool.grasp_point, scale * grasp, force);
-            if (lin != nullptr && spring.taut) {
-                const double h = lin->h;
-                // h C + h^2 H with C = c I and H = a n n^T + b I (grasp_spring).
-                add_axial_block(*lin->system, tool.grasp_point, spring.direction, h * h * spring.axial_stiffness,
-                                h * tool.settings.grasp_damping + h * h * spring.isotropic_stiffness, scale);
-                add_point_force(tool.grasp_point, scale * spring.stiffness_times_velocity, lin->stiffness_times_velocity);
-            }
-        }
-        tool.attempt_wrench = wrench;
-        tool.attempt_contact_force = -contact_force;
+        tool.attempt_contact_impulse -= duration * touched;
+        tool.attempt_contact_impulse_magnitude += duration * touched.norm();
+        tool.impulse += duration * received;
+        tool.angular_impulse += duration * torque;
+        tool.duration += duration;
+        tool.used_stiffness = tool.stiffness;
+        tool.used_contacts = tool.sphere_contacts;
+        // The proxy is where this evaluation put it (and moved with the bowel since).
+        const Vec3 before = tool.proxy;
+        tool.proxy = tool.evaluated_proxy + proxy_move;
+        tool.proxy_velocity = tool.evaluated_proxy_velocity + (duration > 0.0 ? Vec3(proxy_move / duration) : Vec3::Zero());
+        tool.proxy_time = tool.evaluated_time;
+        tool.proxy_travel += (tool.proxy - before).norm();
     }
 }
 
@@ -237,8 +457,13 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
     const double r = spheres_.radius();
     double energy = 0.0;
     for (const Tool& tool : tools_) {
+        if (tool.removed) continue;
+        // The capsule the bowel meets: the proxy where it rests now (with the commanded
+        // orientation), or the commanded pose itself.
         const Segment segment = segment_at(tool, state.time);
-        const Shaft shaft(segment.tip, segment.tail, tool.settings.radius + r);
+        const bool proxy = tool.settings.mode == ToolMode::proxy;
+        const Vec3 tip = proxy ? tool.proxy : segment.tip;
+        const Shaft shaft(tip, tip + (segment.tail - segment.tip), tool.settings.radius + r);
         double stored = 0.0, total_magnitude = 0.0;
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
             double s, dist2;
@@ -246,17 +471,19 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
             if (!shaft.touches(spheres_[i].center, &s, &d, &dist2)) continue;
             const double depth = shaft.reach - std::sqrt(dist2);
             if (!(depth > 0.0)) continue;
-            stored += 0.5 * contact_.stiffness * depth * depth;
-            total_magnitude += contact_.stiffness * depth;
+            stored += 0.5 * tool.contact.stiffness * depth * depth;
+            total_magnitude += tool.contact.stiffness * depth;
         }
-        // The spring energy as far as the bound lets the contacts push (evaluate's scale).
-        energy += total_magnitude > tool.settings.max_force ? stored * tool.settings.max_force / total_magnitude
-                                                            : stored;
+        // The spring energy as far as the bound lets the contacts push (evaluate's scale); the
+        // proxy's contacts never push harder than max_force in all.
+        energy += !proxy && total_magnitude > tool.settings.max_force
+                      ? stored * tool.settings.max_force / total_magnitude
+                      : stored;
         // A grasp that slipped in this step holds no spring at its end: the guard must not
         // count the energy of the spring it let go of, however far the jump stretched it.
         if (tool.grasping && !tool.slipped) {
             const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
-            const double stretch = std::max(0.0, (segment.tip - p).norm() - (tool.settings.radius + r));
+            const double stretch = std::max(0.0, (tip - p).norm() - (tool.settings.radius + r));
             energy += 0.5 * tool.settings.grasp_stiffness * stretch * stretch;
         }
     }
@@ -266,10 +493,12 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
 void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
     spheres_.update(state.q.data());
     const double reach = tool.settings.radius + spheres_.radius() + tool.settings.grasp_margin;
+    // Where the tool rests: the proxy's tip (the commanded tip in direct mode).
+    const Vec3 tip = tool.settings.mode == ToolMode::proxy ? tool.proxy : tool.current.position;
     double best = reach * reach;
     bool found = false;
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
-        const double d2 = (spheres_[i].center - tool.current.position).squaredNorm();
+        const double d2 = (spheres_[i].center - tip).squaredNorm();
         if (d2 <= best) {
             best = d2;
             tool.grasp_point = spheres_[i].weights;
@@ -281,16 +510,19 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
 }
 
 void ToolsForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
-    double grasp = 0.0;
-    for (const Tool& tool : tools_) grasp += tool.settings.grasp_stiffness;
-    spheres_.add_weight_products(contact_.stiffness * double(tools_.size()) + grasp, bound);
+    double stiffness = 0.0;
+    for (const Tool& tool : tools_)
+        if (!tool.removed) stiffness += tool.contact.stiffness + tool.settings.grasp_stiffness;
+    spheres_.add_weight_products(stiffness, bound);
 }
 
 void ToolsForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
-    double grasp = 0.0;
-    for (const Tool& tool : tools_) grasp += tool.settings.grasp_damping;
-    const double friction = friction_damping_bound(contact_, spheres_.radius());
-    spheres_.add_weight_products((contact_.damping + friction) * double(tools_.size()) + grasp, bound);
+    double damping = 0.0;
+    for (const Tool& tool : tools_)
+        if (!tool.removed)
+            damping += tool.contact.damping + friction_damping_bound(tool.contact, spheres_.radius()) +
+                       tool.settings.grasp_damping;
+    spheres_.add_weight_products(damping, bound);
 }
 
 void ToolsForce::add_contacts(mechanics::ContactSummary& summary) const {
@@ -302,12 +534,19 @@ double ToolsForce::external_work_bound() const {
     if (!(step_dt_ > 0.0)) return 0.0;
     double work = 0.0;
     for (const Tool& tool : tools_) {
+        if (tool.removed) continue;
         const double tip_move = (tool.target.position - tool.current.position).norm();
         const double tail_move =
             (tail_of(tool.target, tool.settings.length) - tail_of(tool.current, tool.settings.length)).norm();
         // Every point of the shaft moves at most as far as its ends (twice that for the
-        // arc of a turn and the contact damping's share).
-        work += 2.0 * tool.settings.max_force * std::max(tip_move, tail_move);
+        // arc of a turn and the contact damping's share). A proxy goes its own way: the
+        // length of its tip's path, and how far the turn of the shaft moved its back end.
+        const double turn = (tail_of(tool.target, tool.settings.length) - tool.target.position -
+                             (tail_of(tool.current, tool.settings.length) - tool.current.position))
+                                .norm();
+        const double move = tool.settings.mode == ToolMode::proxy ? tool.proxy_travel + turn
+                                                                   : std::max(tip_move, tail_move);
+        work += 2.0 * tool.settings.max_force * move;
     }
     return work;
 }
@@ -316,6 +555,7 @@ bool ToolsForce::begin_step(const mechanics::State& state, double dt) {
     bool grasp_changed = false;
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         Tool& tool = tools_[i];
+        if (tool.removed) continue;
         ToolMailbox& mailbox = *channels_.mailbox(i);
         mailbox.take_pose(tool.target);
         switch (mailbox.take_grasp()) {
@@ -323,6 +563,9 @@ bool ToolsForce::begin_step(const mechanics::State& state, double dt) {
             case ToolMailbox::Grasp::grasp: grasp(tool, state); grasp_changed = true; break;
             case ToolMailbox::Grasp::release: tool.grasping = false; grasp_changed = true; break;
         }
+        tool.step_proxy = tool.proxy;
+        tool.step_proxy_velocity = tool.proxy_velocity;
+        tool.step_proxy_time = tool.proxy_time;
     }
     step_start_ = state.time;
     step_dt_ = dt;
@@ -330,36 +573,62 @@ bool ToolsForce::begin_step(const mechanics::State& state, double dt) {
 }
 
 void ToolsForce::begin_attempt() {
-    for (Tool& tool : tools_) tool.slipped = false;
+    for (Tool& tool : tools_) {
+        tool.slipped = false;
+        tool.proxy = tool.step_proxy;
+        tool.proxy_velocity = tool.step_proxy_velocity;
+        tool.proxy_time = tool.step_proxy_time;
+        tool.proxy_travel = 0.0;
+        tool.impulse = tool.angular_impulse = tool.attempt_contact_impulse = Vec3::Zero();
+        tool.duration = tool.attempt_contact_impulse_magnitude = 0.0;
+    }
 }
 
 void ToolsForce::end_step(bool accepted) {
     std::pmr::vector<ToolOutput>& outputs = channels_.outputs();
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         Tool& tool = tools_[i];
+        if (tool.removed) continue;
         if (accepted) {
             if (tool.slipped) tool.grasping = false;
-            tool.wrench = tool.attempt_wrench;
-            tool.contacts = tool.attempt_contacts;
+            // Minus what the bowel received over the step, then the port's passivity.
+            ToolWrench received;
+            if (tool.duration > 0.0) {
+                received.force = -tool.impulse / tool.duration;
+                received.torque = tool.angular_impulse / tool.duration;
+            }
+            const Vec3 displacement = tool.target.position - tool.current.position;
+            const Vec3 rotation = rotation_between(tool.current.orientation, tool.target.orientation);
+            tool.wrench = tool.observer.observe(received, displacement, rotation, tool.settings.max_force,
+                                                tool.settings.passivity_limiter);
+            tool.accepted_stiffness = tool.used_stiffness;
+            tool.contacts = tool.used_contacts;
             tool.current = tool.target;
-            tool.contact_impulse += step_dt_ * tool.attempt_contact_force;
-            tool.contact_impulse_magnitude += step_dt_ * tool.attempt_contact_force.norm();
+            tool.contact_impulse += tool.attempt_contact_impulse;
+            tool.contact_impulse_magnitude += tool.attempt_contact_impulse_magnitude;
+        } else {
+            tool.proxy = tool.step_proxy;
+            tool.proxy_velocity = tool.step_proxy_velocity;
+            tool.proxy_time = tool.step_proxy_time;
         }
         tool.slipped = false;
-        outputs[i] = output_of(tool);
+        write_output(tool, outputs[i]);
     }
     step_dt_ = 0.0;
 }
 
-ToolOutput ToolsForce::output_of(const Tool& tool) {
-    ToolOutput output;
+void ToolsForce::write_output(const Tool& tool, ToolOutput& output) {
     output.wrench = tool.wrench;
     output.grasping = tool.grasping;
     output.contacts = tool.contacts;
+    Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(output.stiffness.data()) = tool.accepted_stiffness;
+    output.commanded = tool.current;
+    output.proxy.position = tool.proxy;
+    output.proxy.orientation = tool.current.orientation;
+    output.stats = tool.observer.stats();
     output.grasp_sphere = tool.grasp_sphere;
     output.contact_impulse = tool.contact_impulse;
     output.contact_impulse_magnitude = tool.contact_impulse_magnitude;
-    return output;
 }
 
 namespace {
@@ -378,21 +647,33 @@ ToolPose restore_pose(StateReader& in, const char* what) {
     return pose;
 }
 
+void save_mat3(StateWriter& out, const Mat3& m) { out.f64s(m.data(), 9); }
+
 }  // namespace
 
+// Between steps a tool's state is its poses, grasp, proxy (where the last evaluation used
+// left it), accepted outputs, passivity observer and impulses; the rest is rebuilt by the
+// next step (the attempt's sums, the evaluation's contacts).
 void ToolsForce::save_state(StateWriter& out) const {
-    out.begin_section("tools", 1);
+    out.begin_section("tools", 2);
     out.u32(static_cast<uint32_t>(tools_.size()));
     for (const Tool& tool : tools_) {
+        out.u8(tool.removed ? 1 : 0);
         save_pose(out, tool.current);
         save_pose(out, tool.target);
         out.u8(tool.grasping ? 1 : 0);
         out.u32(static_cast<uint32_t>(tool.grasp_point.first));
         out.f64s(tool.grasp_point.w.data(), 4);
         out.u32(tool.grasp_sphere);
+        out.f64s(tool.proxy.data(), 3);
+        out.f64s(tool.proxy_velocity.data(), 3);
+        out.f64(tool.proxy_time);
+        save_mat3(out, tool.stiffness);
         out.f64s(tool.wrench.force.data(), 3);
         out.f64s(tool.wrench.torque.data(), 3);
+        save_mat3(out, tool.accepted_stiffness);
         out.u32(tool.contacts);
+        tool.observer.save_state(out);
         out.f64s(tool.contact_impulse.data(), 3);
         out.f64(tool.contact_impulse_magnitude);
     }
@@ -403,30 +684,46 @@ void ToolsForce::save_state(StateWriter& out) const {
 }
 
 void ToolsForce::restore_state(StateReader& in) {
-    in.begin_section("tools", 1);
+    // Version 1 (before the proxy) cannot give a proxy's state: refused as too old.
+    if (in.begin_section("tools", 2) < 2) in.fail("saved before tools had proxies (version 1); save it again");
     if (in.u32("tools") != tools_.size()) in.fail("saved with another number of tools");
-    for (Tool& tool : tools_) {
+    for (std::size_t i = 0; i < tools_.size(); ++i) {
+        Tool& tool = tools_[i];
         Tool saved = tool;
+        if (in.flag("tool removed") != tool.removed)
+            in.fail("tool " + std::to_string(i) + (tool.removed ? " was removed from this scene but not from the saved one"
+                                                                 : " was removed from the saved scene but not from this one"));
         saved.current = restore_pose(in, "tool pose");
         saved.target = restore_pose(in, "tool target pose");
         saved.grasping = in.flag("grasping");
         saved.grasp_point.first = in.index("first control point grasped", spheres_.control_points() - 3);
         in.f64s("grasp weights", 4, saved.grasp_point.w.data());
         saved.grasp_sphere = in.index("sphere grasped", spheres_.size());
+        in.f64s("proxy position", 3, saved.proxy.data());
+        in.f64s("proxy velocity", 3, saved.proxy_velocity.data());
+        saved.proxy_time = in.f64("proxy time");
+        in.f64s("tool stiffness", 9, saved.stiffness.data());
         in.f64s("tool force", 3, saved.wrench.force.data());
         in.f64s("tool torque", 3, saved.wrench.torque.data());
+        in.f64s("published tool stiffness", 9, saved.accepted_stiffness.data());
         saved.contacts = in.count("tool contacts", spheres_.size());
+        PassivityObserver::restore_state(in, saved.observer);
         in.f64s("contact impulse", 3, saved.contact_impulse.data());
         saved.contact_impulse_magnitude = in.f64("contact impulse magnitude");
+        saved.step_proxy = saved.proxy;
+        saved.step_proxy_velocity = saved.proxy_velocity;
+        saved.step_proxy_time = saved.proxy_time;
+        saved.slipped = false;
         if (!in.checking()) tool = saved;
     }
-    const uint32_t contacts = in.u32("contacts");
+    const uint32_t contacts = in.count("contacts", spheres_.size() * (tools_.size() + 1));
     const double max_penetration = in.f64("deepest contact");
     log_.restore_state(in, spheres_.size(), tools_.size());
     in.end_section();
     if (in.checking()) return;
     last_ = {contacts, max_penetration};
-    for (std::size_t i = 0; i < tools_.size(); ++i) channels_.outputs()[i] = output_of(tools_[i]);
+    for (std::size_t i = 0; i < tools_.size(); ++i)
+        if (!tools_[i].removed) write_output(tools_[i], channels_.outputs()[i]);
 }
 
 }  // namespace enteron::collision

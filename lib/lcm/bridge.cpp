@@ -34,10 +34,6 @@ void copy_wxyz(const Eigen::Quaterniond& from, double to[4]) {
     to[0] = from.w(), to[1] = from.x(), to[2] = from.y(), to[3] = from.z();
 }
 
-// dF/dx of a tool's force with respect to its tip position, scene frame. Zero until
-// libenteron publishes it: ent_tool_stiffness (issue 18) fills it here, the one place.
-Eigen::Matrix3d tool_stiffness(const ent_scene* /*scene*/, int32_t /*tool*/) { return Eigen::Matrix3d::Zero(); }
-
 }  // namespace
 
 Bridge::Bridge(BridgeSettings settings)
@@ -205,8 +201,13 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
     const int32_t grasping = read ? output.grasping : 0;
     const Eigen::Vector3d scene_force(output.force_N[0], output.force_N[1], output.force_N[2]);
     const Eigen::Vector3d scene_torque(output.torque_Nm[0], output.torque_Nm[1], output.torque_Nm[2]);
+    // dF/dx of that force with respect to the tip (ent_tool_stiffness), scene frame, from
+    // the same snapshot.
+    const Eigen::Matrix3d scene_stiffness =
+        read ? Eigen::Matrix3d(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(output.stiffness_N_per_m))
+             : Eigen::Matrix3d::Zero();
     ToolSafety& safety = tool.safety;
-    safety.render(scene_force, scene_torque, tool_stiffness(scene_, id), step_ok && read);
+    safety.render(scene_force, scene_torque, scene_stiffness, step_ok && read);
 
     enteron_tool_feedback_t& feedback = tool.feedback;
     feedback.utime = utime;

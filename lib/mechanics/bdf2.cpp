@@ -91,6 +91,8 @@ bool Bdf2::step(Dynamics& dynamics, State& state, double h) {
     history_.h = h;
     history_.valid = true;
     state.time += h;
+    // The tools report the linearised force at the substep's end over the substep.
+    dynamics.evaluation_used(h, &state);
     return true;
 }
 

@@ -32,6 +32,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       mass_factor_(memory),
       clamped_mass_factor_(memory),
       constant_system_(memory),
+      border_(memory),
       scratch_(memory),
       one_effect_force_(memory) {
     const std::size_t n = model.control_points;
@@ -85,6 +86,9 @@ void Dynamics::finalize() {
         pinned_->constrain(stiffness);
         pinned_->constrain(damping);
     }
+    std::size_t bodies = 0;
+    for (const Owned<Effect>& effect : effects_) bodies += effect->border_bodies();
+    border_.reserve(bodies, coordinates());
     max_frequency_ = std::sqrt(kEigenvalueMargin * largest_eigenvalue(stiffness));
     max_damping_rate_ = kEigenvalueMargin * largest_eigenvalue(damping);
     constant_system_h_ = -1.0;
@@ -168,7 +172,8 @@ void Dynamics::solve_mass(double* x) const {
     clamped_->expand(x);
 }
 
-bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const State& state) const {
+bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const State& state,
+                                     BorderedSystem* border) const {
     if (pinned_) pinned_->zero_rows(rhs);
     if (clamped_) {
         clamped_->reduce(system);
@@ -176,6 +181,7 @@ bool Dynamics::solve_velocity_change(SystemMatrix& system, double* rhs, const St
     }
     if (!system.factor()) return false;
     system.solve(rhs);
+    if (border != nullptr) border->solve(system, rhs);  // the bodies of effects that have them (tools' proxies)
     if (clamped_) clamped_->expand(rhs);
     return true;
 }
@@ -210,11 +216,17 @@ Dynamics::Energies Dynamics::energies(const State& state) const {
 bool Dynamics::begin_step(const State& state, double dt) {
     bool energy_changed = false;
     for (Owned<Effect>& effect : effects_) energy_changed |= effect->begin_step(state, dt);
+    if (pinned_) pinned_->begin_step(state, dt);
     return energy_changed;
+}
+
+void Dynamics::evaluation_used(double duration, const State* after) {
+    for (Owned<Effect>& effect : effects_) effect->evaluation_used(duration, after);
 }
 
 void Dynamics::begin_attempt() {
     for (Owned<Effect>& effect : effects_) effect->begin_attempt();
+    if (pinned_) pinned_->begin_attempt();
 }
 
 void Dynamics::end_step(bool accepted) {
@@ -256,6 +268,7 @@ ContactSummary Dynamics::contacts() const {
 double Dynamics::external_work_bound() const {
     double work = 0.0;
     for (const Owned<Effect>& effect : effects_) work += effect->external_work_bound();
+    if (pinned_) work += pinned_->external_work_bound();
     return work;
 }
 
@@ -279,7 +292,7 @@ void Dynamics::restore_state(StateReader& in) {
     }
     in.end_section();
     for (Owned<Effect>& effect : effects_) effect->restore_state(in);
-    if (pinned_) pinned_->restore_state(in);
+    if (pinned_) pinned_->restore_state(in, model_.control_points);
     if (!in.checking()) counters_ = counters;
 }
 

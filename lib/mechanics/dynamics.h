@@ -11,6 +11,7 @@
 
 #include "base/memory.h"
 #include "mechanics/axis_model.h"
+#include "mechanics/bordered_system.h"
 #include "mechanics/clamped_ends.h"
 #include "mechanics/effect.h"
 #include "mechanics/per_coordinate_matrix.h"
@@ -41,6 +42,8 @@ public:
     void add_shared_loads(SharedLoads* loads, EffectId owner);
     // The effect with this id, or null.
     Effect* find_effect(EffectId id);
+    // The pins, or null before the first.
+    PinnedPoints* pins() { return pinned_.get(); }
     // Factors the mass matrix (with the pins) and bounds the explicit stable substep.
     void finalize();
 
@@ -62,17 +65,29 @@ public:
     // implicit integrators' system, assembled by forces() with a linearisation. The pinned
     // rows of rhs are zeroed (dv = 0 there), the clamps' constraints hold for v + dv. Factors
     // (and, with clamps, changes) `system`. False if it is not positive definite.
-    bool solve_velocity_change(SystemMatrix& system, double* rhs, const State& state) const;
+    // With `border` (border()), its bodies are solved with the bowel (bordered_system.h).
+    bool solve_velocity_change(SystemMatrix& system, double* rhs, const State& state,
+                               BorderedSystem* border = nullptr) const;
 
     // Builds M + sum of the constant parts of h C + h^2 H, pins applied: the start of the
     // implicit system for substep h. Cached: rebuilt only when h changes.
     const SystemMatrix& constant_system(double h);
+
+    // The border of the implicit system (bordered_system.h), sized by finalize() for the
+    // bodies the effects may add; null with clamped ends, whose reduced system the border
+    // does not know (the tools' proxies then stay put through each substep).
+    BorderedSystem* border() { return clamped_ ? nullptr : &border_; }
+    // Tells every effect how the integrator used its last evaluation (Effect::evaluation_used).
+    void evaluation_used(double duration, const State* after);
 
     // The effects' step hooks (effect.h), in the order the effects were added.
     // begin_step returns true if an effect changed the energy it stores.
     bool begin_step(const State& state, double dt);
     void begin_attempt();
     void end_step(bool accepted);
+    // Before each attempt: the velocities of the points pinned to moving frames
+    // (pinned_points.h). True if one is not zero.
+    bool prescribe(State& state, double dt) const { return pinned_ && pinned_->prescribe(state, dt); }
 
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;
@@ -130,6 +145,7 @@ private:
     numerics::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
     SystemMatrix clamped_mass_factor_;         // with clamps: M over the 3n coordinates, pinned, clamped, factored
     SystemMatrix constant_system_;
+    BorderedSystem border_;
     double constant_system_h_ = -1.0;
     double max_frequency_ = 0.0;      // rad/s, bound on sqrt(eig(M^-1 K))
     double max_damping_rate_ = 0.0;   // 1/s, bound on eig(M^-1 C)

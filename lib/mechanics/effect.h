@@ -25,16 +25,22 @@ class StateReader;
 namespace enteron::mechanics {
 
 class AxialBlocks;
+class BorderedSystem;
 
 // What the implicit integrator asks of an effect: add h C + h^2 H into `system` and H v
 // into `stiffness_times_velocity` (3n values). The axis' axial laws (stretch, axial
 // damping) put their blocks into `axial` when it is given, and Dynamics::forces adds those
 // to the system once, after every effect and before the pins; without it each law adds its own.
+//
+// An effect whose forces depend on unknowns of its own (a tool's proxy, a massless body held
+// between the bowel and the device) adds them to `border` (bordered_system.h) when it is
+// given; the implicit integrator solves them with the bowel and reports their solution.
 struct Linearization {
     SystemMatrix* system;
     double h;
     double* stiffness_times_velocity;
     AxialBlocks* axial = nullptr;
+    BorderedSystem* border = nullptr;
 };
 
 // Loads that several effects gather during one evaluation and that reach the generalised
@@ -81,6 +87,20 @@ public:
     // step from outside the system (a tool driven by the caller); the guard allows that
     // much energy to appear. 0 for effects that only store or dissipate energy.
     virtual double external_work_bound() const { return 0.0; }
+
+    // How the integrator used the effect's last evaluation, so that an effect that reports
+    // the force it applied (the tools' wrench) reports exactly what the bowel received. The
+    // evaluation's forces acted for `duration` seconds of the substep (an explicit method: its
+    // weight of that evaluation, h b_i for the stages of RK4, h for symplectic Euler). An
+    // implicit method gives `after`, the state at the end of the substep: its linearised
+    // forces reached F - H (q_after - q) - C (v_after - v) there, with q, v the evaluation's
+    // state, and its border unknowns are solved. Null for explicit methods.
+    virtual void evaluation_used(double /*duration*/, const State* /*after*/) {}
+
+    // Unknowns the effect adds to the implicit system's border (bordered_system.h): the
+    // bodies it may add in one evaluation (each with three unknowns). Asked by
+    // Dynamics::finalize, which sizes the border once.
+    virtual std::size_t border_bodies() const { return 0; }
 
     // Step hooks, called by Dynamics around each step of the scene: an effect driven from
     // outside (the tools) takes its commands and moves within the step; the others have

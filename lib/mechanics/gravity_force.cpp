@@ -1,5 +1,7 @@
 #include "mechanics/gravity_force.h"
 
+#include "base/state_io.h"
+
 namespace enteron::mechanics {
 
 GravityForce::GravityForce(const AxisModel& model, const Vec3& gravity,
@@ -25,6 +27,20 @@ double GravityForce::potential_energy(const State& state) const {
     for (std::size_t j = 0; j < lumped_mass_.size(); ++j)
         for (int c = 0; c < 3; ++c) energy -= lumped_mass_[j] * gravity_[c] * state.q[3 * j + c];
     return energy;
+}
+
+void GravityForce::save_state(StateWriter& out) const {
+    out.begin_section("gravity", 1);
+    out.f64s(gravity_.data(), 3);
+    out.end_section();
+}
+
+void GravityForce::restore_state(StateReader& in) {
+    in.begin_section("gravity", 1);
+    Vec3 gravity;
+    in.f64s("gravity", 3, gravity.data());
+    in.end_section();
+    if (!in.checking()) gravity_ = gravity;
 }
 
 }  // namespace enteron::mechanics

@@ -20,6 +20,11 @@ public:
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     // -m g . centre of mass: zero when the centre of mass is at the origin.
     double potential_energy(const State& state) const override;
+    // Between steps: a new gravity (a tilted table), m/s^2.
+    void set_gravity(const Vec3& gravity) { gravity_ = gravity; }
+    // The gravity (changed between steps by the caller).
+    void save_state(StateWriter& out) const override;
+    void restore_state(StateReader& in) override;
 
 private:
     Vec3 gravity_;  // m/s^2

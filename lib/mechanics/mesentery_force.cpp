@@ -1,6 +1,9 @@
 #include "mechanics/mesentery_force.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "base/state_io.h"
 
 namespace enteron::mechanics {
 
@@ -16,24 +19,47 @@ MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters
         spring.weights = spline::weights_at(n, fraction * static_cast<double>(n - 1),
                                             spline::Derivative::value, model.ends);
         spring.root = parameters.root_start + fraction * (parameters.root_end - parameters.root_start);
-        spring.rest_length =
-            parameters.rest_length > 0.0 ? parameters.rest_length : stretch_vector(initial, spring).norm();
+        spring.rest_length = parameters.rest_length > 0.0 ? parameters.rest_length
+                                                          : stretch_vector(initial, spring, spring.root).norm();
         springs_.push_back(spring);
     }
 }
 
-Vec3 MesenteryForce::stretch_vector(const State& state, const Spring& spring) {
-    return spline::evaluate(state.q.data(), spring.weights) - spring.root;
+Vec3 MesenteryForce::stretch_vector(const State& state, const Spring& spring, const Vec3& root) {
+    return spline::evaluate(state.q.data(), spring.weights) - root;
+}
+
+FramePlacement MesenteryForce::placement(double t) const {
+    return frame_ != kNoFrame ? frames_->at(frame_, t) : FramePlacement{};
+}
+
+void MesenteryForce::attach(const RigidFrames* frames, std::size_t frame, double time) {
+    const FramePlacement from = placement(time);
+    frames_ = frames;
+    frame_ = frame;
+    const FramePlacement to = placement(time);
+    for (Spring& spring : springs_) spring.root = to.to_local(from.to_world(spring.root));
+}
+
+bool MesenteryForce::begin_step(const State& /*state*/, double dt) {
+    step_dt_ = dt;
+    largest_power_ = 0.0;
+    return false;
 }
 
 void MesenteryForce::evaluate(const State& state, double* force, const Linearization* lin) {
+    // The implicit step solves for the end of the substep: the root where it is then.
+    const FramePlacement frame = placement(state.time + (lin != nullptr ? lin->h : 0.0));
+    double power = 0.0;
     for (const Spring& spring : springs_) {
-        const Vec3 d = stretch_vector(state, spring);
+        const Vec3 root = frame.to_world(spring.root);
+        const Vec3 d = stretch_vector(state, spring, root);
         const double length = d.norm();
         if (!(length > spring.rest_length)) continue;  // slack (or NaN: the guard sees it)
         const double inv = 1.0 / length;
         const Vec3 u = d * inv;
         const double tension = stiffness_ * (length - spring.rest_length);
+        if (frame.moving) power += tension * frame.velocity_at(root).norm();
         const spline::SegmentWeights& sw = spring.weights;
         add_point_force(sw, -tension * u, force);
         if (lin != nullptr) {
@@ -44,12 +70,14 @@ void MesenteryForce::evaluate(const State& state, double* force, const Lineariza
             add_point_force(sw, axial_times(u, axial, transverse, velocity), lin->stiffness_times_velocity);
         }
     }
+    largest_power_ = std::max(largest_power_, power);
 }
 
 double MesenteryForce::potential_energy(const State& state) const {
+    const FramePlacement frame = placement(state.time);
     double energy = 0.0;
     for (const Spring& spring : springs_) {
-        const double excess = stretch_vector(state, spring).norm() - spring.rest_length;
+        const double excess = stretch_vector(state, spring, frame.to_world(spring.root)).norm() - spring.rest_length;
         if (excess > 0.0) energy += 0.5 * stiffness_ * excess * excess;
     }
     return energy;
@@ -63,6 +91,33 @@ void MesenteryForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) cons
             for (int k = 0; k <= j; ++k)
                 bound.add(sw.first + j, sw.first + k, stiffness_ * sw.w[j] * sw.w[k]);
     }
+}
+
+void MesenteryForce::save_state(StateWriter& out) const {
+    out.begin_section("mesentery", 1);
+    out.u8(frame_ != kNoFrame ? 1 : 0);
+    out.u32(frame_ != kNoFrame ? static_cast<uint32_t>(frame_) : 0);
+    out.u32(static_cast<uint32_t>(springs_.size()));
+    for (const Spring& spring : springs_) out.f64s(spring.root.data(), 3);
+    out.end_section();
+}
+
+void MesenteryForce::restore_state(StateReader& in) {
+    in.begin_section("mesentery", 1);
+    const bool attached = in.flag("mesentery attached");
+    const uint32_t frame = in.u32("mesentery frame");
+    if (attached && frames_ == nullptr)
+        in.fail("the saved mesentery follows an obstacle (ent_scene_attach_mesentery) and this scene's does not: "
+                "attach it to the same obstacle before restoring");
+    if (attached && frame >= frames_->size()) in.fail("the mesentery's frame does not exist in this scene");
+    if (in.u32("mesentery springs") != springs_.size()) in.fail("saved with another number of mesentery springs");
+    for (std::size_t k = 0; k < springs_.size(); ++k) {
+        Vec3 root;
+        in.f64s("mesentery root", 3, root.data());
+        if (!in.checking()) springs_[k].root = root;
+    }
+    in.end_section();
+    if (!in.checking()) frame_ = attached ? frame : kNoFrame;
 }
 
 }  // namespace enteron::mechanics

@@ -6,6 +6,11 @@
 //
 // Linearisation of a stretched spring (d > L0): H = k [u u^T + (1 - L0/d) (I - u u^T)],
 // positive semi-definite; a slack spring adds nothing.
+//
+// The root may be attached to a rigid frame (the posterior wall as an organ mesh that the
+// caller moves, mechanics/rigid_frames.h): it then moves with the frame, within the step
+// as the frame does, and the springs' work on the bowel is the guard's to allow (twice the
+// largest power of the tensions at the moving root in the step, times the step).
 #pragma once
 
 #include <memory_resource>
@@ -14,6 +19,7 @@
 #include "base/geometry.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
+#include "mechanics/rigid_frames.h"
 
 namespace enteron::mechanics {
 
@@ -34,18 +40,38 @@ public:
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     double potential_energy(const State& state) const override;
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
+    double external_work_bound() const override { return 2.0 * largest_power_ * step_dt_; }
+    bool begin_step(const State& state, double dt) override;
+    void begin_attempt() override { largest_power_ = 0.0; }
+
+    // Between steps: the root follows frame `frame` of `frames` (outliving this) from where
+    // it is now; kNoFrame leaves it where it is, in the world.
+    static constexpr std::size_t kNoFrame = static_cast<std::size_t>(-1);
+    void attach(const RigidFrames* frames, std::size_t frame, double time);
+
+    // The frame the root follows and the roots in it: a section of a saved state. A state
+    // whose root follows a frame restores only into a scene whose mesentery was attached
+    // (to any frame) as well: frames_ is set by attach.
+    void save_state(StateWriter& out) const override;
+    void restore_state(StateReader& in) override;
 
 private:
     struct Spring {
         spline::SegmentWeights weights;  // of the attachment point on the axis
-        Vec3 root;                       // m
+        Vec3 root;                       // m: in the world, or in the frame when attached
         double rest_length;              // m
     };
-    // The vector from the root to the attachment point.
-    static Vec3 stretch_vector(const State& state, const Spring& spring);
+    // The vector from the root (at `root`, world) to the attachment point.
+    static Vec3 stretch_vector(const State& state, const Spring& spring, const Vec3& root);
+    // Where the frame is at time t (identity when not attached).
+    FramePlacement placement(double t) const;
 
     double stiffness_;
     std::pmr::vector<Spring> springs_;
+    const RigidFrames* frames_ = nullptr;
+    std::size_t frame_ = kNoFrame;
+    double largest_power_ = 0.0;
+    double step_dt_ = 0.0;
 };
 
 }  // namespace enteron::mechanics

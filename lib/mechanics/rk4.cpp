@@ -19,6 +19,7 @@ bool RungeKutta4::step(Dynamics& dynamics, State& state, double h) {
     for (int i = 0; i < 4; ++i) {
         dynamics.acceleration(stage_, acceleration_.data());
         const double w = kWeight[i] * h / 6.0;
+        dynamics.evaluation_used(w, nullptr);
         for (std::size_t k = 0; k < m; ++k) {
             const double slope_q = stage_.v[k];
             const double slope_v = acceleration_[k];

@@ -4,6 +4,7 @@ namespace enteron::mechanics {
 
 bool SymplecticEuler::step(Dynamics& dynamics, State& state, double h) {
     dynamics.acceleration(state, acceleration_.data());
+    dynamics.evaluation_used(h, nullptr);
     const std::size_t m = acceleration_.size();
     for (std::size_t k = 0; k < m; ++k) {
         state.v[k] += h * acceleration_[k];

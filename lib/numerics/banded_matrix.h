@@ -157,6 +157,73 @@ public:
             for (std::size_t c = 0; c < columns; ++c) solve_columns<1>(x + c, stride);
     }
 
+    // Solves A x = b in place after factor() for C interleaved right-hand sides (layout of
+    // solve) that are zero outside rows [first, last], on a window: A^-1 of a local load
+    // decays away from it (each row of the sweeps is a weighted sum of the P rows before),
+    // so the forward sweep stops below `last` and the backward sweep above `first` once P
+    // rows in a row have fallen below `tolerance` times the largest magnitude so far. The
+    // rows outside [*window_first, *window_last] are left as they were (zero): they hold
+    // less than that tolerance of the solution. With tolerance 0 the sweeps run to the
+    // ends: an exact solve.
+    template <std::size_t C>
+    void solve_window(double* x, std::size_t first, std::size_t last, double tolerance, std::size_t* window_first,
+                      std::size_t* window_last) const {
+        const std::size_t p = static_cast<std::size_t>(P);
+        // Forward: y_i = b_i - sum_{j<i} L(i, j) y_j, with y_j = 0 below `first`.
+        double largest = 0.0;
+        std::size_t quiet = 0;  // rows in a row below the tolerance, past `last`
+        std::size_t end = n_;   // one past the last row swept
+        for (std::size_t i = first; i < n_; ++i) {
+            const double* li = &band_[i * kRowStride];
+            const std::size_t j0 = std::max(first, i >= p ? i - p : 0);
+            double s[C];
+            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * C + c];
+            for (std::size_t j = j0; j < i; ++j) {
+                const double l = li[j + p - i];
+                for (std::size_t c = 0; c < C; ++c) s[c] -= l * x[j * C + c];
+            }
+            double row = 0.0;
+            for (std::size_t c = 0; c < C; ++c) {
+                x[i * C + c] = s[c];
+                row = std::max(row, std::fabs(s[c]));
+            }
+            largest = std::max(largest, row);
+            quiet = i > last && row <= tolerance * largest ? quiet + 1 : 0;
+            if (quiet == p) {
+                end = i + 1;
+                break;
+            }
+        }
+        for (std::size_t i = first; i < end; ++i)
+            for (std::size_t c = 0; c < C; ++c) x[i * C + c] *= inverse_diagonal_[i];
+        // Backward: x_i = y_i / d_i - sum_{k>i} L(k, i) x_k, with x_k = 0 from `end` on.
+        largest = 0.0;
+        quiet = 0;
+        std::size_t begin = 0;
+        for (std::size_t i = end; i-- > 0;) {
+            const std::size_t k1 = std::min(end - 1, i + p);
+            double s[C];
+            for (std::size_t c = 0; c < C; ++c) s[c] = x[i * C + c];
+            for (std::size_t k = k1; k > i; --k) {
+                const double l = band_[k * kRowStride + (i + p - k)];
+                for (std::size_t c = 0; c < C; ++c) s[c] -= l * x[k * C + c];
+            }
+            double row = 0.0;
+            for (std::size_t c = 0; c < C; ++c) {
+                x[i * C + c] = s[c];
+                row = std::max(row, std::fabs(s[c]));
+            }
+            largest = std::max(largest, row);
+            quiet = i < first && row <= tolerance * largest ? quiet + 1 : 0;
+            if (quiet == p) {
+                begin = i;
+                break;
+            }
+        }
+        *window_first = begin;
+        *window_last = end - 1;
+    }
+
 private:
     // Column k of the elimination with `below` rows under the pivot (below <= P).
     template <int Below>

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.h"
+#include "scene/mesh_file.h"
 #include "scene/validate.h"
 
 namespace enteron::scene {
@@ -81,6 +82,11 @@ std::uint64_t read_count(const json& value, const std::string& path,
     return count;
 }
 
+bool read_bool(const json& value, const std::string& path) {
+    if (!value.is_boolean()) fail(path + " must be true or false, got " + describe(value));
+    return value.get<bool>();
+}
+
 Vec3 read_vec3(const json& value, const std::string& path) {
     if (!value.is_array() || value.size() != 3) {
         fail(path + " must be an array of 3 numbers [x, y, z], got " + describe(value));
@@ -122,6 +128,8 @@ const Choice<IntegratorKind> kIntegrators[] = {{"rk4", IntegratorKind::rk4},
                                                {"symplectic_euler", IntegratorKind::symplectic_euler},
                                                {"implicit_euler", IntegratorKind::implicit_euler},
                                                {"bdf2", IntegratorKind::bdf2}};
+const Choice<collision::ToolMode> kToolModes[] = {{"proxy", collision::ToolMode::proxy},
+                                                  {"direct", collision::ToolMode::direct}};
 const Choice<int32_t> kPinnedEnds[] = {
     {"none", pin_none}, {"first", pin_first}, {"last", pin_last}, {"both", pin_both}};
 
@@ -245,6 +253,7 @@ void read_root(const json& value, const std::string& path, MesenteryConfig& mese
 
 const Key<MesenteryConfig> kMesenteryKeys[] = {
     {"root", read_root},
+    {"obstacle", [](auto& v, auto& p, auto& c) { c.obstacle = read_count(v, p); }},
     {"stiffness", [](auto& v, auto& p, auto& c) { c.stiffness = read_number(v, p); }},
     {"attachments", [](auto& v, auto& p, auto& c) { c.attachments = read_count(v, p); }},
     {"rest_length", [](auto& v, auto& p, auto& c) { c.rest_length = read_number(v, p); }},
@@ -259,9 +268,29 @@ void read_pinned_points(const json& value, const std::string& path, PinnedConfig
     }
 }
 
+const Key<PinAttachment> kAttachedPinKeys[] = {
+    {"control_point", [](auto& v, auto& p, auto& a) {
+         a.point = static_cast<uint32_t>(read_count(v, p, std::numeric_limits<uint32_t>::max()));
+     }},
+    {"obstacle", [](auto& v, auto& p, auto& a) { a.obstacle = read_count(v, p); }},
+};
+
+void read_attached_pins(const json& value, const std::string& path, PinnedConfig& pinned) {
+    if (!value.is_array())
+        fail(path + " must be an array of {\"control_point\": i, \"obstacle\": k}, got " + describe(value));
+    pinned.attached.assign(value.size(), PinAttachment{});
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string at = element(path, i);
+        if (!value[i].is_object() || !value[i].contains("control_point") || !value[i].contains("obstacle"))
+            fail(at + " must be an object with \"control_point\" and \"obstacle\", got " + describe(value[i]));
+        read_object(value[i], at, kAttachedPinKeys, pinned.attached[i]);
+    }
+}
+
 const Key<PinnedConfig> kPinnedKeys[] = {
     {"ends", [](auto& v, auto& p, auto& c) { c.ends = read_choice(v, p, kPinnedEnds); }},
     {"control_points", read_pinned_points},
+    {"attached", read_attached_pins},
     {"clamped", [](auto& v, auto& p, auto& c) { c.clamped = read_choice(v, p, kPinnedEnds); }},
 };
 
@@ -278,26 +307,104 @@ using collision::ObstacleKind;
 const Choice<ObstacleKind> kObstacleKinds[] = {{"box_inside", ObstacleKind::box_inside},
                                                {"plane", ObstacleKind::plane},
                                                {"sphere", ObstacleKind::sphere},
-                                               {"capsule", ObstacleKind::capsule}};
+                                               {"capsule", ObstacleKind::capsule},
+                                               {"mesh", ObstacleKind::mesh}};
+
+// The directory relative mesh files are found in, while load_scene_json runs on this thread
+// (the readers below have no other way to learn it).
+thread_local const std::string* t_base_directory = nullptr;
+
+std::array<double, 4> read_quaternion(const json& value, const std::string& path);
+
+// The keys every obstacle type has besides its shape: its frame and friction.
+void read_position(const json& v, const std::string& p, Obstacle& o) { o.pose.position = read_vec3(v, p); }
+void read_orientation(const json& v, const std::string& p, Obstacle& o) {
+    const std::array<double, 4> q = read_quaternion(v, p);
+    // Normalised (and checked for zero) by the validation.
+    o.pose.orientation.coeffs() << q[1], q[2], q[3], q[0];
+}
+void read_friction(const json& v, const std::string& p, Obstacle& o) {
+    o.friction = read_number(v, p);
+    if (!(o.friction >= 0.0)) fail(p + " must be >= 0, got " + describe(v));
+}
+
+// A mesh given inline: [[x, y, z], ...] and [[a, b, c], ...].
+collision::TriangleMesh& inline_mesh(Obstacle& o) {
+    if (!o.mesh) o.mesh = std::make_shared<collision::TriangleMesh>();
+    return const_cast<collision::TriangleMesh&>(*o.mesh);
+}
+void read_vertices(const json& value, const std::string& path, Obstacle& o) {
+    if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
+    collision::TriangleMesh& mesh = inline_mesh(o);
+    mesh.vertices.clear();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const Vec3 point = read_vec3(value[i], element(path, i));
+        mesh.vertices.insert(mesh.vertices.end(), point.begin(), point.end());
+    }
+}
+void read_triangles(const json& value, const std::string& path, Obstacle& o) {
+    if (!value.is_array()) fail(path + " must be an array of [a, b, c] vertex indices, got " + describe(value));
+    collision::TriangleMesh& mesh = inline_mesh(o);
+    mesh.indices.clear();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string at = element(path, i);
+        if (!value[i].is_array() || value[i].size() != 3)
+            fail(at + " must be an array of 3 vertex indices [a, b, c], got " + describe(value[i]));
+        for (std::size_t k = 0; k < 3; ++k)
+            mesh.indices.push_back(static_cast<uint32_t>(
+                read_count(value[i][k], element(at, k), std::numeric_limits<uint32_t>::max())));
+    }
+}
+// A mesh file: read at once, relative to the scene file's directory.
+void read_mesh_file_key(const json& value, const std::string& path, Obstacle& o) {
+    if (!value.is_string() || value.get<std::string>().empty())
+        fail(path + " must be the path of an OBJ or PLY file, got " + describe(value));
+    std::string file = value.get<std::string>();
+    if (file.front() != '/' && t_base_directory != nullptr && !t_base_directory->empty())
+        file = *t_base_directory + "/" + file;
+    o.mesh = std::make_shared<collision::TriangleMesh>(read_mesh_file(file, 1.0, path, ErrorCode::invalid_scene));
+}
+// The mesh's scale (a CT mesh in millimetres: 0.001), applied once every key of the
+// obstacle is read, whatever their order.
+thread_local double t_mesh_scale = 1.0;
+void read_scale(const json& value, const std::string& path, Obstacle&) {
+    t_mesh_scale = read_number(value, path);
+    if (!(t_mesh_scale > 0.0) || !std::isfinite(t_mesh_scale)) fail(path + " must be > 0, got " + describe(value));
+}
 
 // The keys of each obstacle type (besides "type") and where they go.
+#define ENTERON_OBSTACLE_FRAME_KEYS \
+    {"position", read_position}, {"orientation", read_orientation}, {"friction", read_friction}
 const Key<Obstacle> kBoxKeys[] = {
     {"center", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
     {"half_extents", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
+    ENTERON_OBSTACLE_FRAME_KEYS,
 };
 const Key<Obstacle> kPlaneKeys[] = {
     {"point", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
     {"normal", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
+    ENTERON_OBSTACLE_FRAME_KEYS,
 };
 const Key<Obstacle> kSphereKeys[] = {
     {"center", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
     {"radius", [](auto& v, auto& p, auto& o) { o.radius = read_number(v, p); }},
+    ENTERON_OBSTACLE_FRAME_KEYS,
 };
 const Key<Obstacle> kCapsuleKeys[] = {
     {"start", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
     {"end", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
     {"radius", [](auto& v, auto& p, auto& o) { o.radius = read_number(v, p); }},
+    ENTERON_OBSTACLE_FRAME_KEYS,
 };
+const Key<Obstacle> kMeshKeys[] = {
+    {"file", read_mesh_file_key},
+    {"vertices", read_vertices},
+    {"triangles", read_triangles},
+    {"scale", read_scale},
+    {"voxel_size", [](auto& v, auto& p, auto& o) { o.voxel_size = read_number(v, p); }},
+    ENTERON_OBSTACLE_FRAME_KEYS,
+};
+#undef ENTERON_OBSTACLE_FRAME_KEYS
 
 void read_obstacle(const json& value, const std::string& path, Obstacle& obstacle) {
     if (!value.is_object() || !value.contains("type"))
@@ -310,6 +417,16 @@ void read_obstacle(const json& value, const std::string& path, Obstacle& obstacl
         case ObstacleKind::plane: read_object(rest, path, kPlaneKeys, obstacle); break;
         case ObstacleKind::sphere: read_object(rest, path, kSphereKeys, obstacle); break;
         case ObstacleKind::capsule: read_object(rest, path, kCapsuleKeys, obstacle); break;
+        case ObstacleKind::mesh: {
+            if (rest.contains("file") == (rest.contains("vertices") || rest.contains("triangles")))
+                fail(path + " (mesh) must have either \"file\" or both \"vertices\" and \"triangles\"");
+            if (rest.contains("vertices") != rest.contains("triangles"))
+                fail(path + " (mesh) must have both \"vertices\" and \"triangles\"");
+            t_mesh_scale = 1.0;
+            read_object(rest, path, kMeshKeys, obstacle);
+            for (double& coordinate : inline_mesh(obstacle).vertices) coordinate *= t_mesh_scale;
+            break;
+        }
     }
 }
 
@@ -340,6 +457,11 @@ const Key<ToolConfig> kToolKeys[] = {
          for (int c = 0; c < 3; ++c) t.pose.position[c] = position[c];
      }},
     {"orientation", [](auto& v, auto& p, auto& t) { t.pose.orientation = read_quaternion(v, p); }},
+    {"mode", [](auto& v, auto& p, auto& t) { t.settings.mode = read_choice(v, p, kToolModes); }},
+    {"coupling_stiffness", [](auto& v, auto& p, auto& t) { t.settings.coupling_stiffness = read_number(v, p); }},
+    {"coupling_damping", [](auto& v, auto& p, auto& t) { t.settings.coupling_damping = read_number(v, p); }},
+    {"friction", [](auto& v, auto& p, auto& t) { t.settings.friction = read_number(v, p); }},
+    {"passivity_limiter", [](auto& v, auto& p, auto& t) { t.settings.passivity_limiter = read_bool(v, p); }},
 };
 
 void read_tools(const json& value, const std::string& path, std::vector<ToolConfig>& tools) {
@@ -483,8 +605,12 @@ FieldSet given_fields(const json& document) {
 
 }  // namespace
 
-SceneConfig load_scene_json(const char* text, std::size_t length) {
+SceneConfig load_scene_json(const char* text, std::size_t length, const std::string& base_directory) {
     if (text == nullptr && length != 0) throw Error(ErrorCode::invalid_argument, "json is NULL");
+    struct BaseDirectory {
+        explicit BaseDirectory(const std::string* directory) { t_base_directory = directory; }
+        ~BaseDirectory() { t_base_directory = nullptr; }
+    } base(&base_directory);
     static const char kEmpty[] = "";
     const json document = parse(text != nullptr ? text : kEmpty, length);
     SceneConfig config;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "scene/scene_config.h"
 
@@ -17,6 +18,8 @@ namespace enteron::scene {
 //   ErrorCode::invalid_scene: unknown or repeated key, wrong type, value out of range; the
 //     message names the path, "intestine.radius must be > 0, got -1";
 //   ErrorCode::invalid_argument: text is null while length is not 0.
-SceneConfig load_scene_json(const char* text, std::size_t length);
+// A mesh obstacle's "file" is read here, relative to `base_directory` (the scene file's
+// directory; empty: the current directory).
+SceneConfig load_scene_json(const char* text, std::size_t length, const std::string& base_directory = "");
 
 }  // namespace enteron::scene

@@ -143,6 +143,18 @@ void warn_implausible(const collision::Obstacle& obstacle, const std::string& na
         case ObstacleKind::sphere:
         case ObstacleKind::capsule: warn(logger, name + ".radius", kOrganRadius, obstacle.radius); break;
         case ObstacleKind::plane: break;
+        case ObstacleKind::mesh: {
+            // A mesh in millimetres (a CT export) is a thousand times too large.
+            const collision::TriangleMesh* mesh = obstacle.mesh ? obstacle.mesh.get() : nullptr;
+            if (mesh == nullptr || mesh->vertex_count() == 0) break;
+            Vec3 low = mesh->vertex(0), high = low;
+            for (std::size_t v = 1; v < mesh->vertex_count(); ++v) {
+                low = low.cwiseMin(mesh->vertex(v));
+                high = high.cwiseMax(mesh->vertex(v));
+            }
+            warn(logger, name + " (mesh) half of its largest side", kCavityHalfSize, 0.5 * (high - low).maxCoeff());
+            break;
+        }
     }
 }
 

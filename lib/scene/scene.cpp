@@ -7,7 +7,6 @@
 #include <string>
 
 #include "base/error.h"
-#include "collision/environment_force.h"
 #include "collision/self_contact_force.h"
 #include "collision/tools_force.h"
 #include "mechanics/bend_force.h"
@@ -51,6 +50,29 @@ std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t cou
 // every contact force starts from zero (contact_model.h).
 constexpr double kContactDampingDepth = 0.1;
 
+// Tells what a mesh obstacle's connectivity means for its contacts.
+void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
+    if (obstacle.kind != collision::ObstacleKind::mesh || !logger.enabled()) return;
+    const collision::MeshDistanceField& field = *obstacle.field;
+    const collision::MeshTopologyReport& r = field.report();
+    if (!r.closed())
+        logger.log(LogLevel::warning,
+                   "%s (mesh): not a closed, consistently oriented surface (%zu open edges, %zu edges of three or "
+                   "more triangles, %zu edges whose triangles disagree on orientation): it has no inside, so its "
+                   "contact is one-sided, pushing the bowel to the side its triangles' normals face "
+                   "(counter-clockwise winding)",
+                   name.c_str(), r.open_edges, r.nonmanifold_edges, r.flipped_edges);
+    else if (r.signed_volume < 0.0)
+        logger.log(LogLevel::info, "%s (mesh): its normals face inward, so the bowel is kept inside it (a cavity)",
+                   name.c_str());
+    if (r.degenerate_triangles > 0)
+        logger.log(LogLevel::warning, "%s (mesh): %zu triangles of zero area are ignored", name.c_str(),
+                   r.degenerate_triangles);
+    logger.log(LogLevel::info, "%s (mesh): %zu triangles, distance field of %zu voxels of %g m (%.1f MB)",
+               name.c_str(), field.mesh().triangle_count(), field.voxel_count(), field.settings().voxel_size,
+               1e-6 * double(field.memory_bytes()));
+}
+
 uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
     return static_cast<uint64_t>(
         std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
@@ -59,12 +81,13 @@ uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::memory_resource* memory,
-             Logger logger)
+             Logger logger, const FieldNames& names)
     : memory_(memory),
       logger_(logger),
       solver_(config.solver),
       model_(make_model(config)),
       tool_channels_(memory),
+      frames_(memory),
       dynamics_(model_, memory),
       state_(memory),
       backup_(memory),
@@ -104,14 +127,29 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
         dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state_, memory));
     }
     if (config.pinned)
-        dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), memory));
+        dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), frames_,
+                                                    config.solver.max_speed, memory));
     if (const int32_t clamped = clamped_ends(config))
         dynamics_.add_clamps(make_owned<ClampedEnds>(memory, (clamped & pin_first) != 0, (clamped & pin_last) != 0,
                                                      state_.q.data(), n));
     // The self-contact's time takes the shared contact loads', even though the environment
     // is made first.
     if (config.self_collision) contact_loads(EffectId::self_collision);
-    if (!config.environment.empty()) add_environment(config.environment);
+    for (std::size_t i = 0; i < config.environment.size(); ++i) {
+        collision::Obstacle obstacle = config.environment[i];
+        const std::string name = std::string(names[Field::obstacle]) + "[" + std::to_string(i) + "]";
+        collision::EnvironmentForce::prepare(obstacle, radius_, memory_);
+        // A mesh's start can only be checked once its field is built.
+        if (obstacle.kind == collision::ObstacleKind::mesh)
+            validate_obstacle(obstacle, name, names, state_.q.data(), n, &start_clearance_);
+        warn_mesh(obstacle, name, logger_);
+        if (environment() == nullptr) add_environment();
+        environment()->add_obstacle(obstacle);
+        ++obstacles_;
+    }
+    if (config.pinned)
+        for (const PinAttachment& pin : config.pinned->attached) pin_point_only(pin.point, pin.obstacle);
+    if (config.mesentery && config.mesentery->obstacle) attach_mesentery_only(config.mesentery->obstacle);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision) {
         auto effect = make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state_,
@@ -123,6 +161,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
 
     integrator_ = make_integrator(solver_.integrator, model_, memory);
     published_.reserve_tools(tool_channels_.size());
+    published_.reserve_obstacles(obstacles_);
     refinalize();
     publish();
 }
@@ -136,18 +175,135 @@ void Scene::refinalize() {
                     std::min(solver_.timestep, explicit_substep_limit_));
 }
 
-std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle) {
-    const std::size_t index = obstacles_;
-    if (auto* environment = static_cast<collision::EnvironmentForce*>(dynamics_.find_effect(EffectId::environment))) {
-        environment->add_obstacle(obstacle);
-        ++obstacles_;
+std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::string& name,
+                                const FieldNames& names) {
+    collision::Obstacle prepared = obstacle;
+    collision::EnvironmentForce::prepare(prepared, radius_, memory_);
+    published_.reserve_obstacles(obstacles_ + 1);
+    validate_obstacle(prepared, name, names, state_.q.data(), model_.control_points, &start_clearance_);
+    collision::EnvironmentForce* env = environment();
+    if (env == nullptr) {
+        auto effect = make_effect_environment();
+        env = effect.get();
+        env->add_obstacle(prepared);
+        dynamics_.add_effect(std::move(effect));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = &env->contact_log();
     } else {
-        add_environment({obstacle});
+        env->add_obstacle(prepared);
     }
     add_to_fingerprint(description_, obstacle);
+    warn_mesh(prepared, name, logger_);
+    const std::size_t index = obstacles_++;
     refinalize();
     publish();
     return index;
+}
+
+Owned<collision::EnvironmentForce> Scene::make_effect_environment() {
+    return make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, frames_, state_,
+                                                   memory_, contact_loads(EffectId::environment));
+}
+
+void Scene::add_environment() {
+    auto effect = make_effect_environment();
+    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = &effect->contact_log();
+    dynamics_.add_effect(std::move(effect));
+}
+
+collision::EnvironmentForce* Scene::environment() {
+    return static_cast<collision::EnvironmentForce*>(dynamics_.find_effect(EffectId::environment));
+}
+
+collision::EnvironmentForce& Scene::environment_with(std::size_t index) const {
+    auto* env = const_cast<Scene*>(this)->environment();
+    if (env == nullptr || env->obstacle(index) == nullptr)
+        throw Error(ErrorCode::not_found, "obstacle " + std::to_string(index) + " does not exist (" +
+                                              (index < obstacles_ ? std::string("it was removed")
+                                                                  : "the scene has had " + std::to_string(obstacles_) +
+                                                                        " obstacles") +
+                                              ")");
+    return *env;
+}
+
+std::size_t Scene::obstacle_count() const {
+    auto* env = const_cast<Scene*>(this)->environment();
+    return env != nullptr ? env->live_count() : 0;
+}
+
+const collision::Obstacle& Scene::obstacle(std::size_t index) const { return *environment_with(index).obstacle(index); }
+
+void Scene::set_obstacle_pose(std::size_t index, const mechanics::RigidPose& pose) {
+    frames_.set_target(environment_with(index).frame_of(index), pose);
+}
+
+void Scene::set_obstacle_velocity(std::size_t index, const Vec3& linear, const Vec3& angular) {
+    frames_.set_velocity(environment_with(index).frame_of(index), linear, angular);
+}
+
+void Scene::set_obstacle_friction(std::size_t index, double friction) {
+    environment_with(index).set_friction(index, friction);
+    refinalize();  // the explicit substep's bound follows the largest friction
+    publish();
+}
+
+void Scene::remove_obstacle(std::size_t index) {
+    environment_with(index).remove_obstacle(index);
+    changed_between_steps();
+}
+
+mechanics::RigidPose Scene::obstacle_pose(std::size_t index) const {
+    auto* env = const_cast<Scene*>(this)->environment();
+    return frames_.pose(env->frame_of(index));
+}
+
+void Scene::set_gravity(const Vec3& gravity) {
+    auto* effect = static_cast<GravityForce*>(dynamics_.find_effect(EffectId::gravity));
+    if (effect == nullptr) {
+        dynamics_.add_effect(make_owned<GravityForce>(memory_, model_, gravity, memory_));
+        changed_between_steps();
+        return;
+    }
+    // Gravity bounds no stiffness: only the guard's energy reference moves (no allocation,
+    // so a table may tilt a little before every step).
+    effect->set_gravity(gravity);
+    guard_.set_reference(dynamics_.energies(state_));
+    publish();
+}
+
+void Scene::pin_point_only(std::size_t point, std::optional<std::size_t> obstacle) {
+    const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : PinnedPoints::kWorld;
+    if (dynamics_.pins() == nullptr)
+        dynamics_.add_pins(make_owned<PinnedPoints>(memory_, std::vector<uint32_t>{}, frames_, solver_.max_speed, memory_));
+    dynamics_.pins()->pin(static_cast<uint32_t>(point), frame, state_);
+}
+
+void Scene::pin_point(std::size_t point, std::optional<std::size_t> obstacle) {
+    pin_point_only(point, obstacle);
+    changed_between_steps();
+}
+
+bool Scene::unpin_point(std::size_t point) {
+    PinnedPoints* pins = dynamics_.pins();
+    if (pins == nullptr || !pins->unpin(static_cast<uint32_t>(point))) return false;
+    changed_between_steps();
+    return true;
+}
+
+void Scene::attach_mesentery_only(std::optional<std::size_t> obstacle) {
+    auto* mesentery = static_cast<MesenteryForce*>(dynamics_.find_effect(EffectId::mesentery));
+    if (mesentery == nullptr) throw Error(ErrorCode::not_found, "the scene has no mesentery to attach");
+    const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : MesenteryForce::kNoFrame;
+    mesentery->attach(&frames_, frame, state_.time);
+}
+
+void Scene::attach_mesentery(std::optional<std::size_t> obstacle) {
+    attach_mesentery_only(obstacle);
+    changed_between_steps();
+}
+
+void Scene::changed_between_steps() {
+    refinalize();
+    publish();
 }
 
 std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
@@ -169,6 +325,12 @@ std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
     refinalize();
     publish();
     return index;
+}
+
+void Scene::remove_tool(std::size_t index) {
+    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
+    tools->remove_tool(index);
+    publish();
 }
 
 collision::CollisionSpheres& Scene::collision_spheres() {
@@ -194,15 +356,6 @@ collision::SphereLoads& Scene::contact_loads(EffectId owner) {
     return *contact_loads_;
 }
 
-void Scene::add_environment(const std::vector<collision::Obstacle>& obstacles) {
-    auto effect = make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, obstacles,
-                                                          state_, memory_, contact_loads(EffectId::environment));
-    const collision::ContactLog* log = &effect->contact_log();
-    dynamics_.add_effect(std::move(effect));
-    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = log;
-    obstacles_ += obstacles.size();
-}
-
 void Scene::step(double dt) {
     const auto start = std::chrono::steady_clock::now();
     if (!std::isfinite(dt) || !(dt > 0.0)) {
@@ -222,13 +375,18 @@ void Scene::step(double dt) {
     const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
 
     backup_.assign(state_);
+    frames_.begin_step(state_.time, dt);
     integrator_->save_history();
-    // A grasp taken or let go changes the stored energy: the guard measures it again.
-    if (dynamics_.begin_step(state_, dt)) guard_.set_reference(dynamics_.energies(state_));
+    // A grasp taken or let go changes the stored energy, and so do the velocities of points
+    // pinned to moving obstacles: the guard measures it again.
+    const bool grasps = dynamics_.begin_step(state_, dt);
+    if (dynamics_.prescribe(state_, dt) || grasps) guard_.set_reference(dynamics_.energies(state_));
     for (std::size_t attempt = 0;; ++attempt) {
         dynamics_.begin_attempt();
+        if (attempt > 0) dynamics_.prescribe(state_, dt);
         if (try_step(dt, substeps << attempt)) {
             dynamics_.end_step(true);
+            frames_.end_step(true);
             stats_.steps += 1;
             stats_.last_step_ns = elapsed_ns(start);
             publish();
@@ -245,6 +403,7 @@ void Scene::step(double dt) {
     state_.assign(backup_);
     integrator_->restore_history();
     dynamics_.end_step(false);
+    frames_.end_step(false);
     stats_.last_step_ns = elapsed_ns(start);
     publish();  // the same state, with the counters of the failed attempts
     throw Error(ErrorCode::unstable, message);
@@ -335,6 +494,10 @@ void Scene::publish() {
     }
     const std::pmr::vector<collision::ToolOutput>& tools = tool_channels_.outputs();
     slot->tools.assign(tools.begin(), tools.end());  // reserved when the tools were added
+    slot->obstacles.resize(obstacles_);              // reserved when the obstacles were added
+    const collision::EnvironmentForce* env = obstacles_ > 0 ? environment() : nullptr;
+    for (std::size_t i = 0; i < obstacles_; ++i)
+        slot->obstacles[i] = ObstacleOutput{env->obstacle(i) != nullptr, frames_.pose(env->frame_of(i))};
     publish_contacts(*slot);
     published_.publish(slot);
 }

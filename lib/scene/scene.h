@@ -5,13 +5,16 @@
 // throws enteron::Error with the state exactly as before (counters of the failed attempt
 // aside: substeps, rollbacks and effect time record the work that was done).
 //
-// Threads: one thread at a time drives the scene (step, add_obstacle, add_tool); the C API
-// enforces it. Any thread may post tool commands (tool_channels()) and read the published
-// snapshots.
+// Threads: one thread at a time drives the scene (step, add_obstacle, add_tool, and the
+// changes between steps: obstacle poses, friction and removal, gravity, pins, the
+// mesentery's attachment); the C API enforces it. Any thread may post tool commands
+// (tool_channels()) and read the published snapshots.
 #pragma once
 
 #include <array>
 #include <memory_resource>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "base/logger.h"
@@ -19,11 +22,13 @@
 #include "base/state_io.h"
 #include "collision/collision_spheres.h"
 #include "collision/contact_log.h"
+#include "collision/environment_force.h"
 #include "collision/sphere_loads.h"
 #include "collision/tool.h"
 #include "collision/tool_channels.h"
 #include "mechanics/dynamics.h"
 #include "mechanics/integrator.h"
+#include "mechanics/rigid_frames.h"
 #include "mechanics/stability_guard.h"
 #include "mechanics/state.h"
 #include "scene/scene_config.h"
@@ -38,7 +43,10 @@ public:
     // Allocates everything the scene needs from `memory`. The scene publishes into
     // `published`, which the caller owns (readers may outlive the scene): made with the
     // config's control point count and the same memory, and kept alive past the scene.
-    Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::memory_resource* memory, Logger logger);
+    // `names` name the config's fields in messages (a mesh obstacle's start is checked here,
+    // once its field is built).
+    Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::memory_resource* memory, Logger logger,
+          const FieldNames& names);
 
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
@@ -48,11 +56,33 @@ public:
     // failed, by how much, and the effect and control point where it happened.
     void step(double dt);
 
-    // Adds an obstacle to the environment (validated by the caller, against positions()),
-    // starting the environment effect with the first one. Returns its index. Not during a
-    // step.
-    std::size_t add_obstacle(const collision::Obstacle& obstacle);
-    std::size_t obstacle_count() const { return obstacles_; }
+    // Adds an obstacle to the environment (validated by the caller), starting the
+    // environment effect with the first one; a mesh's field is built here and the bowel's
+    // start checked against it (`name`, `names` for the message). Returns its index. Not
+    // during a step.
+    std::size_t add_obstacle(const collision::Obstacle& obstacle, const std::string& name, const FieldNames& names);
+    // Obstacles added so far, removed ones included (the next index), and those present.
+    std::size_t obstacle_indices() const { return obstacles_; }
+    std::size_t obstacle_count() const;
+    // The obstacle at index, or Error(not_found) naming it.
+    const collision::Obstacle& obstacle(std::size_t index) const;
+    // Between steps (anatomy.md): the pose an obstacle reaches at the end of the next step,
+    // the velocities its contacts see during that step, its friction, its removal.
+    void set_obstacle_pose(std::size_t index, const mechanics::RigidPose& pose);
+    void set_obstacle_velocity(std::size_t index, const Vec3& linear, const Vec3& angular);
+    void set_obstacle_friction(std::size_t index, double friction);
+    void remove_obstacle(std::size_t index);
+    // Where each obstacle rests now (removed ones too), for the snapshot.
+    mechanics::RigidPose obstacle_pose(std::size_t index) const;
+
+    // Between steps: gravity (starting the effect if the scene had none), m/s^2.
+    void set_gravity(const Vec3& gravity);
+    // Between steps: hold a control point where it is, in the world or on an obstacle's
+    // frame (then it moves with it); let it go. unpin returns false if it was not pinned.
+    void pin_point(std::size_t point, std::optional<std::size_t> obstacle);
+    bool unpin_point(std::size_t point);
+    // Between steps: the mesentery's root follows an obstacle's frame (or stays in the world).
+    void attach_mesentery(std::optional<std::size_t> obstacle);
 
     // Adds a tool (validated: unit quaternion), starting the tools effect with the first
     // one; returns its index. Not during a step.
@@ -60,6 +90,10 @@ public:
     // The tools' mailboxes: any thread posts poses, grasps and releases here; the next step
     // takes them (tool_channels.h).
     collision::ToolChannels& tool_channels() { return tool_channels_; }
+    const collision::ToolChannels& tool_channels() const { return tool_channels_; }
+    // Removes tool `index` (it exists and is not removed yet: tools_force.h) and publishes;
+    // allocates nothing.
+    void remove_tool(std::size_t index);
 
     // How deep beyond an obstacle's surface the bowel may be and still start (validate.h),
     // for an obstacle added later.
@@ -94,8 +128,19 @@ private:
     // made on first use and registered with the dynamics, their time counted as the
     // `owner` of that first use.
     collision::SphereLoads& contact_loads(mechanics::EffectId owner);
-    // Starts the environment effect with these obstacles.
-    void add_environment(const std::vector<collision::Obstacle>& obstacles);
+    // The environment effect, made with the first obstacle; Error(not_found) for an index
+    // with no obstacle.
+    collision::EnvironmentForce* environment();
+    collision::EnvironmentForce& environment_with(std::size_t index) const;
+    // The environment effect made (with no obstacle yet), and made and added with its contact log.
+    Owned<collision::EnvironmentForce> make_effect_environment();
+    void add_environment();
+    // A change between steps that changed the stored energy: the guard measures it again
+    // and the change is published.
+    void changed_between_steps();
+    // pin_point and attach_mesentery without refinalize and publish (the constructor's).
+    void pin_point_only(std::size_t point, std::optional<std::size_t> obstacle);
+    void attach_mesentery_only(std::optional<std::size_t> obstacle);
     // Adds a tool, creating the tools effect with the first; no refinalize.
     std::size_t add_tool_effect_only(const collision::ToolConfig& tool);
     // Bounds, substep limit and energies after the set of effects changed.
@@ -117,6 +162,7 @@ private:
     Owned<collision::CollisionSpheres> spheres_;
     Owned<collision::SphereLoads> contact_loads_;  // made with the first of them, like spheres_
     collision::ToolChannels tool_channels_;        // the tools effect uses them: before dynamics_
+    mechanics::RigidFrames frames_;                // obstacles' poses, followed by attachments: before dynamics_
     mechanics::Dynamics dynamics_;
     Owned<mechanics::Integrator> integrator_;
     mechanics::State state_;

@@ -64,13 +64,21 @@ struct MesenteryConfig {
     std::size_t attachments = 60;
     double stiffness = 5.0;             // N/m per spring
     double rest_length = 0.0;           // m; 0: each spring's initial length
+    std::optional<std::size_t> obstacle;  // the root follows this obstacle's frame
 };
 
 enum PinnedEnds : int32_t { pin_none = 0, pin_first = 1, pin_last = 2, pin_both = 3 };
 
+// A control point held on an obstacle's frame, moving with it.
+struct PinAttachment {
+    uint32_t point = 0;
+    std::size_t obstacle = 0;
+};
+
 struct PinnedConfig {
     int32_t ends = pin_none;
     std::vector<uint32_t> points;  // further control point indices
+    std::vector<PinAttachment> attached;  // points held on obstacles (JSON pinned.attached)
     int32_t clamped = pin_none;    // ends held in place and in direction (mechanics/clamped_ends.h)
 };
 
@@ -94,6 +102,7 @@ inline collision::Obstacle default_obstacle(collision::ObstacleKind kind) {
             obstacle.extent = {0.0, 0.0, 0.1};
             obstacle.radius = 0.05;
             break;
+        case collision::ObstacleKind::mesh: break;
     }
     return obstacle;
 }

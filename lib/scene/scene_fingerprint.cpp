@@ -1,5 +1,7 @@
 #include "scene/scene_fingerprint.h"
 
+#include "collision/triangle_mesh.h"
+
 namespace enteron::scene {
 
 namespace {
@@ -50,12 +52,18 @@ void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
         add(f, m.attachments);
         f.add(m.stiffness);
         f.add(m.rest_length);
+        add(f, m.obstacle ? *m.obstacle + 1 : 0);
     });
     add_optional(f, config.pinned, [&](const PinnedConfig& p) {
         add(f, static_cast<std::size_t>(p.ends));
         add(f, static_cast<std::size_t>(p.clamped));
         add(f, p.points.size());
         for (const uint32_t point : p.points) add(f, point);
+        add(f, p.attached.size());
+        for (const PinAttachment& a : p.attached) {
+            add(f, a.point);
+            add(f, a.obstacle);
+        }
     });
 
     const collision::ContactParameters& contact = config.collision.contact;
@@ -76,6 +84,14 @@ void add_to_fingerprint(Fingerprint& f, const collision::Obstacle& obstacle) {
     add(f, obstacle.center);
     add(f, obstacle.extent);
     f.add(obstacle.radius);
+    // A mesh by its data (its pose and friction belong to the state: frames, environment).
+    f.add(obstacle.voxel_size);
+    if (obstacle.mesh) {
+        add(f, obstacle.mesh->vertices.size());
+        f.add_bytes(obstacle.mesh->vertices.data(), obstacle.mesh->vertices.size() * sizeof(double));
+        add(f, obstacle.mesh->indices.size());
+        f.add_bytes(obstacle.mesh->indices.data(), obstacle.mesh->indices.size() * sizeof(uint32_t));
+    }
 }
 
 void add_to_fingerprint(Fingerprint& f, const collision::ToolConfig& tool) {
@@ -86,6 +102,11 @@ void add_to_fingerprint(Fingerprint& f, const collision::ToolConfig& tool) {
     f.add(s.grasp_margin);
     f.add(s.grasp_stiffness);
     f.add(s.grasp_damping);
+    add(f, static_cast<std::size_t>(s.mode));
+    f.add(s.coupling_stiffness);
+    f.add(s.coupling_damping);
+    f.add(s.friction);
+    f.add(uint64_t{s.passivity_limiter});
     // Not its start pose: where a tool is belongs to the state.
 }
 

@@ -35,6 +35,7 @@ void Scene::save_sections(StateWriter& out) const {
     out.f64(reference.potential);
     out.f64(reference.deformation);
     out.end_section();
+    frames_.save_state(out);
     dynamics_.save_state(out);
     integrator_->save_state(out);
 }
@@ -66,6 +67,7 @@ void Scene::restore_sections(StateReader& in) {
         guard_.set_rollbacks(rollbacks);
         guard_.set_reference(reference);
     }
+    frames_.restore_state(in);
     dynamics_.restore_state(in);
     integrator_->restore_state(in);
 }
@@ -90,6 +92,11 @@ void Scene::restore_state(const void* data, std::size_t size) {
     // The spheres are placed again for the restored control points, and every cache keyed
     // on a placement with them (the same bits: a placement depends on the points only).
     if (spheres_) spheres_->forget_placement();
+    // The stability bounds follow the restored obstacles' friction and gravity (the same
+    // bits when they did not change); the guard keeps the saved reference.
+    const mechanics::Dynamics::Energies reference = guard_.reference();
+    refinalize();
+    guard_.set_reference(reference);
     publish();
 }
 

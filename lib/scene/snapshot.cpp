@@ -33,7 +33,7 @@ void SnapshotPublisher::publish(Snapshot* slot) { latest_.store(static_cast<std:
 // latest is copied into a reserved slot, that one is published, and the old latest is
 // reserved once its last reader is gone (no new reader pins a slot that is not the latest).
 template <class Reserve>
-void SnapshotPublisher::reserve_each_slot(Reserve&& reserve) {
+void SnapshotPublisher::reserve_each(Reserve&& reserve) {
     const auto wait_unread = [this](std::size_t slot) {
         while (readers_[slot].load() != 0) std::this_thread::yield();  // a reader is copying: microseconds
     };
@@ -51,6 +51,7 @@ void SnapshotPublisher::reserve_each_slot(Reserve&& reserve) {
     moved.stats = latest.stats;
     moved.effects = latest.effects;
     moved.tools.assign(latest.tools.begin(), latest.tools.end());
+    moved.obstacles.assign(latest.obstacles.begin(), latest.obstacles.end());
     moved.contacts.assign(latest.contacts.begin(), latest.contacts.end());
     moved.contact_totals = latest.contact_totals;
     publish(&moved);
@@ -59,11 +60,15 @@ void SnapshotPublisher::reserve_each_slot(Reserve&& reserve) {
 }
 
 void SnapshotPublisher::reserve_tools(std::size_t count) {
-    reserve_each_slot([count](Snapshot& slot) { slot.tools.reserve(count); });
+    reserve_each([&](Snapshot& slot) { slot.tools.reserve(count); });
 }
 
 void SnapshotPublisher::reserve_contacts(std::size_t count) {
-    reserve_each_slot([count](Snapshot& slot) { slot.contacts.reserve(count); });
+    reserve_each([&](Snapshot& slot) { slot.contacts.reserve(count); });
+}
+
+void SnapshotPublisher::reserve_obstacles(std::size_t count) {
+    reserve_each([&](Snapshot& slot) { slot.obstacles.reserve(count); });
 }
 
 SnapshotPublisher::Reader::Reader(const SnapshotPublisher& publisher) : publisher_(publisher) {

@@ -23,6 +23,7 @@
 #include "collision/contact_log.h"
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
+#include "mechanics/rigid_frames.h"
 #include "spline/catmull_rom.h"
 
 namespace enteron::scene {
@@ -57,12 +58,20 @@ struct EffectStats {
     uint64_t total_time_ns = 0;
 };
 
+// Where an obstacle rests in a published state.
+struct ObstacleOutput {
+    bool present = false;  // false once removed
+    mechanics::RigidPose pose;
+};
+
 struct Snapshot {
-    explicit Snapshot(std::pmr::memory_resource* memory) : control_points(memory), tools(memory), contacts(memory) {}
+    explicit Snapshot(std::pmr::memory_resource* memory)
+        : control_points(memory), tools(memory), obstacles(memory), contacts(memory) {}
     std::pmr::vector<double> control_points;  // x y z per point, m
     SceneStats stats;
     std::array<EffectStats, mechanics::kEffectCount> effects{};
     std::pmr::vector<collision::ToolOutput> tools;  // by tool index
+    std::pmr::vector<ObstacleOutput> obstacles;     // by obstacle index
     std::pmr::vector<collision::ContactRecord> contacts;  // see ContactTotals
     ContactTotals contact_totals;
 };
@@ -86,6 +95,8 @@ public:
     void reserve_tools(std::size_t count);
     // Makes room for `count` contact records in every slot, likewise.
     void reserve_contacts(std::size_t count);
+    // The same for `count` obstacles.
+    void reserve_obstacles(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
     // The spline's end treatment of every snapshot's axis.
@@ -108,10 +119,9 @@ public:
     };
 
 private:
-    // Calls reserve(slot) on every slot, each while the stepping thread may touch it (see
-    // reserve_tools in snapshot.cpp).
+    // Runs reserve(slot) on every slot by the rules of begin_write (reserve_tools).
     template <class Reserve>
-    void reserve_each_slot(Reserve&& reserve);
+    void reserve_each(Reserve&& reserve);
 
     std::pmr::vector<Snapshot> slots_;
     mutable std::array<std::atomic<uint32_t>, kSlots> readers_{};  // readers pinning each slot

@@ -60,6 +60,7 @@ const char* obstacle_kind_name(collision::ObstacleKind kind) {
         case collision::ObstacleKind::plane: return "plane";
         case collision::ObstacleKind::sphere: return "sphere";
         case collision::ObstacleKind::capsule: return "capsule";
+        case collision::ObstacleKind::mesh: return "mesh";
     }
     return "?";
 }
@@ -71,17 +72,19 @@ void check_clearance(const collision::Obstacle& o, const std::string& name, Erro
                      std::size_t count, const StartClearance& clearance) {
     // Beyond this the escape speed passes max_speed.
     const double deepest_possible = clearance.max_speed / clearance.escape_rate - clearance.radius;
+    const mechanics::FramePlacement frame = mechanics::placement_at(o.pose);
     std::vector<std::size_t> stuck;
     double deepest = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
-        const double depth = collision::beyond_surface(o, point_at(points, i));
+        const double depth = collision::beyond_surface(o, frame.to_local(point_at(points, i)));
         if (depth > 0.0 && depth > deepest_possible) {
             stuck.push_back(i);
             deepest = std::max(deepest, depth);
         }
     }
     if (stuck.empty()) return;
-    const bool organ = o.kind == collision::ObstacleKind::sphere || o.kind == collision::ObstacleKind::capsule;
+    const bool organ = o.kind == collision::ObstacleKind::sphere || o.kind == collision::ObstacleKind::capsule ||
+                       (o.kind == collision::ObstacleKind::mesh && !o.field->outside_is_solid());
     const char* where = organ ? "inside it" : o.kind == collision::ObstacleKind::plane ? "behind it" : "outside it";
     const double escape = (deepest + clearance.radius) * clearance.escape_rate;
     throw Error(code, name + " (" + obstacle_kind_name(o.kind) + ") has control points " + index_ranges(stuck) +
@@ -129,7 +132,9 @@ public:
     void pinned(const PinnedConfig& pinned, std::size_t control_points) const;
     void clamped_tangents(const PinnedConfig& pinned, const double* start_points, std::size_t control_points) const;
     void collision(const CollisionConfig& collision, double radius) const;
-    void obstacle(const collision::Obstacle& obstacle, const std::string& name) const;
+    collision::Obstacle obstacle(const collision::Obstacle& obstacle, const std::string& name) const;
+    void mesh(const collision::TriangleMesh& mesh, const std::string& name) const;
+    Eigen::Quaterniond quaternion(const std::array<double, 4>& wxyz, const std::string& name) const;
     collision::ToolPose tool_pose(const collision::ToolPose& pose, const std::string& prefix) const;
     void tool_settings(const collision::ToolSettings& settings, const std::string& prefix) const;
 
@@ -308,12 +313,12 @@ void Validator::collision(const CollisionConfig& collision, double radius) const
     check(collision.contact.slip_speed, Field::contact_slip_speed).above(0.0);
 }
 
-void Validator::obstacle(const collision::Obstacle& o, const std::string& base) const {
+collision::Obstacle Validator::obstacle(const collision::Obstacle& o, const std::string& base) const {
     using collision::ObstacleKind;
     const auto field = [&](const char* key) { return base + "." + key; };
     check_named(static_cast<int32_t>(o.kind), field("kind"))
         .at_least(static_cast<int32_t>(ObstacleKind::box_inside))
-        .at_most(static_cast<int32_t>(ObstacleKind::capsule));
+        .at_most(static_cast<int32_t>(ObstacleKind::mesh));
     const auto finite = [&](const Vec3& v, const char* key) {
         for (std::size_t k = 0; k < 3; ++k) check_named(v[k], indexed(field(key), k));
     };
@@ -342,7 +347,56 @@ void Validator::obstacle(const collision::Obstacle& o, const std::string& base) 
             finite(o.extent, "end");
             check_named(o.radius, field("radius")).above(0.0);
             break;
+        case ObstacleKind::mesh:
+            if (!o.mesh && !o.field) fail(field("mesh"), "must be given for a mesh obstacle");
+            if (o.mesh) mesh(*o.mesh, base);
+            check_named(o.voxel_size, field("voxel_size")).at_least(0.0);
+            break;
     }
+    // Every kind: its frame, and its friction (negative: the scene's).
+    finite(o.pose.position, "position");
+    check_named(o.friction, field("friction"));
+    collision::Obstacle valid = o;
+    const Eigen::Quaterniond& q = o.pose.orientation;
+    valid.pose.orientation = quaternion({q.w(), q.x(), q.y(), q.z()}, field("orientation"));
+    return valid;
+}
+
+void Validator::mesh(const collision::TriangleMesh& m, const std::string& base) const {
+    const auto field = [&](const char* key) { return base + "." + key; };
+    const std::size_t triangles = m.triangle_count();
+    if (m.indices.size() % 3 != 0 || m.vertices.size() % 3 != 0)
+        fail(field("mesh"), "must have 3 coordinates per vertex and 3 indices per triangle");
+    if (triangles == 0) fail(field("mesh"), "must have at least one triangle, got 0");
+    if (triangles > collision::kMaxMeshTriangles)
+        fail(field("mesh"), "has " + std::to_string(triangles) + " triangles, more than the " +
+                                std::to_string(collision::kMaxMeshTriangles) + " a mesh obstacle may have");
+    for (std::size_t i = 0; i < m.vertices.size(); ++i)
+        if (!std::isfinite(m.vertices[i]))
+            fail(field("vertices") + "[" + std::to_string(i / 3) + "]",
+                 "must be finite, got " + format_number(m.vertices[i]) + " for coordinate " + std::to_string(i % 3));
+    const std::size_t vertices = m.vertex_count();
+    for (std::size_t i = 0; i < m.indices.size(); ++i)
+        if (m.indices[i] >= vertices)
+            fail(field("triangles") + "[" + std::to_string(i / 3) + "]",
+                 "refers to vertex " + std::to_string(m.indices[i]) + ", but the mesh has " + std::to_string(vertices) +
+                     " vertices (indices count from 0)");
+    bool some_area = false;
+    for (std::size_t t = 0; t < triangles && !some_area; ++t)
+        some_area = (m.corner(t, 1) - m.corner(t, 0)).cross(m.corner(t, 2) - m.corner(t, 0)).squaredNorm() > 0.0;
+    if (!some_area) fail(field("triangles"), "are all of zero area: nothing to collide with");
+}
+
+Eigen::Quaterniond Validator::quaternion(const std::array<double, 4>& q, const std::string& name) const {
+    double norm2 = 0.0;
+    for (std::size_t c = 0; c < 4; ++c) {
+        check_named(q[c], indexed(name, c));
+        norm2 += q[c] * q[c];
+    }
+    const double norm = std::sqrt(norm2);
+    if (!(norm > 1e-12) || !std::isfinite(norm))
+        fail(name, "must be a non-zero quaternion (w x y z), got one of norm " + format_number(norm));
+    return Eigen::Quaterniond(q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm);
 }
 
 // Called at 1 kHz for every ent_tool_set_pose: names are made only for a message.
@@ -371,6 +425,12 @@ void Validator::tool_settings(const collision::ToolSettings& s, const std::strin
     check_named(s.grasp_margin, prefix + n.grasp_margin).at_least(0.0).at_most(kMaxToolRadius);
     check_named(s.grasp_stiffness, prefix + n.grasp_stiffness).above(0.0);
     check_named(s.grasp_damping, prefix + n.grasp_damping).at_least(0.0);
+    check_named(static_cast<int32_t>(s.mode), prefix + n.mode)
+        .at_least(static_cast<int32_t>(collision::ToolMode::proxy))
+        .at_most(static_cast<int32_t>(collision::ToolMode::direct));
+    check_named(s.coupling_stiffness, prefix + n.coupling_stiffness).above(0.0);
+    check_named(s.coupling_damping, prefix + n.coupling_damping).at_least(0.0);
+    check_named(s.friction, prefix + n.friction);  // finite; < 0: the scene's
 }
 
 FieldNames make_field_names(ErrorCode code, bool shape_points_nested, const ToolFieldNames& tool,
@@ -386,7 +446,7 @@ const FieldNames& json_field_names() {
     static const FieldNames names = make_field_names(
         ErrorCode::invalid_scene, true,
         {"radius", "length", "max_force", "grasp_margin", "grasp_stiffness", "grasp_damping", "position",
-         "orientation"},
+         "orientation", "mode", "coupling_stiffness", "coupling_damping", "friction"},
         {
             {Field::length, "intestine.length"},
             {Field::radius, "intestine.radius"},
@@ -433,7 +493,8 @@ const FieldNames& c_field_names() {
     static const FieldNames names = make_field_names(
         ErrorCode::invalid_argument, false,
         {"radius_m", "length_m", "max_force_N", "grasp_margin_m", "grasp_stiffness_N_per_m",
-         "grasp_damping_N_s_per_m", "position_m", "orientation_wxyz"},
+         "grasp_damping_N_s_per_m", "position_m", "orientation_wxyz", "mode", "coupling_stiffness_N_per_m",
+         "coupling_damping_N_s_per_m", "friction"},
         {
             {Field::length, "length_m"},
             {Field::radius, "radius_m"},
@@ -486,7 +547,21 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     if (config.pinned) validator.pinned(*config.pinned, config.intestine.control_points);
     validator.collision(config.collision, config.intestine.radius);
     for (std::size_t i = 0; i < config.environment.size(); ++i)
-        validator.obstacle(config.environment[i], indexed(names[Field::obstacle], i));
+        config.environment[i] = validator.obstacle(config.environment[i], indexed(names[Field::obstacle], i));
+    // What follows an obstacle must name one.
+    const std::size_t obstacles = config.environment.size();
+    if (config.pinned)
+        for (std::size_t i = 0; i < config.pinned->attached.size(); ++i) {
+            const PinAttachment& pin = config.pinned->attached[i];
+            // Only JSON attaches pins in the description (C pins with ent_scene_pin_point).
+            const std::string name = indexed("pinned.attached", i);
+            validator.check_named(std::size_t{pin.point}, name + ".control_point")
+                .below(config.intestine.control_points, names[Field::control_points]);
+            validator.check_named(pin.obstacle, name + ".obstacle").below(obstacles, "the number of obstacles");
+        }
+    if (config.mesentery && config.mesentery->obstacle)
+        validator.check_named(*config.mesentery->obstacle, "mesentery.obstacle")
+            .below(obstacles, "the number of obstacles");
     for (std::size_t i = 0; i < config.tools.size(); ++i) {
         const std::string prefix = indexed("tools", i) + ".";
         validator.tool_settings(config.tools[i].settings, prefix);
@@ -498,9 +573,11 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     build_shape(config.intestine.shape, config.intestine.length, n, config.start_points.data());
     if (config.pinned) validator.clamped_tangents(*config.pinned, config.start_points.data(), n);
     const StartClearance clearance = start_clearance(config);
+    // A mesh is checked by the scene, once its distance field is built.
     for (std::size_t i = 0; i < config.environment.size(); ++i)
-        check_clearance(config.environment[i], indexed(names[Field::obstacle], i), names.code,
-                        config.start_points.data(), n, clearance);
+        if (config.environment[i].kind != collision::ObstacleKind::mesh)
+            check_clearance(config.environment[i], indexed(names[Field::obstacle], i), names.code,
+                            config.start_points.data(), n, clearance);
     return config;
 }
 
@@ -524,12 +601,15 @@ FieldSet fields_apart_from_defaults(const SceneConfig& config) {
     return apart;
 }
 
-void validate_obstacle(const collision::Obstacle& obstacle, const std::string& name, const FieldNames& names,
-                       const double* control_points, std::size_t count, const StartClearance* clearance) {
+collision::Obstacle validate_obstacle(const collision::Obstacle& obstacle, const std::string& name,
+                                     const FieldNames& names, const double* control_points, std::size_t count,
+                                     const StartClearance* clearance) {
     const FieldSet all = FieldSet().set();
-    Validator(names, all).obstacle(obstacle, name);
-    if (control_points != nullptr && clearance != nullptr)
-        check_clearance(obstacle, name, names.code, control_points, count, *clearance);
+    collision::Obstacle valid = Validator(names, all).obstacle(obstacle, name);
+    const bool unprepared_mesh = valid.kind == collision::ObstacleKind::mesh && !valid.field;
+    if (control_points != nullptr && clearance != nullptr && !unprepared_mesh)
+        check_clearance(valid, name, names.code, control_points, count, *clearance);
+    return valid;
 }
 
 collision::ToolConfig validate_tool(const collision::ToolConfig& tool, const std::string& prefix,

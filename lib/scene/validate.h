@@ -73,6 +73,10 @@ struct ToolFieldNames {
     const char* grasp_damping;
     const char* position;
     const char* orientation;
+    const char* mode;
+    const char* coupling_stiffness;
+    const char* coupling_damping;
+    const char* friction;
 };
 
 // How the fields are called in messages, and what error a bad value raises.
@@ -125,13 +129,15 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
 // value differs from the default: what a C caller changed after ent_scene_desc_default.
 FieldSet fields_apart_from_defaults(const SceneConfig& config);
 
-// Checks one obstacle (kind in range, finite, sizes > 0, a non-zero plane normal), named
-// `name` ("environment[2]", "obstacle[0]"): "environment[2].radius must be > 0, got -1".
-// With control points (count x 3, m) and a clearance, also refuses an obstacle that has
-// some of them too far beyond its surface to start (as validate() does), naming which.
-void validate_obstacle(const collision::Obstacle& obstacle, const std::string& name, const FieldNames& names,
-                       const double* control_points = nullptr, std::size_t count = 0,
-                       const StartClearance* clearance = nullptr);
+// Checks one obstacle (kind in range, finite, sizes > 0, a non-zero plane normal, a mesh's
+// vertices finite and indices in range, a non-zero orientation), named `name`
+// ("environment[2]", "obstacle[0]"): "environment[2].radius must be > 0, got -1". Returns it
+// with a unit orientation. With control points (count x 3, m) and a clearance, also
+// refuses an obstacle that has some of them too far beyond its surface to start (as
+// validate() does), naming which; a mesh only once its field is prepared.
+collision::Obstacle validate_obstacle(const collision::Obstacle& obstacle, const std::string& name,
+                                     const FieldNames& names, const double* control_points = nullptr,
+                                     std::size_t count = 0, const StartClearance* clearance = nullptr);
 
 // Checks a tool's settings and pose, its fields named with `prefix` ("tools[1].", or ""
 // in C); returns it with a unit quaternion.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skinning/bend_calibration.h"
 #include "skinning/frame_buffers.h"
 #include "spline/catmull_rom.h"
 
@@ -10,7 +11,8 @@ namespace enteron::skinning {
 
 template <typename ArcLengthOf>
 void AxisSamples::sample(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                         ArcLengthOf arc_length_of) {
+                         ArcLengthOf arc_length_of, Curvature curvature) {
+    resize_buffer(curvature_, curvature == Curvature::compute ? position_.size() : 0);
     Vec3 previous_tangent{1.0, 0.0, 0.0};
     for (std::size_t k = 0; k <= intervals_; ++k) {
         const double s = k == intervals_ ? double(count - 1) : table.parameter_at(arc_length_of(k));
@@ -20,33 +22,65 @@ void AxisSamples::sample(const spline::ArcLengthTable& table, const double* poin
         position_[phantoms_ + k] = spline::evaluate(points_xyz, spline::weights_at(count, s, spline::Derivative::value));
         tangent_[phantoms_ + k] = t;
         previous_tangent = t;
+        if (curvature == Curvature::compute) curvature_[phantoms_ + k] = curvature_vector(points_xyz, count, s, d, t);
     }
 }
 
+Vec3 AxisSamples::curvature_vector(const double* points_xyz, std::size_t count, double s, const Vec3& d,
+                                   const Vec3& t) {
+    // dt/ds = (P'' - (P''.t) t) / |P'|^2, P' and P'' the derivatives in the spline parameter.
+    // In the end segments P'' swings from minus to twice the bend of their neighbours (the
+    // end condition's linear extrapolation, catmull_rom.h): there a window sees the bend of
+    // the inner knot, taken instead.
+    const double inner = std::clamp(s, 1.0, std::max(1.0, double(count) - 2.0));
+    const Vec3 dd = spline::evaluate(points_xyz, spline::weights_at(count, inner, spline::Derivative::second));
+    const double speed2 = d.squaredNorm();
+    return speed2 > 0.0 ? Vec3((1.0 / speed2) * (dd - dd.dot(t) * t)) : Vec3::Zero();
+}
+
+std::size_t AxisSamples::intervals_for(double length, double spacing) {
+    return std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(length / spacing)));
+}
+
 void AxisSamples::build(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                        double spacing, double extension) {
+                        std::size_t intervals, double extension, Curvature curvature) {
     arc_.clear();
     length_ = table.total_length();
-    intervals_ = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(length_ / spacing)));
+    intervals_ = std::max<std::size_t>(1, intervals);
     spacing_ = length_ / double(intervals_);
     phantoms_ = spacing_ > 0.0 && extension > 0.0 ? static_cast<std::size_t>(std::ceil(extension / spacing_)) : 0;
     const std::size_t total = intervals_ + 1 + 2 * phantoms_;
     resize_buffer(position_, total);
     resize_buffer(tangent_, total);
 
-    sample(table, points_xyz, count, [&](std::size_t k) { return double(k) * spacing_; });
-    const Vec3 first = position_[phantoms_], last = position_[phantoms_ + intervals_];
-    const Vec3 t0 = tangent_[phantoms_], t1 = tangent_[phantoms_ + intervals_];
-    for (std::size_t j = 1; j <= phantoms_; ++j) {
-        position_[phantoms_ - j] = first - (double(j) * spacing_) * t0;
-        tangent_[phantoms_ - j] = t0;
-        position_[phantoms_ + intervals_ + j] = last + (double(j) * spacing_) * t1;
-        tangent_[phantoms_ + intervals_ + j] = t1;
-    }
+    sample(table, points_xyz, count, [&](std::size_t k) { return double(k) * spacing_; }, curvature);
+    if (phantoms_ == 0) return;
+    // The phantoms continue each end along its osculating circle (a straight line where it
+    // does not bend), so that a window reaching past an end sees the same bend as one
+    // inside (bend_calibration.h). The curvature is capped at a quarter turn over the
+    // phantoms, so that a kink at an end cannot curl them back onto the axis.
+    const double reach = double(phantoms_) * spacing_, largest = 0.5 * kPi / reach;
+    const auto extend = [&](std::size_t end, double parameter, double direction) {
+        const Vec3 t = tangent_[end];
+        const Vec3 d = spline::evaluate(points_xyz, spline::weights_at(count, parameter, spline::Derivative::first));
+        const Vec3 bend = curvature_vector(points_xyz, count, parameter, d, t);
+        const double k = std::min(bend.norm(), largest);
+        const Vec3 inward = normalized_or(bend, Vec3::Zero());
+        for (std::size_t j = 1; j <= phantoms_; ++j) {
+            const double s = direction * double(j) * spacing_;
+            const Vec3 arc = BendCalibration::arc_point(k, s);  // (along t, towards the centre, 0)
+            const std::size_t i = direction > 0.0 ? end + j : end - j;
+            position_[i] = position_[end] + arc.x() * t + arc.y() * inward;
+            tangent_[i] = std::cos(k * s) * t + std::sin(k * s) * inward;
+            if (curvature == Curvature::compute) curvature_[i] = k * inward;
+        }
+    };
+    extend(phantoms_, 0.0, -1.0);
+    extend(phantoms_ + intervals_, double(count - 1), 1.0);
 }
 
 void AxisSamples::build_at(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                           const std::vector<double>& arc_lengths) {
+                           const std::vector<double>& arc_lengths, Curvature curvature) {
     length_ = table.total_length();
     intervals_ = arc_lengths.size() - 1;
     spacing_ = length_ / double(intervals_);
@@ -55,7 +89,7 @@ void AxisSamples::build_at(const spline::ArcLengthTable& table, const double* po
     resize_buffer(tangent_, arc_lengths.size());
     resize_buffer(arc_, arc_lengths.size());
     std::copy(arc_lengths.begin(), arc_lengths.end(), arc_.begin());
-    sample(table, points_xyz, count, [&](std::size_t k) { return arc_lengths[k]; });
+    sample(table, points_xyz, count, [&](std::size_t k) { return arc_lengths[k]; }, curvature);
 }
 
 }  // namespace enteron::skinning

@@ -1,8 +1,9 @@
 // The axis sampled evenly in arc length: the common input of every skin. Positions and
 // unit tangents come from the spline itself (not a polyline), so a ring or a skeleton
-// point sits exactly on the axis. Optionally the samples continue straight beyond both
-// ends along the end tangents ("phantom" samples), so that a local window near an end sees
-// as much skeleton as in the middle and the radius does not shrink there.
+// point sits exactly on the axis. Optionally the samples continue beyond both ends along
+// each end's osculating circle (straight where the end does not bend; "phantom" samples),
+// so that a local window near an end sees as much skeleton, bent as much, as in the middle
+// and the radius does not change there.
 #pragma once
 
 #include <cstddef>
@@ -15,16 +16,21 @@ namespace enteron::skinning {
 
 class AxisSamples {
 public:
-    // Samples the spline of `count` control points (x y z each) with a spacing as close to
-    // `spacing` as divides the length evenly, plus ceil(extension / spacing) phantom
-    // samples beyond each end. Allocates only when the sample count grows.
-    void build(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count, double spacing,
-               double extension);
+    // What the samples carry besides positions and tangents.
+    enum class Curvature : bool { skip = false, compute = true };
+
+    // Samples the spline of `count` control points (x y z each) at `intervals` (>= 1) equal
+    // steps of arc length, plus ceil(extension / step) phantom samples beyond each end.
+    // Allocates only when the sample count grows.
+    void build(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
+               std::size_t intervals, double extension, Curvature curvature);
+    // The intervals whose step is closest to `spacing` along `length` (both m), at least 1.
+    static std::size_t intervals_for(double length, double spacing);
 
     // Samples the spline at the given arc lengths (increasing, from 0 to the total length;
     // no phantoms), e.g. rings placed closer where the axis bends (ring_placement.h).
     void build_at(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                  const std::vector<double>& arc_lengths);
+                  const std::vector<double>& arc_lengths, Curvature curvature);
 
     std::size_t size() const { return position_.size(); }  // all samples, phantoms included
     std::size_t phantoms() const { return phantoms_; }        // phantom samples before (and after) the axis
@@ -35,18 +41,33 @@ public:
     double arc_length(std::size_t i) const {
         return arc_.empty() ? (double(i) - double(phantoms_)) * spacing_ : arc_[i];
     }
+    // The same over the length, [0, 1] on the axis: exactly (i - phantoms) / intervals when
+    // even, so that it does not change while the axis stretches.
+    double fraction(std::size_t i) const {
+        if (!arc_.empty()) return length_ > 0.0 ? arc_[i] / length_ : 0.0;
+        return (double(i) - double(phantoms_)) / double(intervals_);
+    }
 
     const Vec3& position(std::size_t i) const { return position_[i]; }
     const Vec3& tangent(std::size_t i) const { return tangent_[i]; }
+    // Curvature vector dt/ds of sample i (towards the centre of curvature, length 1 / radius
+    // of curvature), 1/m; the phantoms' that of their end. Only if built with
+    // Curvature::compute.
+    const Vec3& curvature(std::size_t i) const { return curvature_[i]; }
 
 private:
     // Positions and tangents of the real samples k = 0 .. intervals_, at arc_length_of(k).
     template <typename ArcLengthOf>
     void sample(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                ArcLengthOf arc_length_of);
+                ArcLengthOf arc_length_of, Curvature curvature);
+
+    // dt/ds of the spline at parameter s, from its first derivative d there and t = d / |d|.
+    static Vec3 curvature_vector(const double* points_xyz, std::size_t count, double s, const Vec3& d,
+                                 const Vec3& t);
 
     std::vector<Vec3> position_;
     std::vector<Vec3> tangent_;
+    std::vector<Vec3> curvature_;
     std::vector<double> arc_;  // arc length of each sample when uneven (build_at), else empty
     std::size_t phantoms_ = 0;
     std::size_t intervals_ = 0;

@@ -9,17 +9,21 @@
 namespace enteron::skinning {
 
 ConvolutionSkin::ConvolutionSkin(const SkinSettings& settings) : Skin(settings) {
-    // Calibration: the windowed field of a straight skeleton (segments of the skeleton
-    // spacing along x, clipped to [-D, D]) at distance R from it.
-    const double D = settings_.window, h = settings_.skeleton_spacing;
+    // Calibration: the windowed field of a skeleton (chords of the skeleton spacing along an
+    // arc of curvature k, clipped to [-D, D]) at distance R from it, in direction c.
+    const double D = settings_.window, h = settings_.skeleton_spacing, R = settings_.radius;
     const auto pieces = static_cast<std::size_t>(std::ceil(2.0 * D / h));
-    double sum = 0.0;
-    const Vec3 p{0.0, settings_.radius, 0.0};
-    for (std::size_t i = 0; i < pieces; ++i) {
-        const double x0 = -D + double(i) * h, x1 = std::min(D, x0 + h);
-        sum += segment_field(p, Vec3{x0, 0, 0}, Vec3{x1, 0, 0});
-    }
-    iso_ = sum;
+    auto window_field = [&](double k, double c) {
+        const Vec3 p = BendCalibration::point_off_arc(R, c);
+        double sum = 0.0;
+        for (std::size_t i = 0; i < pieces; ++i) {
+            const double x0 = -D + double(i) * h, x1 = std::min(D, x0 + h);
+            sum += segment_field(p, BendCalibration::arc_point(k, x0), BendCalibration::arc_point(k, x1));
+        }
+        return sum;
+    };
+    iso_ = window_field(0.0, 0.0);
+    bend_.build(R, window_field);
 }
 
 void ConvolutionSkin::gather_window(double s) {
@@ -46,7 +50,7 @@ double ConvolutionSkin::field(Vec3 p) const {
     return sum;
 }
 
-double ConvolutionSkin::solve_ray(Vec3 origin, Vec3 direction, double start) {
+double ConvolutionSkin::solve_ray(Vec3 origin, Vec3 direction, double start, double iso) {
     const double R = settings_.radius, D = settings_.window;
     const double t_max = 3.0 * R;
     double lo = 0.0, hi = t_max;
@@ -54,15 +58,17 @@ double ConvolutionSkin::solve_ray(Vec3 origin, Vec3 direction, double start) {
     for (int iteration = 0; iteration < 40; ++iteration) {
         const double value = field(origin + t * direction);
         ++evaluations_;
-        const double f = value - iso_;
+        const double f = value - iso;
         if (f > 0.0) lo = t; else hi = t;
         // Slope of the field of a straight window along the ray: exact for a straight axis,
         // a good model elsewhere; the bracket [lo, hi] catches the rest.
         const double slope = value * (-2.0 / t - t / (t * t + D * D));
-        // Converged: the Newton step is negligible. (Tested before the bracket: on a
-        // solution, f = 0 puts t itself at the end of the bracket, and bisecting away from
-        // it cost a warm-started vertex several evaluations instead of one.)
-        if (slope < 0.0 && std::fabs(f / slope) < 1e-7 * R) return t - f / slope;
+        // Converged: the Newton step is negligible; t itself is returned, so that the same
+        // axis again (warm start on this solution) gives the same mesh to the last bit.
+        // (Tested before the bracket: on a solution, f = 0 puts t itself at the end of the
+        // bracket, and bisecting away from it cost a warm-started vertex several evaluations
+        // instead of one.)
+        if (slope < 0.0 && std::fabs(f / slope) < 1e-7 * R) return t;
         double next = slope < 0.0 ? t - f / slope : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         t = next;
@@ -74,22 +80,30 @@ void ConvolutionSkin::rebuild() {
     const double R = settings_.radius;
     const std::size_t S = settings_.segments;
     evaluations_ = 0;
-    skeleton_.build(table_, points_.data(), axis_count(), settings_.skeleton_spacing,
-                    settings_.window + settings_.skeleton_spacing);
+    const double length = table_.total_length();
+    skeleton_.build(table_, points_.data(), axis_count(), AxisSamples::intervals_for(length, settings_.skeleton_spacing),
+                    settings_.window + settings_.skeleton_spacing, AxisSamples::Curvature::skip);
+    const std::size_t even_intervals = ring_intervals(length);
     if (settings_.ring_chord_error > 0.0) {
-        // Levels of detail: rings closer where the axis bends (ring_placement.h).
+        // Levels of detail: rings closer where the axis bends (ring_placement.h), their
+        // count in steps of a sixteenth of the even count when the topology is to stay.
         const double min_spacing = std::max(0.05 * R, settings_.ring_spacing / 16.0);
+        const std::size_t level_step = settings_.stable_topology ? (even_intervals + 15) / 16 : 0;
         rings_.build_at(table_, points_.data(), axis_count(),
-                        placement_.place(skeleton_, R, settings_.ring_spacing, min_spacing, settings_.ring_chord_error));
+                        placement_.place(skeleton_, R, settings_.ring_spacing, min_spacing, settings_.ring_chord_error,
+                                         level_step),
+                        AxisSamples::Curvature::compute);
     } else {
-        rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
+        rings_.build(table_, points_.data(), axis_count(), even_intervals, 0.0, AxisSamples::Curvature::compute);
     }
     const std::size_t n = rings_.size();
-    const double length = rings_.length();
     frames_.build(&rings_.position(0), &rings_.tangent(0), n);
     if (grid_.segments() != S) previous_u_.clear();  // new vertex directions: no previous solution
-    grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
-    mesh_.resize_vertices(grid_.vertex_count());
+    if (grid_.layout(n, S, settings_.cap_rings, mesh_.indices)) {
+        topology_changed_ = true;
+        mesh_.resize_vertices(grid_.vertex_count());
+        grid_.around(mesh_.v.data());
+    }
 
     // Starting radii: last frame's, at the same place along the axis (interpolated in u
     // when the rings moved or their number changed).
@@ -99,7 +113,7 @@ void ConvolutionSkin::rebuild() {
     previous_.reserve(radius_.capacity());
     resize_buffer(u_, n);
     previous_u_.reserve(u_.capacity());
-    for (std::size_t k = 0; k < n; ++k) u_[k] = length > 0.0 ? rings_.arc_length(k) / length : 0.0;
+    for (std::size_t k = 0; k < n; ++k) u_[k] = rings_.fraction(k);
     if (previous_u_ == u_) {
         std::copy(previous_.begin(), previous_.begin() + std::ptrdiff_t(n * S), radius_.begin());
     } else if (previous_u_.size() >= 2) {
@@ -122,9 +136,20 @@ void ConvolutionSkin::rebuild() {
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
         const auto u = float(u_[k]);
         const std::size_t row = grid_.body_row(k);
+        // The bend of the axis here, for the iso-value of each ray (bend_calibration.h).
+        const Vec3 bend = rings_.curvature(k);
+        const double curvature = bend.norm();
+        const BendCalibration::Row bend_row = bend_.row(curvature);
+        const double inverse_curvature = curvature > 0.0 ? 1.0 / curvature : 0.0;
+        const double bend_n = inverse_curvature * bend.dot(nrm), bend_b = inverse_curvature * bend.dot(bin);
         for (std::size_t j = 0; j < S; ++j) {
             const Vec3 direction = grid_.cosine(j) * nrm + grid_.sine(j) * bin;
-            const double r = solve_ray(centre, direction, radius_[k * S + j]);
+            // c: cosine of the angle between the ray and the direction away from the centre of
+            // curvature.
+            const double c = -(grid_.cosine(j) * bend_n + grid_.sine(j) * bend_b);
+            double unused = 0.0;
+            const double iso = iso_ / BendCalibration::scale(bend_row, c, &unused);
+            const double r = solve_ray(centre, direction, radius_[k * S + j], iso);
             radius_[k * S + j] = r;
             const std::size_t v = grid_.vertex(row, j);
             store_vec3(mesh_.positions, v, centre + r * direction);
@@ -157,7 +182,8 @@ void ConvolutionSkin::rebuild() {
             mesh_.u[v] = u;
         }
     }
-    grid_.grid_normals(mesh_.positions.data(), rings_.tangent(0), rings_.tangent(n - 1), mesh_.normals.data());
+    grid_.grid_normals(mesh_.positions.data(), rings_.tangent(0), rings_.tangent(n - 1), mesh_.normals.data(),
+                       mesh_.tangents.data());
 
     previous_.swap(radius_);
     previous_u_.swap(u_);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "skinning/axis_samples.h"
+#include "skinning/bend_calibration.h"
 #include "skinning/ring_grid.h"
 #include "skinning/ring_placement.h"
 #include "skinning/rotation_minimizing_frames.h"
@@ -42,9 +43,10 @@ private:
     void gather_window(double s);
     double field(Vec3 p) const;
     // Distance along the ray from origin where the field crosses the iso-value.
-    double solve_ray(Vec3 origin, Vec3 direction, double start);
+    double solve_ray(Vec3 origin, Vec3 direction, double start, double iso);
 
     double iso_ = 0.0;
+    BendCalibration bend_;
     AxisSamples skeleton_;
     AxisSamples rings_;
     RotationMinimizingFrames frames_;

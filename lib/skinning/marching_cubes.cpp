@@ -131,9 +131,7 @@ void MarchingCubes::extract(const SparseVoxelGrid& grid, double iso, Mesh& mesh,
     }
     // Leave the edge table empty for the next extraction.
     for (uint32_t slot : used_slots_) edge_vertex_[slot] = kNone;
-    const std::size_t n = seeds.size();
-    mesh.normals.resize(3 * n);
-    mesh.u.resize(n);
+    mesh.resize_vertices(seeds.size());
 }
 
 }  // namespace enteron::skinning

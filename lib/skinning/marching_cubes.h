@@ -23,7 +23,7 @@ namespace enteron::skinning {
 class MarchingCubes {
 public:
     // Polygonises the grid's field at `iso` (> 0) into mesh positions (linear
-    // interpolation along each edge) and indices; normals and u are sized but left for the
+    // interpolation along each edge) and indices; the other vertex buffers are sized but left for the
     // caller. seeds[v] receives, for vertex v, the nearest skeleton point of the inside
     // corner of its edge.
     void extract(const SparseVoxelGrid& grid, double iso, Mesh& mesh, std::vector<int32_t>& seeds);

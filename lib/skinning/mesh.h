@@ -14,7 +14,9 @@ namespace enteron::skinning {
 struct Mesh {
     std::vector<float> positions;  // x y z per vertex, m
     std::vector<float> normals;    // unit outward normal per vertex
+    std::vector<float> tangents;   // unit, perpendicular to the normal, along increasing u (x y z per vertex)
     std::vector<float> u;          // axis parameter per vertex: arc length / total length, [0, 1]
+    std::vector<float> v;          // around the axis per vertex: angle in the rotation-minimising frame / 2 pi, [0, 1)
     std::vector<uint32_t> indices; // 3 per triangle, counter-clockwise seen from outside
 
     std::size_t vertex_count() const { return u.size(); }
@@ -23,12 +25,16 @@ struct Mesh {
     void resize_vertices(std::size_t count) {
         positions.resize(3 * count);
         normals.resize(3 * count);
+        tangents.resize(3 * count);
         u.resize(count);
+        v.resize(count);
     }
     void clear() {
         positions.clear();
         normals.clear();
+        tangents.clear();
         u.clear();
+        v.clear();
         indices.clear();
     }
 };

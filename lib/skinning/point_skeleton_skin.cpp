@@ -61,23 +61,28 @@ PointSkeletonSkin::PointSkeletonSkin(const SkinSettings& settings) : Skin(settin
     window_mask_.assign(window_lanes_, 0.0f);
     std::fill_n(window_mask_.begin(), count, 1.0f);
     padding_ = std::max<std::size_t>(window_points_, 4);
-    // Calibration on a straight skeleton, averaged over the two extreme phases of the
-    // points (a surface point level with a skeleton point, and half-way between two).
-    double sum = 0.0;
-    for (double phase : {0.0, 0.5}) {
-        double f = 0.0;
-        const auto w = long(window_points_) + 1;
-        for (long j = -w; j <= w; ++j) {
-            const double x = (double(j) + phase) * h;
-            const double d2 = R * R + x * x;
-            if (d2 < support2_) {
-                const double q = 1.0 - d2 / support2_;
-                f += h * q * q * q;
+    // Calibration on a skeleton along an arc of curvature k, at distance R in direction c
+    // (bend_calibration.h), averaged over the two extreme phases of the points (a surface
+    // point level with a skeleton point, and half-way between two).
+    auto window_field = [&](double k, double c) {
+        const Vec3 p = BendCalibration::point_off_arc(R, c);
+        double sum = 0.0;
+        for (double phase : {0.0, 0.5}) {
+            double f = 0.0;
+            const auto w = long(window_points_) + 1;
+            for (long j = -w; j <= w; ++j) {
+                const double d2 = (p - BendCalibration::arc_point(k, (double(j) + phase) * h)).squaredNorm();
+                if (d2 < support2_) {
+                    const double q = 1.0 - d2 / support2_;
+                    f += h * q * q * q;
+                }
             }
+            sum += f;
         }
-        sum += f;
-    }
-    iso_ = 0.5 * sum;
+        return 0.5 * sum;
+    };
+    iso_ = window_field(0.0, 0.0);
+    bend_.build(R, window_field);
 }
 
 void PointSkeletonSkin::load_skeleton() {
@@ -99,6 +104,18 @@ void PointSkeletonSkin::load_skeleton() {
         z_[padding_ + j] = float(p.z());
     }
     std::fill_n(excluded_.begin() + std::ptrdiff_t(padding_ + skeleton_.phantoms()), skeleton_.intervals() + 1, 0.0f);
+    // The bend at each point: the row of its curvature in the scale table, and the unit
+    // vector towards the centre of curvature over R, so that -bend_axis.(q - x_j) is the c
+    // of bend_calibration.h (times |q - x_j| / R).
+    resize_buffer(bend_rows_, n);
+    resize_buffer(bend_axes_, n);
+    const double R = settings_.radius;
+    for (std::size_t j = 0; j < n; ++j) {
+        const Vec3& bend = skeleton_.curvature(j);
+        const double curvature = bend.norm();
+        bend_rows_[j] = bend_.row(curvature);
+        bend_axes_[j] = curvature > 0.0 ? Vec3((1.0 / (curvature * R)) * bend) : Vec3::Zero();
+    }
     resize_buffer(inverse_chord2_, n);
     for (std::size_t j = 0; j + 1 < n; ++j) {
         const Vec3 d = skeleton_.position(j + 1) - skeleton_.position(j);
@@ -185,19 +202,27 @@ double PointSkeletonSkin::field(Vec3 p, std::size_t k, Vec3* gradient) const {
             radial = true;
         }
     }
-    if (gradient == nullptr) return window_sum<false>(float(q.x()), float(q.y()), float(q.z()), k, nullptr);
+    // The field scaled for the bend of the axis at k (bend_calibration.h), with c taken as
+    // the cosine of q's direction off the axis from the outward direction times |q - x_k| / R.
+    const BendCalibration::Row& bend_row = bend_rows_[k];
+    const Vec3& bend_axis = bend_axes_[k];
+    double d_scale_dc = 0.0;
+    const double scale = BendCalibration::scale(bend_row, -bend_axis.dot(q - skeleton_.position(k)), &d_scale_dc);
+    if (gradient == nullptr) return scale * window_sum<false>(float(q.x()), float(q.y()), float(q.z()), k, nullptr);
     float g[3];
     const double f = window_sum<true>(float(q.x()), float(q.y()), float(q.z()), k, g);
+    // grad (scale F) = scale grad F + F d scale/dc grad c, with grad c = -bend_axis.
+    const Vec3 grad = scale * Vec3{g[0], g[1], g[2]} - (f * d_scale_dc) * bend_axis;
     if (radial) {
         // F(p) = G(|p - end|): the gradient is radial with the slope of G.
         const Vec3 r = q - centre;
         const double rn = r.norm();
         const Vec3 dir = normalized_or(p - centre, Vec3{0, 0, 1});
-        *gradient = (rn > 0.0 ? Vec3(g[0], g[1], g[2]).dot(r) / rn : 0.0) * dir;
+        *gradient = (rn > 0.0 ? grad.dot(r) / rn : 0.0) * dir;
     } else {
-        *gradient = Vec3{g[0], g[1], g[2]};
+        *gradient = grad;
     }
-    return f;
+    return scale * f;
 }
 
 void PointSkeletonSkin::splat() {
@@ -363,8 +388,10 @@ void PointSkeletonSkin::project_vertices() {
             if (step2 < last_step2) break;
         }
         const Vec3 n = normalized_or(-1.0 * g, Vec3{0, 0, 1});
-        // u: project p on the axis polyline next to its nearest skeleton point.
-        double s = skeleton_.arc_length(k);
+        // u: project p on the axis polyline next to its nearest skeleton point, the foot
+        // w of the way from point a to a + 1.
+        std::size_t foot_a = k;
+        double foot_w = 0.0;
         double best = 1e300;
         for (std::size_t a : {k - 1, k}) {
             if (a < first || a + 1 > last) continue;
@@ -374,12 +401,23 @@ void PointSkeletonSkin::project_vertices() {
             const double distance2 = (p - foot).squaredNorm();
             if (distance2 < best) {
                 best = distance2;
-                s = skeleton_.arc_length(a) + w * skeleton_.spacing();
+                foot_a = a;
+                foot_w = w;
             }
         }
+        const double s = skeleton_.arc_length(foot_a) + foot_w * skeleton_.spacing();
+        // The axis' frame at the foot, blended between its two skeleton points: the tangent
+        // along u (made perpendicular to the normal) and v, the angle of p around the axis.
+        const std::size_t b = std::min(foot_a + 1, skeleton_.size() - 1);
+        const Vec3 foot = (1.0 - foot_w) * skeleton_.position(foot_a) + foot_w * skeleton_.position(b);
+        const Vec3 axis_tangent = (1.0 - foot_w) * skeleton_.tangent(foot_a) + foot_w * skeleton_.tangent(b);
+        const Vec3 frame_normal = (1.0 - foot_w) * frames_.normal(foot_a) + foot_w * frames_.normal(b);
+        const Vec3 frame_binormal = (1.0 - foot_w) * frames_.binormal(foot_a) + foot_w * frames_.binormal(b);
         store_vec3(mesh_.positions, i, p);
         store_vec3(mesh_.normals, i, n);
+        store_vec3(mesh_.tangents, i, normalized_or(axis_tangent - axis_tangent.dot(n) * n, axis_tangent));
         mesh_.u[i] = float(length > 0.0 ? std::clamp(s / length, 0.0, 1.0) : 0.0);
+        mesh_.v[i] = float(turns_around(p - foot, frame_normal, frame_binormal));
     }
     evaluations_ += evaluations;
 }
@@ -387,11 +425,14 @@ void PointSkeletonSkin::project_vertices() {
 void PointSkeletonSkin::rebuild() {
     const double D = settings_.window, h = settings_.skeleton_spacing;
     evaluations_ = 0;
-    skeleton_.build(table_, points_.data(), axis_count(), h, D + 2.0 * h);
+    skeleton_.build(table_, points_.data(), axis_count(), AxisSamples::intervals_for(table_.total_length(), h),
+                    D + 2.0 * h, AxisSamples::Curvature::compute);
+    frames_.build(&skeleton_.position(0), &skeleton_.tangent(0), skeleton_.size());
     load_skeleton();
     splat();
     evaluate_band();
     cubes_.extract(grid_, iso_, mesh_, seeds_);
+    topology_changed_ = true;  // new triangles every time
     project_vertices();
 }
 

@@ -27,7 +27,9 @@
 #include <vector>
 
 #include "skinning/axis_samples.h"
+#include "skinning/bend_calibration.h"
 #include "skinning/marching_cubes.h"
+#include "skinning/rotation_minimizing_frames.h"
 #include "skinning/skin.h"
 #include "skinning/sparse_voxel_grid.h"
 
@@ -38,6 +40,8 @@ public:
     explicit PointSkeletonSkin(const SkinSettings& settings);
 
     double iso_value() const { return iso_; }
+    // Marching cubes make new triangles every update, whatever the settings.
+    bool stable_topology() const override { return false; }
     std::size_t skeleton_points() const { return skeleton_.intervals() + 1; }
     std::size_t band_blocks() const { return grid_.block_count(); }
     std::size_t cells_visited() const { return cubes_.cells_visited(); }
@@ -64,6 +68,7 @@ private:
     void project_vertices();
 
     double iso_ = 0.0;
+    BendCalibration bend_;
     double support2_ = 0.0;  // Rs^2
     std::size_t window_points_ = 0;           // W: the window is skeleton points k - W .. k + W
     static constexpr std::size_t kLanes = 4;  // floats per SIMD register in the window sums
@@ -71,10 +76,13 @@ private:
     std::vector<float> window_mask_;          // 1 for the window's lanes, 0 past them
     std::size_t evaluations_ = 0;
     AxisSamples skeleton_;
+    RotationMinimizingFrames frames_;  // along skeleton_, for the vertices' v
     std::size_t padding_ = 0;           // entries before skeleton point 0 in x_, y_, z_, excluded_
     std::vector<float> x_, y_, z_;      // skeleton positions, single precision, padded
     std::vector<float> excluded_;       // 0 at real skeleton points, huge at phantoms and padding
     std::vector<double> inverse_chord2_;  // 1 / |x_{j+1} - x_j|^2, m^-2
+    std::vector<BendCalibration::Row> bend_rows_;  // per skeleton point: its curvature's row of bend_
+    std::vector<Vec3> bend_axes_;         // per skeleton point: towards its centre of curvature, / R, 1/m
     SparseVoxelGrid grid_;
     MarchingCubes cubes_;
     std::vector<int32_t> seeds_;  // per vertex: nearest skeleton point of its edge's inside corner

@@ -52,24 +52,45 @@ double RingGrid::cap_angle(std::size_t row) const {
     return 0.0;
 }
 
-void RingGrid::grid_normals(const float* positions, Vec3 first_tangent, Vec3 last_tangent, float* normals) const {
+void RingGrid::around(float* v) const {
+    v[0] = 0.0f;
+    v[vertex_count() - 1] = 0.0f;
+    for (std::size_t r = 1; r + 1 < rows(); ++r)
+        for (std::size_t j = 0; j < segments_; ++j) v[vertex(r, j)] = float(double(j) / double(segments_));
+}
+
+void RingGrid::grid_normals(const float* positions, Vec3 first_tangent, Vec3 last_tangent, float* normals,
+                            float* tangents) const {
     auto at = [&](std::size_t index) {
         return Vec3{positions[3 * index], positions[3 * index + 1], positions[3 * index + 2]};
     };
-    auto store = [&](std::size_t index, Vec3 v) {
-        normals[3 * index] = float(v.x());
-        normals[3 * index + 1] = float(v.y());
-        normals[3 * index + 2] = float(v.z());
+    auto store = [](float* buffer, std::size_t index, Vec3 v) {
+        buffer[3 * index] = float(v.x());
+        buffer[3 * index + 1] = float(v.y());
+        buffer[3 * index + 2] = float(v.z());
     };
-    const std::size_t n = rows();
-    store(0, -1.0 * first_tangent);
-    store(vertex_count() - 1, last_tangent);
+    // The part of `along` perpendicular to the unit normal n, unit.
+    auto tangent = [](Vec3 along, Vec3 n) { return normalized_or(along - along.dot(n) * n, Vec3{0, 0, 1}); };
+    const std::size_t n = rows(), last = vertex_count() - 1;
+    const Vec3 first_normal = -1.0 * first_tangent;
+    store(normals, 0, first_normal);
+    store(tangents, 0, tangent(at(vertex(1, 0)) - at(0), first_normal));
+    store(normals, last, last_tangent);
+    store(tangents, last, tangent(at(last) - at(vertex(n - 2, 0)), last_tangent));
     for (std::size_t r = 1; r + 1 < n; ++r) {
         for (std::size_t j = 0; j < segments_; ++j) {
             const Vec3 around = at(vertex(r, j + 1)) - at(vertex(r, j + segments_ - 1));
             const Vec3 along = at(vertex(r + 1, j)) - at(vertex(r - 1, j));
-            const Vec3 fallback = at(vertex(r, j)) - 0.5 * (at(vertex(r, j + segments_ / 2)) + at(vertex(r, j)));
-            store(vertex(r, j), normalized_or(around.cross(along), normalized_or(fallback, Vec3{0, 0, 1})));
+            Vec3 normal = around.cross(along);
+            const double length = normal.norm();
+            if (length > 1e-300) {
+                normal = (1.0 / length) * normal;
+            } else {  // a degenerate ring: away from the opposite vertex
+                const Vec3 away = at(vertex(r, j)) - 0.5 * (at(vertex(r, j + segments_ / 2)) + at(vertex(r, j)));
+                normal = normalized_or(away, Vec3{0, 0, 1});
+            }
+            store(normals, vertex(r, j), normal);
+            store(tangents, vertex(r, j), tangent(along, normal));
         }
     }
 }

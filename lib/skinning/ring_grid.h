@@ -39,9 +39,15 @@ public:
     double cosine(std::size_t j) const { return cosine_[j]; }
     double sine(std::size_t j) const { return sine_[j]; }
 
-    // Outward vertex normals from central differences on the grid (the positions of a ring
-    // and of its neighbouring rows); the poles take the end tangents.
-    void grid_normals(const float* positions, Vec3 first_tangent, Vec3 last_tangent, float* normals) const;
+    // v of every vertex (angle around the ring / 2 pi: j / segments; 0 at the poles).
+    void around(float* v) const;
+
+    // Outward vertex normals and unit tangents from central differences on the grid: the
+    // normal across the positions of a ring and of its neighbouring rows, the tangent along
+    // the rows (towards the last pole, made perpendicular to the normal). The poles take the
+    // end tangents as normals, and the direction of their meridian j = 0 as tangent.
+    void grid_normals(const float* positions, Vec3 first_tangent, Vec3 last_tangent, float* normals,
+                      float* tangents) const;
 
 private:
     std::size_t body_rings_ = 0, segments_ = 0, cap_rings_ = 0;

@@ -8,7 +8,7 @@
 namespace enteron::skinning {
 
 const std::vector<double>& RingPlacement::place(const AxisSamples& axis, double radius, double max_spacing,
-                                                double min_spacing, double chord_error) {
+                                                double min_spacing, double chord_error, std::size_t level_step) {
     const std::size_t first = axis.phantoms(), n = axis.intervals() + 1;
     const double h = axis.spacing(), length = axis.length();
     // Curvature at each real sample from its neighbours' tangents, 1/m.
@@ -32,7 +32,12 @@ const std::vector<double>& RingPlacement::place(const AxisSamples& axis, double 
     // Rings at equal steps of the integral of the density (trapezoids between samples).
     double total = 0.0;
     for (std::size_t i = 0; i + 1 < n; ++i) total += 0.5 * (density_[i] + density_[i + 1]) * h;
-    const auto rings = std::max<std::size_t>(1, std::size_t(std::ceil(total - 1e-9)));
+    auto rings = std::max<std::size_t>(1, std::size_t(std::ceil(total - 1e-9)));
+    if (level_step > 0) {
+        const std::size_t level = level_step * ((rings + level_step - 1) / level_step);
+        if (level > level_ || level + level_step < level_) level_ = level;
+        rings = level_;
+    }
     resize_buffer(arc_lengths_, rings + 1);
     arc_lengths_[0] = 0.0;
     double integral = 0.0;

@@ -10,6 +10,11 @@
 // clamped to [min_spacing, max_spacing], with k the largest curvature within max_spacing / 2
 // of s. The rings are placed at equal steps of the integral of 1 / Delta(s) ds, so their
 // count is whole, the ends are rings and no spacing exceeds Delta by more than a rounding.
+//
+// Levels: to keep the mesh's topology from frame to frame, the ring count can move in
+// steps of `level_step` rings: up to the next step above the count the bends need at once
+// (so the chord error stays within its bound), down only once a whole step is spare
+// (hysteresis: a bowel swaying around a level boundary does not flip between two counts).
 #pragma once
 
 #include <vector>
@@ -22,13 +27,15 @@ class RingPlacement {
 public:
     // The rings' places (arc lengths, m, increasing from 0 to the axis length), from `axis`:
     // samples of the axis with their tangents, no more than min_spacing apart (the skin's
-    // skeleton samples). Valid until the next call; allocates only when the ring count
-    // grows.
+    // skeleton samples). level_step > 0: the ring count in steps of that many (above);
+    // 0: as many as the bends need. Valid until the next call; allocates only when the
+    // ring count grows.
     const std::vector<double>& place(const AxisSamples& axis, double radius, double max_spacing, double min_spacing,
-                                     double chord_error);
+                                     double chord_error, std::size_t level_step);
 
 private:
     std::vector<double> curvature_, density_, arc_lengths_;
+    std::size_t level_ = 0;  // intervals between rings at the current level (level_step > 0)
 };
 
 }  // namespace enteron::skinning

@@ -1,5 +1,6 @@
 #include "skinning/rotation_minimizing_frames.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "skinning/frame_buffers.h"
@@ -45,6 +46,22 @@ void RotationMinimizingFrames::build(const Vec3* x, const Vec3* t, std::size_t c
         normal_[i + 1] = r;
         binormal_[i + 1] = t[i + 1].cross(r);
     }
+}
+
+double turns_around(const Vec3& d, const Vec3& normal, const Vec3& binormal) {
+    const double x = d.dot(normal), y = d.dot(binormal);
+    const double ax = std::fabs(x), ay = std::fabs(y);
+    const double big = std::max(ax, ay);
+    if (!(big > 0.0)) return 0.0;
+    // atan(a) on [0, 1], a = min / max, by the polynomial of Abramowitz and Stegun 4.4.47
+    // (within 1e-5 rad), then the octant.
+    const double a = std::min(ax, ay) / big, a2 = a * a;
+    double angle = a * (0.9998660 + a2 * (-0.3302995 + a2 * (0.1801410 + a2 * (-0.0851330 + a2 * 0.0208351))));
+    if (ay > ax) angle = 0.5 * kPi - angle;
+    if (x < 0.0) angle = kPi - angle;
+    double turns = angle * (0.5 / kPi);
+    if (y < 0.0) turns = 1.0 - turns;
+    return turns < 1.0 ? turns : 0.0;
 }
 
 }  // namespace enteron::skinning

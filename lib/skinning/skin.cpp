@@ -1,5 +1,6 @@
 #include "skinning/skin.h"
 
+#include "skinning/axis_samples.h"
 #include "skinning/convolution_skin.h"
 #include "skinning/point_skeleton_skin.h"
 #include "skinning/tube_skin.h"
@@ -9,7 +10,14 @@ namespace enteron::skinning {
 void Skin::update(const double* points_xyz, std::size_t count) {
     points_.assign(points_xyz, points_xyz + 3 * count);
     table_.build(points_.data(), count);
+    if (!(reference_length_ > 0.0)) reference_length_ = table_.total_length();
+    topology_changed_ = false;
     rebuild();
+    if (topology_changed_) ++topology_changes_;
+}
+
+std::size_t Skin::ring_intervals(double length) const {
+    return AxisSamples::intervals_for(settings_.stable_topology ? reference_length_ : length, settings_.ring_spacing);
 }
 
 std::unique_ptr<Skin> make_skin(const SkinSettings& settings) {

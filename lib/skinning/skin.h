@@ -1,9 +1,19 @@
 // One interface, three methods: a skin turns the axis (spline control points) into a
 // closed triangle mesh of radius R around it, for rendering. update() keeps its own copy of
 // the axis it was built from, so metrics and exports describe exactly that mesh.
+//
+// Topology: the vertex count and the triangle indices. The tube and the convolution skins
+// keep them while the axis moves when settings.stable_topology is set: their rings (a
+// fixed grid of vertices, ring_grid.h) are as many as the axis' length at the first
+// update holds at the ring spacing, spread evenly over the current length, so a renderer uploads the indices once and
+// then only the vertex data (and u and v, fixed per vertex, only with the indices). With
+// levels of detail (ring_chord_error) the ring count moves in discrete steps, with
+// hysteresis (ring_placement.h). The point skeleton's marching cubes make new triangles
+// every update: its topology changes every time, and it says so.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -26,19 +36,34 @@ public:
 
     const Mesh& mesh() const { return mesh_; }
     const SkinSettings& settings() const { return settings_; }
+    // Whether the last update changed the vertex count or the indices (the first one does).
+    bool topology_changed() const { return topology_changed_; }
+    // Updates that changed the topology so far: equal numbers, the same indices.
+    uint64_t topology_changes() const { return topology_changes_; }
+    // Whether this skin keeps its topology while the axis moves (see above).
+    virtual bool stable_topology() const { return settings_.stable_topology; }
     // The axis of the last update.
     const double* axis_points() const { return points_.data(); }
     std::size_t axis_count() const { return points_.size() / 3; }
     const spline::ArcLengthTable& arc_length() const { return table_; }
 
 protected:
-    // Fills mesh_ from points_ / table_.
+    // Fills mesh_ from points_ / table_, and sets topology_changed_.
     virtual void rebuild() = 0;
+    // Intervals between evenly spaced rings of settings_.ring_spacing along `length` (m):
+    // with stable_topology, fixed by the length of the first update;
+    // otherwise as many as the current length holds.
+    std::size_t ring_intervals(double length) const;
 
     SkinSettings settings_;
     Mesh mesh_;
+    bool topology_changed_ = false;
     std::vector<double> points_;
     spline::ArcLengthTable table_;
+
+private:
+    uint64_t topology_changes_ = 0;
+    double reference_length_ = 0.0;
 };
 
 // Makes the skin of settings.method. The settings must have been validated.

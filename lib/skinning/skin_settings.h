@@ -18,6 +18,9 @@ struct SkinSettings {
     double skeleton_spacing = 0.003125;  // arc length between skeleton samples, m
     double voxel_size = 0.0041667;   // marching-cubes cell edge, m (point_skeleton)
     double window = 0.0125;          // half-width of the local blending window in arc length, m
+    // Tube, convolution: keep the vertex count and the triangle indices while the axis moves
+    // (skin.h). Point_skeleton: ignored (its topology follows the surface).
+    bool stable_topology = true;
 };
 
 }  // namespace enteron::skinning

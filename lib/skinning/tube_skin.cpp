@@ -7,12 +7,15 @@ namespace enteron::skinning {
 void TubeSkin::rebuild() {
     const double R = settings_.radius;
     const std::size_t S = settings_.segments;
-    rings_.build(table_, points_.data(), axis_count(), settings_.ring_spacing, 0.0);
+    rings_.build(table_, points_.data(), axis_count(), ring_intervals(table_.total_length()), 0.0,
+                 AxisSamples::Curvature::skip);
     const std::size_t n = rings_.size();
     frames_.build(&rings_.position(0), &rings_.tangent(0), n);
-    grid_.layout(n, S, settings_.cap_rings, mesh_.indices);
-    mesh_.resize_vertices(grid_.vertex_count());
-    const double length = rings_.length();
+    if (grid_.layout(n, S, settings_.cap_rings, mesh_.indices)) {
+        topology_changed_ = true;
+        mesh_.resize_vertices(grid_.vertex_count());
+        grid_.around(mesh_.v.data());
+    }
     for (std::size_t row = 0; row < grid_.rows(); ++row) {
         // Body rows sit on their ring; cap rows on a hemisphere around an end point.
         std::size_t k = 0;
@@ -21,15 +24,19 @@ void TubeSkin::rebuild() {
         const double along = std::sin(phi), across = std::cos(phi);  // once per row, not per vertex
         const Vec3 centre = rings_.position(k), t = rings_.tangent(k);
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
-        const float u = float(length > 0.0 ? rings_.arc_length(k) / length : 0.0);
+        const auto u = float(rings_.fraction(k));
         const bool pole = row == 0 || row + 1 == grid_.rows();
         const std::size_t count = pole ? 1 : S;
         for (std::size_t j = 0; j < count; ++j) {
-            Vec3 direction = pole ? (row == 0 ? -1.0 * t : t)
-                                  : across * (grid_.cosine(j) * nrm + grid_.sine(j) * bin) + along * t;
+            // The outward direction at (phi, angle j), and its derivative in phi: the tangent
+            // along the meridian, towards the last pole (the axis tangent on body rows).
+            const Vec3 radial = grid_.cosine(j) * nrm + grid_.sine(j) * bin;
+            const Vec3 direction = pole ? (row == 0 ? -1.0 * t : t) : across * radial + along * t;
+            const Vec3 tangent = across * t - along * radial;
             const std::size_t v = grid_.vertex(row, j);
             store_vec3(mesh_.positions, v, centre + R * direction);
             store_vec3(mesh_.normals, v, direction);
+            store_vec3(mesh_.tangents, v, tangent);
             mesh_.u[v] = u;
         }
     }

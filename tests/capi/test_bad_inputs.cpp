@@ -595,6 +595,162 @@ std::vector<BadInput> table() {
         {"ent_scene_effect_stats", "out NULL", [](L l) { return ent_scene_effect_stats(l.scene, 0, nullptr); }, kArg,
          "out"},
 
+        // ---- moving anatomy (the live scene has no obstacle: every id is unknown)
+        {"ent_scene_create_json_file", "path NULL",
+         [](L) {
+             ent_scene* out = sentinel<ent_scene>();
+             const ent_status status = ent_scene_create_json_file(nullptr, nullptr, &out);
+             EXPECT_EQ(out, sentinel<ent_scene>());
+             return status;
+         },
+         kArg, "path"},
+        {"ent_scene_create_json_file", "no such file",
+         [](L) {
+             ent_scene* out = sentinel<ent_scene>();
+             const ent_status status = ent_scene_create_json_file("/nonexistent/enteron/scene.json", nullptr, &out);
+             EXPECT_EQ(out, sentinel<ent_scene>());
+             return status;
+         },
+         kArg, "/nonexistent/enteron/scene.json"},
+        {"ent_scene_create_json_file", "out_scene NULL",
+         [](L) { return ent_scene_create_json_file("/nonexistent/enteron/scene.json", nullptr, nullptr); }, kArg,
+         "out_scene"},
+        {"ent_obstacle_set_pose", "scene NULL",
+         [](L) {
+             const double p[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+             return ent_obstacle_set_pose(nullptr, 0, p, q);
+         },
+         kArg, "scene"},
+        {"ent_obstacle_set_pose", "position_m NaN",
+         [](L l) {
+             const double p[3] = {0, kNaN, 0}, q[4] = {1, 0, 0, 0};
+             return ent_obstacle_set_pose(l.scene, 0, p, q);
+         },
+         kArg, "position_m"},
+        {"ent_obstacle_set_pose", "orientation_wxyz zero",
+         [](L l) {
+             const double p[3] = {0, 0, 0}, q[4] = {0, 0, 0, 0};
+             return ent_obstacle_set_pose(l.scene, 0, p, q);
+         },
+         kArg, "orientation_wxyz"},
+        {"ent_obstacle_set_pose", "unknown obstacle 0",
+         [](L l) {
+             const double p[3] = {0, 0, 0}, q[4] = {1, 0, 0, 0};
+             return ent_obstacle_set_pose(l.scene, 0, p, q);
+         },
+         ENT_ERROR_NOT_FOUND, "obstacle 0"},
+        {"ent_obstacle_set_velocity", "angular_rad_per_s Inf",
+         [](L l) {
+             const double v[3] = {0, 0, 0}, w[3] = {0, 0, kInf};
+             return ent_obstacle_set_velocity(l.scene, 0, v, w);
+         },
+         kArg, "angular_rad_per_s"},
+        {"ent_obstacle_set_velocity", "unknown obstacle -5",
+         [](L l) {
+             const double v[3] = {0, 0, 0}, w[3] = {0, 0, 0};
+             return ent_obstacle_set_velocity(l.scene, -5, v, w);
+         },
+         ENT_ERROR_NOT_FOUND, "obstacle -5"},
+        {"ent_obstacle_set_friction", "friction NaN", [](L l) { return ent_obstacle_set_friction(l.scene, 0, kNaN); },
+         kArg, "friction"},
+        {"ent_obstacle_set_friction", "unknown obstacle 3", [](L l) { return ent_obstacle_set_friction(l.scene, 3, 0.5); },
+         ENT_ERROR_NOT_FOUND, "obstacle 3"},
+        {"ent_scene_remove_obstacle", "scene NULL", [](L) { return ent_scene_remove_obstacle(nullptr, 0); }, kArg,
+         "scene"},
+        {"ent_scene_remove_obstacle", "unknown obstacle 0", [](L l) { return ent_scene_remove_obstacle(l.scene, 0); },
+         ENT_ERROR_NOT_FOUND, "obstacle 0"},
+        {"ent_scene_obstacle_count", "scene NULL",
+         [](L) {
+             uint32_t count = 7;
+             const ent_status status = ent_scene_obstacle_count(nullptr, &count);
+             EXPECT_EQ(count, 7u);
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_scene_obstacle_count", "out_count NULL", [](L l) { return ent_scene_obstacle_count(l.scene, nullptr); },
+         kArg, "out_count"},
+        {"ent_obstacle_pose", "position_m NULL",
+         [](L l) {
+             double q[4];
+             return ent_obstacle_pose(l.scene, 0, nullptr, q);
+         },
+         kArg, "position_m"},
+        {"ent_obstacle_pose", "unknown obstacle 0",
+         [](L l) {
+             double p[3] = {7, 7, 7}, q[4] = {7, 7, 7, 7};
+             const ent_status status = ent_obstacle_pose(l.scene, 0, p, q);
+             EXPECT_EQ(p[0], 7.0);
+             EXPECT_EQ(q[0], 7.0);
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "obstacle 0"},
+        {"ent_obstacle_mesh", "out_vertex_count NULL",
+         [](L l) {
+             uint32_t triangles = 7;
+             return ent_obstacle_mesh(l.scene, 0, 0, nullptr, nullptr, 0, nullptr, &triangles);
+         },
+         kArg, "out_vertex_count"},
+        {"ent_obstacle_mesh", "unknown obstacle 0",
+         [](L l) {
+             uint32_t vertices = 7, triangles = 7;
+             const ent_status status = ent_obstacle_mesh(l.scene, 0, 0, nullptr, &vertices, 0, nullptr, &triangles);
+             EXPECT_EQ(vertices, 7u);
+             EXPECT_EQ(triangles, 7u);
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "obstacle 0"},
+        {"ent_scene_set_gravity", "scene NULL",
+         [](L) {
+             const double g[3] = {0, 0, -9.81};
+             return ent_scene_set_gravity(nullptr, g);
+         },
+         kArg, "scene"},
+        {"ent_scene_set_gravity", "gravity NULL", [](L l) { return ent_scene_set_gravity(l.scene, nullptr); }, kArg,
+         "gravity_m_per_s2"},
+        {"ent_scene_set_gravity", "gravity -Inf",
+         [](L l) {
+             const double g[3] = {0, 0, -kInf};
+             return ent_scene_set_gravity(l.scene, g);
+         },
+         kArg, "gravity_m_per_s2"},
+        {"ent_scene_pin_point", "control_point 12 of 12", [](L l) { return ent_scene_pin_point(l.scene, 12, -1); },
+         kArg, "control_point"},
+        {"ent_scene_pin_point", "unknown obstacle 2", [](L l) { return ent_scene_pin_point(l.scene, 3, 2); },
+         ENT_ERROR_NOT_FOUND, "obstacle 2"},
+        {"ent_scene_unpin_point", "control_point UINT32_MAX",
+         [](L l) { return ent_scene_unpin_point(l.scene, UINT32_MAX); }, kArg, "control_point"},
+        {"ent_scene_unpin_point", "not pinned", [](L l) { return ent_scene_unpin_point(l.scene, 4); },
+         ENT_ERROR_NOT_FOUND, "not pinned"},
+        {"ent_scene_attach_mesentery", "scene NULL", [](L) { return ent_scene_attach_mesentery(nullptr, -1); }, kArg,
+         "scene"},
+        {"ent_scene_attach_mesentery", "unknown obstacle 1",
+         [](L l) { return ent_scene_attach_mesentery(l.scene, 1); }, ENT_ERROR_NOT_FOUND, "obstacle 1"},
+        {"ent_scene_add_obstacle", "mesh vertex NaN",
+         obstacle_with([](ent_obstacle_desc& d) {
+             static const double v[9] = {0, 0, -1, 1, 0, -1, 0, kNaN, -1};
+             static const uint32_t t[3] = {0, 1, 2};
+             d.kind = ENT_OBSTACLE_MESH;
+             d.mesh_vertices_xyz_m = v, d.mesh_vertex_count = 3, d.mesh_triangles = t, d.mesh_triangle_count = 1;
+         }),
+         kArg, "vertices[2]"},
+        {"ent_scene_add_obstacle", "mesh index past the vertices",
+         obstacle_with([](ent_obstacle_desc& d) {
+             static const double v[9] = {0, 0, -1, 1, 0, -1, 0, 1, -1};
+             static const uint32_t t[3] = {0, 1, 3};
+             d.kind = ENT_OBSTACLE_MESH;
+             d.mesh_vertices_xyz_m = v, d.mesh_vertex_count = 3, d.mesh_triangles = t, d.mesh_triangle_count = 1;
+         }),
+         kArg, "triangles[0]"},
+        {"ent_scene_add_obstacle", "mesh claims a billion triangles",
+         obstacle_with([](ent_obstacle_desc& d) {
+             static const double v[9] = {0, 0, -1, 1, 0, -1, 0, 1, -1};
+             static const uint32_t t[3] = {0, 1, 2};
+             d.kind = ENT_OBSTACLE_MESH;
+             d.mesh_vertices_xyz_m = v, d.mesh_vertex_count = 3, d.mesh_triangles = t;
+             d.mesh_triangle_count = 1000000000u;
+         }),
+         kArg, "1000000000"},
+
         // ---- ent_scene_add_obstacle
         {"ent_scene_add_obstacle", "scene NULL",
          [](L) {
@@ -943,6 +1099,52 @@ std::vector<BadInput> table() {
              return ent_scene_restore_state(l.scene, data, 0);
          },
          kArg, "header"},
+        {"ent_tool_stiffness", "scene NULL", [](L) { double k[9]; return ent_tool_stiffness(nullptr, 0, k); }, kArg,
+         "scene"},
+        {"ent_tool_stiffness", "K_N_per_m NULL", [](L l) { return ent_tool_stiffness(l.scene, l.tool, nullptr); }, kArg,
+         "K_N_per_m"},
+        {"ent_tool_stiffness", "unknown tool 1",
+         [](L l) {
+             double k[9] = {7, 7, 7, 7, 7, 7, 7, 7, 7};
+             const ent_status status = ent_tool_stiffness(l.scene, l.tool + 1, k);
+             EXPECT_EQ(k[0], 7.0) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_stats", "scene NULL",
+         [](L) {
+             ent_tool_stats s;
+             s.struct_size = sizeof s;
+             return ent_tool_read_stats(nullptr, 0, &s);
+         },
+         kArg, "scene"},
+        {"ent_tool_read_stats", "out NULL", [](L l) { return ent_tool_read_stats(l.scene, l.tool, nullptr); }, kArg,
+         "out"},
+        {"ent_tool_read_stats", "unknown tool 1",
+         [](L l) {
+             ent_tool_stats s;
+             s.struct_size = sizeof s;
+             return ent_tool_read_stats(l.scene, l.tool + 1, &s);
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_remove", "scene NULL", [](L) { return ent_tool_remove(nullptr, 0); }, kArg, "scene"},
+        {"ent_tool_remove", "unknown tool 1", [](L l) { return ent_tool_remove(l.scene, l.tool + 1); },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_remove", "unknown tool -1", [](L l) { return ent_tool_remove(l.scene, -1); }, ENT_ERROR_NOT_FOUND,
+         "tool -1"},
+        {"ent_scene_tool_count", "scene NULL", [](L) { int32_t n; return ent_scene_tool_count(nullptr, &n); }, kArg,
+         "scene"},
+        {"ent_scene_tool_count", "out_count NULL", [](L l) { return ent_scene_tool_count(l.scene, nullptr); }, kArg,
+         "out_count"},
+        {"ent_tool_add", "mode 2", tool_with([](ent_tool_desc& d) { d.mode = 2; }), kArg, "mode"},
+        {"ent_tool_add", "coupling_stiffness_N_per_m 0",
+         tool_with([](ent_tool_desc& d) { d.coupling_stiffness_N_per_m = 0.0; }), kArg, "coupling_stiffness_N_per_m"},
+        {"ent_tool_add", "coupling_damping_N_s_per_m NaN",
+         tool_with([](ent_tool_desc& d) { d.coupling_damping_N_s_per_m = kNaN; }), kArg, "coupling_damping_N_s_per_m"},
+        {"ent_tool_add", "friction Inf",
+         tool_with([](ent_tool_desc& d) { d.friction = std::numeric_limits<double>::infinity(); }), kArg, "friction"},
+        {"ent_tool_add", "passivity_limiter 3", tool_with([](ent_tool_desc& d) { d.passivity_limiter = 3; }), kArg,
+         "passivity_limiter"},
     };
 
     // Every struct that carries a struct_size, with each size no release has.
@@ -986,6 +1188,8 @@ std::vector<BadInput> table() {
             EXPECT_EQ(count, 7u) << "out_count written on failure";
             return status;
         });
+        add("ent_tool_read_stats", out_struct_with_size<ent_tool_stats>(
+                                       size, [](L l, ent_tool_stats* s) { return ent_tool_read_stats(l.scene, l.tool, s); }));
     }
     for (int32_t effect : {-1, ENT_EFFECT_COUNT, INT32_MAX}) {
         rows.push_back({"ent_scene_effect_stats", "an effect this library does not know",

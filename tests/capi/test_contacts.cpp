@@ -188,7 +188,7 @@ struct Pushed {
     int32_t tool = -1;
 };
 
-Pushed bowel_and_tool() {
+Pushed bowel_and_tool(int32_t mode = ENT_TOOL_MODE_PROXY) {
     Pushed p;
     ent_scene_desc desc = default_desc();
     desc.length_m = 0.4;
@@ -206,12 +206,13 @@ Pushed bowel_and_tool() {
     ent_tool_desc_default(&tool);
     tool.position_m[1] = 0.05;
     tool.position_m[2] = kRadius;
+    tool.mode = mode;
     EXPECT_EQ(ent_tool_add(p.scene.get(), &tool, &p.tool), ENT_OK) << ent_last_error();
     return p;
 }
 
-TEST(Contacts, AToolsContactsAddUpToMinusItsWrench) {
-    Pushed p = bowel_and_tool();
+void check_contacts_add_up_to_minus_the_wrench(int32_t mode) {
+    Pushed p = bowel_and_tool(mode);
     ASSERT_TRUE(p.scene);
     const double dt = 1e-3;
     double impulse[3] = {0.0, 0.0, 0.0}, impulse_magnitude = 0.0;
@@ -222,6 +223,12 @@ TEST(Contacts, AToolsContactsAddUpToMinusItsWrench) {
         ASSERT_EQ(ent_scene_step(p.scene.get(), dt), ENT_OK) << ent_last_error();
         double force[3], torque[3];
         ASSERT_EQ(ent_tool_wrench(p.scene.get(), p.tool, force, torque), ENT_OK) << ent_last_error();
+        // The torque is about the tip in the scene: the proxy's (the default mode).
+        ent_tool_feedback feedback;
+        std::memset(&feedback, 0, sizeof feedback);
+        feedback.struct_size = sizeof feedback;
+        ASSERT_EQ(ent_tool_read_feedback(p.scene.get(), p.tool, &feedback), ENT_OK) << ent_last_error();
+        const double* proxy = feedback.proxy_position_m;
         // The contact impulse the test adds up itself (no grasp: the wrench is all contact).
         for (int k = 0; k < 3; ++k) impulse[k] += dt * force[k];
         impulse_magnitude += dt * norm3(force);
@@ -234,8 +241,8 @@ TEST(Contacts, AToolsContactsAddUpToMinusItsWrench) {
             us.push_back(c.u);
             largest = std::max(largest, norm3(c.force_N));
             for (int k = 0; k < 3; ++k) sum[k] += c.force_N[k];
-            // The torque of -f about the tip (the tool ends this step at `tip`).
-            const double r[3] = {c.point_m[0] - tip[0], c.point_m[1] - tip[1], c.point_m[2] - tip[2]};
+            // The torque of -f about the proxy's tip, where the tool ends this step.
+            const double r[3] = {c.point_m[0] - proxy[0], c.point_m[1] - proxy[1], c.point_m[2] - proxy[2]};
             moment[0] -= r[1] * c.force_N[2] - r[2] * c.force_N[1];
             moment[1] -= r[2] * c.force_N[0] - r[0] * c.force_N[2];
             moment[2] -= r[0] * c.force_N[1] - r[1] * c.force_N[0];
@@ -268,8 +275,14 @@ TEST(Contacts, AToolsContactsAddUpToMinusItsWrench) {
     }
     EXPECT_GT(touching_steps, 200);
     EXPECT_GT(impulse_magnitude, 0.01);
-    std::cout << "[ tool contacts ] touching in " << touching_steps << " of 600 steps, contact impulse "
-              << impulse_magnitude << " N s\n";
+    std::cout << "[ tool contacts ] " << (mode == ENT_TOOL_MODE_PROXY ? "proxy" : "direct") << ": touching in "
+              << touching_steps << " of 600 steps, contact impulse " << impulse_magnitude << " N s\n";
+}
+
+TEST(Contacts, AToolsContactsAddUpToMinusItsWrench) { check_contacts_add_up_to_minus_the_wrench(ENT_TOOL_MODE_PROXY); }
+
+TEST(Contacts, ADirectToolsContactsAddUpToMinusItsWrench) {
+    check_contacts_add_up_to_minus_the_wrench(ENT_TOOL_MODE_DIRECT);
 }
 
 TEST(Contacts, AGraspSaysWhereItTookHold) {

@@ -639,11 +639,14 @@ TEST(Environment, JsonErrorsNameThePath) {
                       "environment[0].type must be one of \"box_inside\", \"plane\", \"sphere\", \"capsule\"");
     expect_json_error(R"([{"type": 2}])", "environment[0].type must be one of");
     expect_json_error(R"([{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1], "radius": 0.1}])",
-                      "unknown key \"radius\" in environment[0] (expected one of: center, half_extents)");
+                      "unknown key \"radius\" in environment[0] (expected one of: center, half_extents, "
+                      "position, orientation, friction)");
     expect_json_error(R"([{"type": "plane", "normal": [0, 0, 1], "center": [0, 0, 0]}])",
-                      "unknown key \"center\" in environment[0] (expected one of: point, normal)");
+                      "unknown key \"center\" in environment[0] (expected one of: point, normal, "
+                      "position, orientation, friction)");
     expect_json_error(R"([{"type": "sphere", "radius": 0.1}, {"type": "capsule", "center": [0, 0, 0]}])",
-                      "unknown key \"center\" in environment[1] (expected one of: start, end, radius)");
+                      "unknown key \"center\" in environment[1] (expected one of: start, end, radius, "
+                      "position, orientation, friction)");
     expect_json_error(R"([{"type": "sphere", "center": [0, 0], "radius": 0.1}])",
                       "environment[0].center must be an array of 3 numbers");
     expect_json_error(R"([{"type": "capsule", "start": [0, 0, 0], "end": [0, 0, "1"], "radius": 0.1}])",

@@ -1,23 +1,20 @@
 // The skin C API (ent_skin_*): exact axes through ENT_SHAPE_POINTS scenes, every method's
 // accuracy and closure, no blending at a tight U-turn, a skin updated on a render thread
 // while the physics thread steps, and bad input.
-#include "capi_test_support.h"
+#include "skin_test_support.h"
 
 #include <atomic>
 #include <chrono>
 #include <thread>
 
 using namespace capi_test;
+using namespace skin_test;
 
 namespace {
 
 constexpr double kR = 0.0125;
 constexpr double kPi = 3.14159265358979323846;
 
-struct SkinDeleter {
-    void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
-};
-using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
 
 // A scene whose axis is exactly the given control points (no effects: it never moves).
 ScenePtr points_scene(const std::vector<double>& q) {
@@ -47,31 +44,6 @@ std::vector<double> u_turn(double leg, double gap, double spacing) {
     }
     for (int i = 0; i <= legs; ++i) q.insert(q.end(), {-i * (leg / legs), r, 0.0});
     return q;
-}
-
-SkinPtr make_skin(ent_scene* scene, int32_t method) {
-    ent_skin_desc desc;
-    ent_skin_desc_default(&desc);
-    desc.method = method;
-    ent_skin* skin = nullptr;
-    EXPECT_EQ(ent_skin_create(scene, &desc, &skin), ENT_OK) << ent_last_error();
-    return SkinPtr(skin);
-}
-
-struct ent_skin_metrics metrics(const ent_skin* skin) {
-    struct ent_skin_metrics m;
-    std::memset(&m, 0, sizeof m);
-    m.struct_size = sizeof m;
-    EXPECT_EQ(ent_skin_metrics(skin, &m), ENT_OK) << ent_last_error();
-    return m;
-}
-
-ent_mesh_view mesh(const ent_skin* skin) {
-    ent_mesh_view view;
-    std::memset(&view, 0, sizeof view);
-    view.struct_size = sizeof view;
-    EXPECT_EQ(ent_skin_mesh(skin, &view), ENT_OK) << ent_last_error();
-    return view;
 }
 
 const int32_t kMethods[] = {ENT_SKIN_TUBE, ENT_SKIN_POINT_SKELETON, ENT_SKIN_CONVOLUTION};

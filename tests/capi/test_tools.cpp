@@ -47,10 +47,12 @@ ScenePtr bowel_on_plane(int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER) {
 }
 
 // A vertical tool (identity orientation: the shaft rises from the tip) at tip `p`.
-int32_t add_tool(ent_scene* scene, const double p[3], double max_force = 5.0) {
+// Direct mode (ENT_TOOL_MODE_DIRECT) where a test measures the capsule where it is put.
+int32_t add_tool(ent_scene* scene, const double p[3], double max_force = 5.0, int32_t mode = ENT_TOOL_MODE_PROXY) {
     ent_tool_desc desc;
     ent_tool_desc_default(&desc);
     desc.max_force_N = max_force;
+    desc.mode = mode;
     for (int c = 0; c < 3; ++c) desc.position_m[c] = p[c];
     int32_t id = -1;
     EXPECT_EQ(ent_tool_add(scene, &desc, &id), ENT_OK) << ent_last_error();
@@ -187,7 +189,8 @@ double largest_force_change(double dt) {
     ScenePtr scene = bowel_on_plane();
     if (!scene) return -1.0;
     const double start[3] = {0.0, 0.03, kRadius};
-    add_tool(scene.get(), start);
+    // Direct: the bound below is the scene's contact stiffness times the tool's travel.
+    add_tool(scene.get(), start, 5.0, ENT_TOOL_MODE_DIRECT);
     const int steps = int(std::lround(0.3 / dt));  // 3 cm in 0.3 s
     double previous[3] = {0.0, 0.0, 0.0}, jump = 0.0;
     for (int i = 1; i <= steps; ++i) {
@@ -240,7 +243,8 @@ TEST(Tools, AGraspLiftsTheBowelAndAReleaseDropsIt) {
     ScenePtr scene = bowel_on_plane();
     ASSERT_TRUE(scene);
     const double touch[3] = {0.0, 0.0, 2 * kRadius + 0.004}, high[3] = {0.0, 0.0, 0.1};
-    ASSERT_EQ(add_tool(scene.get(), touch), 0);
+    // Direct: the tip is where it is put, 1 mm into the bowel (the proxy would rest on it).
+    ASSERT_EQ(add_tool(scene.get(), touch, 5.0, ENT_TOOL_MODE_DIRECT), 0);
     EXPECT_EQ(grasping(scene.get(), 0), 0);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     const Wrench before = wrench(scene.get(), 0);
@@ -388,7 +392,7 @@ TEST(Tools, NoToolNoCallsAndToolContactsCountInTheStats) {
 
     // A tool pressed onto the free bowel (no gravity, no environment): its contacts alone.
     const double p[3] = {0.0, 0.0, kRadius + 0.004};
-    ASSERT_EQ(add_tool(scene.get(), p), 0);
+    ASSERT_EQ(add_tool(scene.get(), p, 5.0, ENT_TOOL_MODE_DIRECT), 0);  // penetration where it is put
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     e = effect_stats(scene.get(), ENT_EFFECT_TOOLS);
     EXPECT_EQ(e.enabled, 1);

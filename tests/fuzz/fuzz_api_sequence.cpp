@@ -2,7 +2,9 @@
 // create (from a few base scenes, or from an ent_scene_desc with arbitrary numbers), then
 // up to 64 of: step with an arbitrary dt, add an obstacle, create / update / measure /
 // destroy a skin with arbitrary settings, add a tool, set its pose, grasp, release, read
-// its wrench and state, and the queries. Every call must return ENT_OK or
+// its wrench and state, the queries, and the moving anatomy (mesh obstacles with arbitrary
+// vertices and indices, obstacle poses, velocities, friction and removal, gravity, pins and
+// the mesentery's root on obstacles, the obstacle queries). Every call must return ENT_OK or
 // a status with a message; a failing step must leave the control points exactly as they
 // were; a scene that returned ENT_OK must be finite everywhere (control points, axis, stats,
 // skin vertices); a mesh's indices must stay within its vertices. Any violation aborts.
@@ -133,7 +135,7 @@ void step(Bytes& in, ent_scene* scene) {
 void add_obstacle(Bytes& in, ent_scene* scene) {
     ent_obstacle_desc d;
     ent_obstacle_desc_default(&d);
-    d.kind = static_cast<int32_t>(in.u8() % 5);
+    d.kind = static_cast<int32_t>(in.u8() % 6);
     for (int c = 0; c < 3; ++c) {
         d.center_m[c] = in.number(0.01) - 0.01;
         d.half_extents_m[c] = in.number(0.1);
@@ -141,12 +143,95 @@ void add_obstacle(Bytes& in, ent_scene* scene) {
         d.end_m[c] = in.number(0.05);
     }
     d.radius_m = in.number(0.03);
+    // A mesh: up to 8 vertices near the origin and 8 triangles whose indices may be out of
+    // range; or a count claim far past the arrays (refused before they are read).
+    std::vector<double> vertices;
+    std::vector<uint32_t> triangles;
+    if (d.kind == ENT_OBSTACLE_MESH) {
+        vertices.resize(3 * std::size_t{in.u8()} % 27);
+        for (double& v : vertices) v = in.number(0.03) - 0.04;
+        triangles.resize(3 * std::size_t{in.u8()} % 27);
+        for (uint32_t& t : triangles) t = in.u8() % 10;
+        d.mesh_vertices_xyz_m = in.u8() < 8 ? nullptr : vertices.data();
+        d.mesh_triangles = triangles.data();
+        d.mesh_vertex_count = static_cast<uint32_t>(vertices.size() / 3);
+        d.mesh_triangle_count = static_cast<uint32_t>(triangles.size() / 3);
+        if (in.u8() == 255) d.mesh_triangle_count = (1u << 24) + 1 + in.u32() % 1000000000u;
+        d.mesh_voxel_size_m = in.u8() < 128 ? 0.0 : in.number(0.005);
+    }
+    for (double& p : d.position_m) p = in.number(0.01) - 0.01;
+    if (in.u8() >= 200)
+        for (double& q : d.orientation_wxyz) q = in.number(0.5);
+    d.friction = in.number(0.3) - 0.1;
     if (in.u8() == 255) d.struct_size = in.u32();
     const std::vector<double> before = control_points(scene);
     const ent_status status = ent_scene_add_obstacle(scene, &d, nullptr);
     check_status(status);
     if (status != ENT_OK && std::memcmp(before.data(), control_points(scene).data(), before.size() * sizeof(double)))
         fail("a failing add_obstacle changed the control points");
+}
+
+// The calls of moving anatomy, between steps. None moves the bowel by itself.
+void anatomy_call(Bytes& in, ent_scene* scene) {
+    const uint8_t what = in.u8();
+    // Bits 0-3: the call; bits 4-5: obstacle 0-2 or none (-1); bit 7: an arbitrary id instead.
+    const int32_t obstacle = what & 0x80 ? static_cast<int32_t>(in.u32()) : int32_t((what >> 4) % 4) - 1;
+    const std::vector<double> before = control_points(scene);
+    ent_status status = ENT_OK;
+    switch (what % 10) {
+        case 0: {
+            double position[3], orientation[4] = {1.0, 0.0, 0.0, 0.0};
+            for (double& p : position) p = in.number(0.01) - 0.01;
+            if (in.u8() >= 200)
+                for (double& q : orientation) q = in.number(0.5);
+            status = ent_obstacle_set_pose(scene, obstacle, position, orientation);
+            break;
+        }
+        case 1: {
+            double linear[3], angular[3];
+            for (double& v : linear) v = in.number(0.05) - 0.05;
+            for (double& w : angular) w = in.number(0.5) - 0.5;
+            status = ent_obstacle_set_velocity(scene, obstacle, linear, angular);
+            break;
+        }
+        case 2: status = ent_obstacle_set_friction(scene, obstacle, in.number(0.3) - 0.1); break;
+        case 3: status = ent_scene_remove_obstacle(scene, obstacle); break;
+        case 4: {
+            double g[3];
+            for (double& c : g) c = in.number(3.0) - 3.0;
+            status = ent_scene_set_gravity(scene, g);
+            break;
+        }
+        case 5: status = ent_scene_pin_point(scene, in.u8() % 40, obstacle); break;
+        case 6: status = ent_scene_unpin_point(scene, in.u8() % 40); break;
+        case 7: status = ent_scene_attach_mesentery(scene, obstacle); break;
+        case 8: {
+            double position[3], orientation[4];
+            status = ent_obstacle_pose(scene, obstacle, position, orientation);
+            if (status == ENT_OK)
+                for (double v : {position[0], position[1], position[2], orientation[0], orientation[1],
+                                 orientation[2], orientation[3]})
+                    if (!std::isfinite(v)) fail("an obstacle pose is not finite");
+            uint32_t count = 0;
+            check_status(ent_scene_obstacle_count(scene, &count));
+            break;
+        }
+        default: {
+            uint32_t vertices = 0, triangles = 0;
+            status = ent_obstacle_mesh(scene, obstacle, 0, nullptr, &vertices, 0, nullptr, &triangles);
+            if (status != ENT_OK) break;
+            std::vector<double> v(3 * std::size_t{vertices});
+            std::vector<uint32_t> t(3 * std::size_t{triangles});
+            status = ent_obstacle_mesh(scene, obstacle, vertices, v.data(), &vertices, triangles, t.data(), &triangles);
+            if (status != ENT_OK) fail("ent_obstacle_mesh failed with the capacity it asked for");
+            for (uint32_t index : t)
+                if (index >= vertices) fail("an obstacle mesh index is past its vertices");
+            break;
+        }
+    }
+    check_status(status);
+    if (std::memcmp(before.data(), control_points(scene).data(), before.size() * sizeof(double)) != 0)
+        fail("a moving-anatomy call changed the control points");
 }
 
 ent_skin* create_skin(Bytes& in, ent_scene* scene) {
@@ -321,7 +406,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 skin = nullptr;
                 break;
             case 7: query(in, scene, skin); break;
-            default: tool_call(in, scene); break;
+            case 8: tool_call(in, scene); break;
+            default: anatomy_call(in, scene); break;
         }
     }
     for (ent_skin* skin : skins) ent_skin_destroy(skin);

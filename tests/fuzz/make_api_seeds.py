@@ -9,7 +9,10 @@ arguments. A number is one byte: below 128 it scales the typical value by 0.25 +
 import os
 
 ONE = 48  # a number byte meaning "exactly the typical value"
-STEP, OBSTACLE, SKIN, UPDATE, DESTROY, QUERY, TOOL = (0 << 1), (3 << 1), (4 << 1), (5 << 1), (6 << 1), (7 << 1), (8 << 1)
+STEP, OBSTACLE, SKIN, UPDATE, DESTROY, QUERY, TOOL, ANATOMY = (0 << 1), (3 << 1), (4 << 1), (5 << 1), (6 << 1), \
+    (7 << 1), (8 << 1), (9 << 1)
+# anatomy calls (| 0x10 * (k + 1): obstacle k; 0x00: no obstacle)
+SET_POSE, SET_VELOCITY, SET_FRICTION, REMOVE, GRAVITY, PIN, UNPIN, ATTACH, POSE_QUERY, MESH_QUERY = range(10)
 POSE, GRASP, RELEASE, WRENCH, STATE, ADD_TOOL = 0x00, 0x01, 0x02, 0x03, 0x04, 0x05  # tool 0 (| 0x08: tool 1)
 
 
@@ -32,7 +35,8 @@ def desc_scene():
 SEEDS = {
     "line_steps": bytes([0]) + steps(20),
     "box_pile_skin": bytes([1]) + steps(30) + skin(2) + bytes([UPDATE]) + bytes([QUERY, 4]) + steps(5) + bytes([UPDATE]),
-    "helix_obstacles": bytes([2]) + bytes([OBSTACLE, 2] + [ONE] * 13 + [0]) + steps(10) + bytes([QUERY, 0, 20]),
+    "helix_obstacles": bytes([2]) + bytes([OBSTACLE, 2] + [ONE] * 16 + [0, ONE, 0]) + steps(10) +
+                       bytes([QUERY, 0, 20]),
     "degenerate_skins": bytes([3]) + skin(0) + skin(1) + bytes([UPDATE, UPDATE | 1]) + steps(10) +
                         bytes([UPDATE, DESTROY, QUERY, 2, 0]),
     "bad_dt": bytes([1, STEP, 128 + 11, STEP, 128 + 12, STEP, 128 + 8, STEP, 128 + 0, STEP, ONE]),
@@ -44,6 +48,21 @@ SEEDS = {
     # a tool added to the line, then put through it within one step
     "tool_teleport": bytes([0, TOOL, ADD_TOOL] + [ONE] * 9 + [0, 0]) + steps(3) +
                      bytes([TOOL, POSE | 0x08, 16, ONE, 40, 0]) + steps(5),
+    # the helix on its mesentery: a tetrahedron mesh (4 vertices, 4 triangles) under it, moved up
+    # through it, the mesentery and a pin on it, gravity tilted, the mesh read back, removed
+    "moving_mesh": bytes([2, OBSTACLE, 4] + [ONE] * 13 + [4, 0, 0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127] +
+                         [4, 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3] +
+                         [ONE, 0, 0] + [ONE] * 3 + [0, ONE, 0]) + steps(3) +
+                   bytes([ANATOMY, ATTACH | 0x10, ANATOMY, PIN | 0x10, 3]) +
+                   b"".join(bytes([ANATOMY, SET_POSE | 0x10, ONE, ONE, 60 + i, 0, STEP, ONE]) for i in range(10)) +
+                   bytes([ANATOMY, GRAVITY, 80, ONE, ONE, ANATOMY, MESH_QUERY | 0x10, ANATOMY, POSE_QUERY | 0x10,
+                          ANATOMY, SET_FRICTION | 0x10, ONE, ANATOMY, UNPIN, 3]) + steps(3) +
+                   bytes([ANATOMY, REMOVE | 0x10]) + steps(3),
+    # a mesh whose indices run past its vertices, and one claiming a billion triangles
+    "bad_meshes": bytes([0, OBSTACLE, 4] + [ONE] * 13 + [3] + [ONE] * 9 + [1, 0, 1, 9] + [ONE, 0, 0] + [ONE] * 3 +
+                        [0, ONE, 0]) +
+                  bytes([OBSTACLE, 4] + [ONE] * 13 + [3] + [ONE] * 9 + [1, 0, 1, 2] + [ONE, 255, 0, 0x0a, 0x3b, 0] +
+                        [0] + [ONE] * 3 + [0, ONE, 0]) + steps(3),
 }
 
 if __name__ == "__main__":

@@ -79,6 +79,12 @@ for name in "${expected[@]}"; do
   dpkg-deb -e "${deb_of[$name]}" "$work_dir/control/$name"
 done
 
+# The development package carries both public headers: the C ABI and the C++ layer over it.
+for header in enteron.h enteron.hpp; do
+  [[ -f "$work_dir/one/libenteron-dev/usr/include/enteron/$header" ]] ||
+    fail "libenteron-dev does not hold usr/include/enteron/$header"
+done
+
 # The ELF files a package holds (programs and shared libraries, not symlinks).
 elf_files() {
   local file

@@ -32,12 +32,13 @@ from ._errors import (ERROR_BUFFER_TOO_SMALL, ERROR_BUSY, ERROR_INTERNAL, ERROR_
                       ERROR_VERSION, OK, Error, status_string)
 from .scene import (CONTACT_DTYPE, CONTACT_OBSTACLE, CONTACT_SELF, CONTACT_TOOL, ContactSummary, EFFECT_BEND, EFFECT_COUNT, EFFECT_DAMPING, EFFECT_ENVIRONMENT, EFFECT_GRAVITY,
                     EFFECT_MESENTERY, EFFECT_PINNED, EFFECT_SELF_COLLISION, EFFECT_STRETCH, EFFECT_TOOLS,
-                    INTEGRATOR_BDF2, INTEGRATOR_IMPLICIT_EULER, INTEGRATOR_RK4, INTEGRATOR_SYMPLECTIC_EULER, LOG_DEBUG, LOG_ERROR,
-                    LOG_INFO, LOG_WARNING, OBSTACLE_BOX_INSIDE, OBSTACLE_CAPSULE, OBSTACLE_PLANE, OBSTACLE_SPHERE,
+                    INTEGRATOR_BDF2, INTEGRATOR_IMPLICIT_EULER, INTEGRATOR_RK4, INTEGRATOR_SYMPLECTIC_EULER, LOG_DEBUG,
+                    LOG_ERROR, LOG_INFO, LOG_WARNING, NO_OBSTACLE, OBSTACLE_BOX_INSIDE, OBSTACLE_CAPSULE, OBSTACLE_MESH,
+                    OBSTACLE_PLANE, OBSTACLE_SPHERE,
                     PIN_BOTH, PIN_FIRST, PIN_LAST, PIN_NONE, SHAPE_HELIX, SHAPE_LINE, SHAPE_POINTS, SHAPE_SERPENTINE,
                     EffectStats, Scene, SceneDesc, Stats, effect_name)
 from .skin import SKIN_CONVOLUTION, SKIN_POINT_SKELETON, SKIN_TUBE, Mesh, Skin, SkinMetrics
-from .tool import Tool, ToolContacts, ToolFeedback, Wrench
+from .tool import TOOL_MODE_DIRECT, TOOL_MODE_PROXY, Tool, ToolContacts, ToolFeedback, ToolStats, Wrench
 
 #: The loaded library's version, (major, minor, patch).
 version = (_version >> 16, (_version >> 8) & 0xFF, _version & 0xFF)

@@ -89,6 +89,21 @@ _declare("ent_scene_effect_stats", _status, _scene_p, ctypes.c_int32, ctypes.POI
 _declare("ent_obstacle_desc_init", _status, ctypes.POINTER(s.ent_obstacle_desc), ctypes.c_uint32)
 _declare("ent_scene_add_obstacle", _status, _scene_p, ctypes.POINTER(s.ent_obstacle_desc),
          ctypes.POINTER(ctypes.c_int32))
+_declare("ent_scene_create_json_file", _status, ctypes.c_char_p, ctypes.POINTER(s.ent_callbacks),
+         ctypes.POINTER(_scene_p))
+_declare("ent_scene_remove_obstacle", _status, _scene_p, ctypes.c_int32)
+_declare("ent_obstacle_set_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_obstacle_set_velocity", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_obstacle_set_friction", _status, _scene_p, ctypes.c_int32, ctypes.c_double)
+_declare("ent_scene_obstacle_count", _status, _scene_p, ctypes.POINTER(ctypes.c_uint32))
+_declare("ent_obstacle_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
+_declare("ent_obstacle_mesh", _status, _scene_p, ctypes.c_int32, ctypes.c_uint32, _double_p,
+         ctypes.POINTER(ctypes.c_uint32), ctypes.c_uint32, ctypes.POINTER(ctypes.c_uint32),
+         ctypes.POINTER(ctypes.c_uint32))
+_declare("ent_scene_set_gravity", _status, _scene_p, _double_p)
+_declare("ent_scene_pin_point", _status, _scene_p, ctypes.c_uint32, ctypes.c_int32)
+_declare("ent_scene_unpin_point", _status, _scene_p, ctypes.c_uint32)
+_declare("ent_scene_attach_mesentery", _status, _scene_p, ctypes.c_int32)
 _declare("ent_tool_desc_init", _status, ctypes.POINTER(s.ent_tool_desc), ctypes.c_uint32)
 _declare("ent_tool_add", _status, _scene_p, ctypes.POINTER(s.ent_tool_desc), ctypes.POINTER(ctypes.c_int32))
 _declare("ent_tool_set_pose", _status, _scene_p, ctypes.c_int32, _double_p, _double_p)
@@ -102,6 +117,10 @@ _declare("ent_scene_contact_summary", _status, _scene_p, ctypes.POINTER(s.ent_co
 _declare("ent_tool_read_contacts", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_tool_contacts))
 _declare("ent_scene_save_state", _status, _scene_p, ctypes.c_void_p, ctypes.c_size_t, ctypes.POINTER(ctypes.c_size_t))
 _declare("ent_scene_restore_state", _status, _scene_p, ctypes.c_void_p, ctypes.c_size_t)
+_declare("ent_tool_stiffness", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(ctypes.c_double))
+_declare("ent_tool_read_stats", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_tool_stats))
+_declare("ent_tool_remove", _status, _scene_p, ctypes.c_int32)
+_declare("ent_scene_tool_count", _status, _scene_p, ctypes.POINTER(ctypes.c_int32))
 _skin_p = ctypes.c_void_p
 _declare("ent_skin_desc_init", _status, ctypes.POINTER(s.ent_skin_desc), ctypes.c_uint32)
 _declare("ent_skin_create", _status, _scene_p, ctypes.POINTER(s.ent_skin_desc), ctypes.POINTER(_skin_p))

@@ -104,6 +104,7 @@ class ent_skin_desc(ctypes.Structure):
         ("voxel_size_radii", ctypes.c_double),
         ("window_radii", ctypes.c_double),
         ("ring_chord_error_radii", ctypes.c_double),
+        ("stable_topology", ctypes.c_int32),
     ]
 
 
@@ -119,6 +120,11 @@ class ent_mesh_view(ctypes.Structure):
         ("indices", ctypes.c_void_p),
         ("time_s", ctypes.c_double),
         ("updates", ctypes.c_uint64),
+        ("around_v", ctypes.c_void_p),
+        ("tangents_xyz", ctypes.c_void_p),
+        ("topology_serial", ctypes.c_uint64),
+        ("topology_changed", ctypes.c_int32),
+        ("stable_topology", ctypes.c_int32),
     ]
 
 
@@ -155,6 +161,14 @@ class ent_obstacle_desc(ctypes.Structure):
         ("start_m", _vec3),
         ("end_m", _vec3),
         ("radius_m", ctypes.c_double),
+        ("mesh_vertices_xyz_m", ctypes.POINTER(ctypes.c_double)),
+        ("mesh_vertex_count", ctypes.c_uint32),
+        ("mesh_triangles", ctypes.POINTER(ctypes.c_uint32)),
+        ("mesh_triangle_count", ctypes.c_uint32),
+        ("mesh_voxel_size_m", ctypes.c_double),
+        ("position_m", _vec3),
+        ("orientation_wxyz", ctypes.c_double * 4),
+        ("friction", ctypes.c_double),
     ]
 
 
@@ -169,6 +183,11 @@ class ent_tool_desc(ctypes.Structure):
         ("grasp_damping_N_s_per_m", ctypes.c_double),
         ("position_m", _vec3),
         ("orientation_wxyz", ctypes.c_double * 4),
+        ("mode", ctypes.c_int32),
+        ("passivity_limiter", ctypes.c_int32),
+        ("coupling_stiffness_N_per_m", ctypes.c_double),
+        ("coupling_damping_N_s_per_m", ctypes.c_double),
+        ("friction", ctypes.c_double),
     ]
 
 
@@ -180,6 +199,24 @@ class ent_tool_feedback(ctypes.Structure):
         ("torque_Nm", _vec3),
         ("contacts", ctypes.c_uint32),
         ("time_s", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+        ("stiffness_N_per_m", ctypes.c_double * 9),
+        ("proxy_position_m", _vec3),
+        ("commanded_position_m", _vec3),
+        ("orientation_wxyz", ctypes.c_double * 4),
+    ]
+
+
+class ent_tool_stats(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("grasping", ctypes.c_int32),
+        ("contacts", ctypes.c_uint32),
+        ("reserved", ctypes.c_uint32),
+        ("energy_in_J", ctypes.c_double),
+        ("energy_out_J", ctypes.c_double),
+        ("limiter_energy_J", ctypes.c_double),
+        ("largest_force_change_N", ctypes.c_double),
         ("steps", ctypes.c_uint64),
     ]
 
@@ -234,5 +271,5 @@ class ent_tool_contacts(ctypes.Structure):
 
 
 ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_obstacle_desc, ent_tool_desc,
-       ent_tool_feedback, ent_skin_desc, ent_mesh_view, ent_skin_metrics, ent_contact, ent_contact_summary,
-       ent_tool_contacts)
+       ent_tool_feedback, ent_tool_stats, ent_skin_desc, ent_mesh_view, ent_skin_metrics, ent_contact,
+       ent_contact_summary, ent_tool_contacts)

@@ -12,7 +12,7 @@ from . import _structs as s
 from ._errors import ERROR_BUFFER_TOO_SMALL, Error, check
 from ._handle import OwnedHandle
 from ._library import lib
-from .tool import Tool, tool_desc
+from .tool import Tool, _numbers, tool_desc
 
 EFFECT_STRETCH = 0
 EFFECT_BEND = 1
@@ -44,6 +44,9 @@ OBSTACLE_BOX_INSIDE = 0
 OBSTACLE_PLANE = 1
 OBSTACLE_SPHERE = 2
 OBSTACLE_CAPSULE = 3
+OBSTACLE_MESH = 4          # a triangle mesh (an organ), met through its signed distance field
+
+NO_OBSTACLE = -1           # the world, for pin_point and attach_mesentery
 
 CONTACT_SELF = 0      # another fold of the bowel
 CONTACT_OBSTACLE = 1  # an obstacle (index: its index)
@@ -76,13 +79,37 @@ def effect_number(effect):
 
 
 # The obstacles of add_obstacle: kind, its number, and its keys (those of the JSON
-# "environment" entries) with the ent_obstacle_desc field each sets.
+# "environment" entries) with the ent_obstacle_desc field each sets. Every kind also takes
+# _FRAME_KEYS; a mesh takes vertices and triangles (arrays, handled apart).
 _OBSTACLES = {
     "box_inside": (OBSTACLE_BOX_INSIDE, {"center": "center_m", "half_extents": "half_extents_m"}),
     "plane": (OBSTACLE_PLANE, {"point": "center_m", "normal": "normal"}),
     "sphere": (OBSTACLE_SPHERE, {"center": "center_m", "radius": "radius_m"}),
     "capsule": (OBSTACLE_CAPSULE, {"start": "start_m", "end": "end_m", "radius": "radius_m"}),
+    "mesh": (OBSTACLE_MESH, {"vertices": None, "triangles": None, "voxel_size": "mesh_voxel_size_m"}),
 }
+_FRAME_KEYS = {"position": "position_m", "orientation": "orientation_wxyz", "friction": "friction"}
+
+
+def _mesh_arrays(desc, vertices, triangles):
+    """Points desc at C-contiguous copies of the mesh arrays, kept alive on desc (the library
+    copies them during ent_scene_add_obstacle)."""
+    if vertices is None or triangles is None:
+        raise TypeError("a mesh obstacle needs both vertices= (n, 3) and triangles= (m, 3)")
+    v = np.ascontiguousarray(vertices, dtype=np.float64)
+    t = np.asarray(triangles)
+    if v.ndim != 2 or v.shape[1] != 3:
+        raise ValueError("vertices must be an (n, 3) array of x y z in m, got shape %s" % (v.shape,))
+    if t.ndim != 2 or t.shape[1] != 3:
+        raise ValueError("triangles must be an (m, 3) array of vertex indices, got shape %s" % (t.shape,))
+    if t.size and (not np.issubdtype(t.dtype, np.integer) or t.min() < 0 or t.max() > 0xFFFFFFFF):
+        raise ValueError("triangles must hold vertex indices from 0 (integers that fit 32 bits)")
+    t = np.ascontiguousarray(t, dtype=np.uint32)
+    desc.mesh_vertices_xyz_m = v.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+    desc.mesh_vertex_count = v.shape[0]
+    desc.mesh_triangles = t.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32))
+    desc.mesh_triangle_count = t.shape[0]
+    desc._arrays = (v, t)
 
 
 def obstacle_desc(kind, **keys):
@@ -92,7 +119,8 @@ def obstacle_desc(kind, **keys):
         kind = {number: name for name, (number, _) in _OBSTACLES.items()}.get(kind, kind)
     if kind not in _OBSTACLES:
         raise ValueError("unknown obstacle kind %r (expected one of: %s)" % (kind, ", ".join(_OBSTACLES)))
-    number, allowed = _OBSTACLES[kind]
+    number, shape_keys = _OBSTACLES[kind]
+    allowed = dict(shape_keys, **_FRAME_KEYS)
     desc = s.ent_obstacle_desc()
     check(lib.ent_obstacle_desc_init(ctypes.byref(desc), ctypes.sizeof(desc)), "ent_obstacle_desc_init")
     desc.kind = number
@@ -100,14 +128,15 @@ def obstacle_desc(kind, **keys):
         if key not in allowed:
             raise TypeError("unknown key %r for a %s obstacle (expected one of: %s)"
                             % (key, kind, ", ".join(allowed)))
+        if allowed[key] is None:
+            continue
         target = getattr(desc, allowed[key])
         if isinstance(target, ctypes.Array):
-            values = [float(v) for v in value]
-            if len(values) != 3:
-                raise ValueError("%s must be 3 numbers, got %d" % (key, len(values)))
-            target[:] = values
+            target[:] = list(_numbers(value, len(target), key))
         else:
             setattr(desc, allowed[key], float(value))
+    if kind == "mesh":
+        _mesh_arrays(desc, keys.get("vertices"), keys.get("triangles"))
     return desc
 
 
@@ -223,15 +252,19 @@ class Scene(OwnedHandle):
     Scene('{"intestine": {...}}')       from JSON text (str or bytes)
     Scene({"intestine": {...}})         from a dict, given to the library as JSON
     Scene(desc=SceneDesc(...))          from a C description (or desc={field: value})
+    Scene(file="abdomen.json")          from a JSON file; its mesh files are found next to it
     log=callable(level, message)        optional: receives the scene's log lines
-    add_tool(...) -> enteron.Tool, tool(id), tools; add_obstacle(kind, ...) -> index.
-    Failures raise enteron.Error. Threads: as in C, one thread drives (step, add_*, every
-    Tool call) while others query (axis, control_points, stats, effect_stats).
+    add_tool(...) -> enteron.Tool, tool(id), tools; add_obstacle(kind, ...) -> index, then
+    set_obstacle_pose, set_obstacle_velocity, set_obstacle_friction, remove_obstacle,
+    obstacle_mesh; set_gravity, pin_point, unpin_point, attach_mesentery (moving anatomy).
+    Failures raise enteron.Error. Threads: as in C, one thread drives (step, add_*, the
+    moving anatomy's calls, every Tool call) while others query (axis, control_points,
+    stats, effect_stats, obstacle_pose, obstacle_count).
     """
 
-    def __init__(self, description=None, *, desc=None, log=None):
-        if (description is None) == (desc is None):
-            raise TypeError("give either a JSON description (text or dict) or desc=, not both or neither")
+    def __init__(self, description=None, *, desc=None, file=None, log=None):
+        if [description is None, desc is None, file is None].count(False) != 1:
+            raise TypeError("give one of a JSON description (text or dict), desc= or file=")
         self._handle = None
         self._skins = weakref.WeakSet()  # closed before the scene: a skin must not outlive it
         self._callbacks = None
@@ -249,6 +282,10 @@ class Scene(OwnedHandle):
                 desc = SceneDesc(**desc)
             desc.struct.callbacks = ctypes.pointer(self._callbacks) if self._callbacks is not None else None
             check(lib.ent_scene_create(ctypes.byref(desc.struct), ctypes.byref(handle)), "ent_scene_create")
+        elif file is not None:
+            callbacks = ctypes.byref(self._callbacks) if self._callbacks is not None else None
+            check(lib.ent_scene_create_json_file(str(file).encode(), callbacks, ctypes.byref(handle)),
+                  "ent_scene_create_json_file")
         else:
             if isinstance(description, dict):
                 description = json.dumps(description)
@@ -258,7 +295,7 @@ class Scene(OwnedHandle):
                   "ent_scene_create_json")
         self._handle = handle
         self._count = self._control_point_count()
-        self._tool_count = self._count_tools() if description is not None else 0
+        self._tool_count = self._count_tools() if desc is None else 0
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
@@ -279,20 +316,80 @@ class Scene(OwnedHandle):
         """Adds a rigid obstacle (ent_scene_add_obstacle) and returns its index. kind (a name
         or enteron.OBSTACLE_*) and keys are those of a JSON "environment" entry: add_obstacle("box_inside", center=(0, 0, 0),
         half_extents=(0.12, 0.12, 0.12)), ("plane", point=, normal=), ("sphere", center=,
-        radius=), ("capsule", start=, end=, radius=); m. The first obstacle turns the
-        environment effect on. Allocates: call it between steps."""
+        radius=), ("capsule", start=, end=, radius=), ("mesh", vertices=(n, 3) array in m,
+        triangles=(m, 3) vertex indices, voxel_size=); every kind also takes position=,
+        orientation= (w, x, y, z: its frame) and friction=. The first obstacle turns the
+        environment effect on. Allocates (a mesh's distance field is built here): call it
+        between steps."""
         desc = obstacle_desc(kind, **keys)
         index = ctypes.c_int32(-1)
         check(lib.ent_scene_add_obstacle(self._live(), ctypes.byref(desc), ctypes.byref(index)),
               "ent_scene_add_obstacle")
         return index.value
 
+    def remove_obstacle(self, obstacle):
+        """Removes an obstacle from the next step on (ent_scene_remove_obstacle); the others
+        keep their indices."""
+        check(lib.ent_scene_remove_obstacle(self._live(), obstacle), "ent_scene_remove_obstacle")
+
+    def set_obstacle_pose(self, obstacle, position, orientation=(1.0, 0.0, 0.0, 0.0)):
+        """Moves an obstacle's frame (ent_obstacle_set_pose): reached at the end of the next
+        step, moving within it; position in m, orientation (w, x, y, z)."""
+        check(lib.ent_obstacle_set_pose(self._live(), obstacle, _numbers(position, 3, "position"),
+                                        _numbers(orientation, 4, "orientation")), "ent_obstacle_set_pose")
+
+    def set_obstacle_velocity(self, obstacle, linear, angular=(0.0, 0.0, 0.0)):
+        """The velocity the obstacle's contacts see in the next step (ent_obstacle_set_velocity):
+        linear of its origin in m/s, angular in rad/s."""
+        check(lib.ent_obstacle_set_velocity(self._live(), obstacle, _numbers(linear, 3, "linear"),
+                                            _numbers(angular, 3, "angular")), "ent_obstacle_set_velocity")
+
+    def set_obstacle_friction(self, obstacle, friction):
+        """An obstacle's Coulomb friction coefficient (>= 0; negative: the scene's)."""
+        check(lib.ent_obstacle_set_friction(self._live(), obstacle, float(friction)), "ent_obstacle_set_friction")
+
+    def obstacle_mesh(self, obstacle):
+        """A mesh obstacle's (vertices (n, 3) in m in its frame, triangles (m, 3) uint32):
+        copies (ent_obstacle_mesh). Between steps, from the driving thread."""
+        vertex_count, triangle_count = ctypes.c_uint32(), ctypes.c_uint32()
+        check(lib.ent_obstacle_mesh(self._live(), obstacle, 0, None, ctypes.byref(vertex_count), 0, None,
+                                    ctypes.byref(triangle_count)), "ent_obstacle_mesh")
+        vertices, vertex_pointer = _buffers.new_array(vertex_count.value, 3)
+        triangles = np.zeros((triangle_count.value, 3), dtype=np.uint32)
+        check(lib.ent_obstacle_mesh(self._live(), obstacle, vertex_count.value, vertex_pointer,
+                                    ctypes.byref(vertex_count), triangle_count.value,
+                                    triangles.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32)),
+                                    ctypes.byref(triangle_count)), "ent_obstacle_mesh")
+        return vertices, triangles
+
+    def set_gravity(self, gravity_m_per_s2):
+        """Gravity from the next step on, m/s^2 (ent_scene_set_gravity): a table tilt."""
+        check(lib.ent_scene_set_gravity(self._live(), _numbers(gravity_m_per_s2, 3, "gravity")),
+              "ent_scene_set_gravity")
+
+    def pin_point(self, control_point, obstacle=NO_OBSTACLE):
+        """Holds a control point where it is, in the world or on an obstacle's frame
+        (ent_scene_pin_point)."""
+        check(lib.ent_scene_pin_point(self._live(), control_point, obstacle), "ent_scene_pin_point")
+
+    def unpin_point(self, control_point):
+        """Lets a pinned control point go (ent_scene_unpin_point)."""
+        check(lib.ent_scene_unpin_point(self._live(), control_point), "ent_scene_unpin_point")
+
+    def attach_mesentery(self, obstacle=NO_OBSTACLE):
+        """Fixes the mesentery's root to an obstacle's frame, or to the world
+        (ent_scene_attach_mesentery)."""
+        check(lib.ent_scene_attach_mesentery(self._live(), obstacle), "ent_scene_attach_mesentery")
+
     def add_tool(self, *, position=(0.0, 0.0, 0.0), orientation=(1.0, 0.0, 0.0, 0.0), **settings):
         """Adds a surgical tool (ent_tool_add) and returns its enteron.Tool. Keywords, SI
         units, library defaults for those not given: radius (m, shaft radius), length (m, of
         the shaft from the tip along local +z), max_force (N, bound of the force it exerts
         and reports), grasp_margin (m), grasp_stiffness (N/m), grasp_damping (N s/m),
-        position (m, of the tip), orientation (w, x, y, z; identity: vertical, tip lowest).
+        position (m, of the tip), orientation (w, x, y, z; identity: vertical, tip lowest),
+        mode ("proxy", the default, or "direct"), coupling_stiffness (N/m), coupling_damping
+        (N s/m), friction (its contacts' Coulomb coefficient; < 0: the scene's),
+        passivity_limiter (True or False) (docs/haptics.md).
         The first tool turns the tools effect on. Allocates: call it between steps."""
         desc = tool_desc(position, orientation, **settings)
         index = ctypes.c_int32(-1)
@@ -307,8 +404,17 @@ class Scene(OwnedHandle):
 
     @property
     def tools(self):
-        """The scene's tools, in id order (a tuple of Tool)."""
-        return tuple(Tool(self, n) for n in range(self._tool_count))
+        """The scene's tools, in id order (a tuple of Tool), without the removed ones."""
+        grasping = ctypes.c_int32()
+        return tuple(Tool(self, n) for n in range(self._tool_count)
+                     if lib.ent_tool_state(self._live(), n, ctypes.byref(grasping)) == 0)
+
+    @property
+    def tool_count(self):
+        """The number of tools added and not removed (ent_scene_tool_count)."""
+        count = ctypes.c_int32()
+        check(lib.ent_scene_tool_count(self._live(), ctypes.byref(count)), "ent_scene_tool_count")
+        return count.value
 
     def _count_tools(self):
         # The C API has no tool count: the JSON tools are ids 0..n-1, so ask for each until
@@ -345,6 +451,22 @@ class Scene(OwnedHandle):
             return self.control_points()
         check(status, "ent_scene_control_points")
         return array[: count.value]
+
+    @property
+    def obstacle_count(self):
+        """Obstacles in the last published state, removed ones not counted."""
+        count = ctypes.c_uint32()
+        check(lib.ent_scene_obstacle_count(self._live(), ctypes.byref(count)), "ent_scene_obstacle_count")
+        return count.value
+
+    def obstacle_pose(self, obstacle):
+        """Where an obstacle's frame rests in the last published state: (position (3,) in m,
+        orientation (4,) w x y z), numpy arrays."""
+        position, orientation = np.zeros(3), np.zeros(4)
+        check(lib.ent_obstacle_pose(self._live(), obstacle, position.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
+                                    orientation.ctypes.data_as(ctypes.POINTER(ctypes.c_double))),
+              "ent_obstacle_pose")
+        return position, orientation
 
     def stats(self):
         """ent_scene_stats as a Stats dataclass."""

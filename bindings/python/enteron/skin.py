@@ -46,14 +46,25 @@ def skin_method(method):
 class Mesh:
     """One ent_skin_mesh: positions (V, 3) float32 in m, normals (V, 3) float32 (unit,
     outward), u (V,) float32 (axis arc length / total length, in [0, 1]), indices (T, 3)
-    uint32 (counter-clockwise seen from outside). The arrays are read-only copies that stay
-    valid after the skin's next update() or close()."""
+    uint32 (counter-clockwise seen from outside), v (V,) float32 (the angle around the
+    axis / 2 pi in the rotation-minimising frame, in [0, 1)), tangents (V, 3) float32 (unit,
+    perpendicular to the normal, along increasing u). The arrays are read-only copies that
+    stay valid after the skin's next update() or close().
+    Topology: topology_changed is True when the last update changed vertex_count or the
+    indices (upload them again only then); topology_serial counts such updates (equal
+    serials, the same indices); stable_topology says whether the skin keeps its topology
+    while the bowel moves (tube and convolution by default; point_skeleton never)."""
     positions: np.ndarray
     normals: np.ndarray
     u: np.ndarray
     indices: np.ndarray
     time_s: float   # simulated time of the state the mesh was made from
     updates: int    # successful updates of the skin so far
+    v: np.ndarray
+    tangents: np.ndarray
+    topology_serial: int
+    topology_changed: bool
+    stable_topology: bool
 
     @property
     def vertex_count(self):
@@ -94,7 +105,9 @@ class Skin(OwnedHandle):
     library's (convolution). The keyword arguments are the knobs of ent_skin_desc, named as
     its fields (segments, ring_spacing_radii, cap_rings, skeleton_spacing_radii,
     voxel_size_radii, window_radii, ring_chord_error_radii: the convolution's level of
-    detail, rings closer where the axis bends); the others keep the library's defaults.
+    detail, rings closer where the axis bends; stable_topology: 1 (default) keeps the
+    vertex count and indices of tube and convolution while the bowel moves); the others
+    keep the library's defaults.
     The mesh is empty until the first update(). Failures raise enteron.Error.
     The skin keeps its Scene alive; closing the Scene closes its skins first.
     Threads: one thread per skin (update, mesh, metrics, close must not race), which may
@@ -143,7 +156,11 @@ class Skin(OwnedHandle):
                     normals=_buffers.copy(raw.normals_xyz, (v, 3), ctypes.c_float),
                     u=_buffers.copy(raw.axis_u, (v,), ctypes.c_float),
                     indices=_buffers.copy(raw.indices, (t, 3), ctypes.c_uint32),
-                    time_s=raw.time_s, updates=raw.updates)
+                    time_s=raw.time_s, updates=raw.updates,
+                    v=_buffers.copy(raw.around_v, (v,), ctypes.c_float),
+                    tangents=_buffers.copy(raw.tangents_xyz, (v, 3), ctypes.c_float),
+                    topology_serial=raw.topology_serial, topology_changed=bool(raw.topology_changed),
+                    stable_topology=bool(raw.stable_topology))
 
     def metrics(self):
         """ent_skin_metrics as a SkinMetrics (costs more than an update: not every frame)."""

@@ -37,7 +37,17 @@ SETTINGS = {
     "grasp_margin": "grasp_margin_m",
     "grasp_stiffness": "grasp_stiffness_N_per_m",
     "grasp_damping": "grasp_damping_N_s_per_m",
+    "coupling_stiffness": "coupling_stiffness_N_per_m",
+    "coupling_damping": "coupling_damping_N_s_per_m",
+    "friction": "friction",
 }
+
+#: ENT_TOOL_MODE_*: how a tool meets the bowel (docs/haptics.md).
+TOOL_MODE_PROXY = 0
+TOOL_MODE_DIRECT = 1
+
+#: add_tool's mode= values (ent_tool_desc.mode).
+MODES = {"proxy": TOOL_MODE_PROXY, "direct": TOOL_MODE_DIRECT}
 
 IDENTITY = (1.0, 0.0, 0.0, 0.0)
 
@@ -45,12 +55,30 @@ IDENTITY = (1.0, 0.0, 0.0, 0.0)
 class ToolFeedback(typing.NamedTuple):
     """ent_tool_feedback: what a tool felt and did in the last published step. force (3,)
     in N and torque (3,) about the tip in N m on the tool, bounded by its max_force;
-    grasping; contacts (collision spheres touching it); time_s and steps of that state."""
+    grasping; contacts (collision spheres touching it); time_s and steps of that state;
+    stiffness (3, 3) dF/dx in N/m (as Tool.stiffness); proxy_position (3,), the tip of the
+    tool in the scene, and commanded_position (3,), the tip asked for, in m."""
     force: np.ndarray
     torque: np.ndarray
     grasping: bool
     contacts: int
     time_s: float
+    steps: int
+    stiffness: np.ndarray
+    proxy_position: np.ndarray
+    commanded_position: np.ndarray
+
+
+class ToolStats(typing.NamedTuple):
+    """ent_tool_stats: the tool's passivity observer since it was added. energy_in and
+    energy_out in J (the work the device put in and was given back; passive while
+    energy_in - energy_out >= 0), limiter_energy in J, largest_force_change in N."""
+    grasping: bool
+    contacts: int
+    energy_in: float
+    energy_out: float
+    limiter_energy: float
+    largest_force_change: float
     steps: int
 
 
@@ -90,11 +118,20 @@ def _numbers(value, count, name):
     return (ctypes.c_double * count)(*numbers)
 
 
-def tool_desc(position=(0.0, 0.0, 0.0), orientation=IDENTITY, **settings):
+def tool_desc(position=(0.0, 0.0, 0.0), orientation=IDENTITY, mode=None, passivity_limiter=None, **settings):
     """An ent_tool_desc with the library's defaults (ent_tool_desc_init), then the given
-    pose and settings (the keys of SETTINGS, in SI units)."""
+    pose and settings (the keys of SETTINGS, in SI units; mode "proxy" or "direct";
+    passivity_limiter True or False)."""
     desc = s.ent_tool_desc()
     check(lib.ent_tool_desc_init(ctypes.byref(desc), ctypes.sizeof(desc)), "ent_tool_desc_init")
+    if mode is not None:
+        if mode not in MODES:
+            raise ValueError("mode must be one of %s, got %r" % (", ".join(MODES), mode))
+        desc.mode = MODES[mode]
+    if passivity_limiter is not None:
+        if not isinstance(passivity_limiter, bool):
+            raise TypeError("passivity_limiter must be True or False, got %r" % (passivity_limiter,))
+        desc.passivity_limiter = int(passivity_limiter)
     for name, value in settings.items():
         if name not in SETTINGS:
             raise TypeError("unknown tool setting %r (expected one of: %s, position, orientation)"
@@ -152,7 +189,32 @@ class Tool:
         check(lib.ent_tool_read_feedback(self._scene._live(), self._id, ctypes.byref(raw)),
               "ent_tool_read_feedback")
         return ToolFeedback(np.array(raw.force_N[:]), np.array(raw.torque_Nm[:]), bool(raw.grasping),
-                            raw.contacts, raw.time_s, raw.steps)
+                            raw.contacts, raw.time_s, raw.steps, np.array(raw.stiffness_N_per_m[:]).reshape(3, 3),
+                            np.array(raw.proxy_position_m[:]), np.array(raw.commanded_position_m[:]))
+
+    def stiffness(self):
+        """The tool's local stiffness at the last published step (ent_tool_stiffness): a new
+        (3, 3) float64 array K = dF/dx in N/m (K[i, j] = dF_i/dx_j), the bowel and the
+        velocities held. A device loop faster than the physics renders F + K (x - x_k).
+        Any thread."""
+        k = (ctypes.c_double * 9)()
+        check(lib.ent_tool_stiffness(self._scene._live(), self._id, k), "ent_tool_stiffness")
+        return np.array(k[:]).reshape(3, 3)
+
+    def stats(self):
+        """The tool's passivity observer and counters (ent_tool_read_stats) as a ToolStats.
+        Any thread."""
+        raw = s.ent_tool_stats()
+        raw.struct_size = ctypes.sizeof(raw)
+        check(lib.ent_tool_read_stats(self._scene._live(), self._id, ctypes.byref(raw)), "ent_tool_read_stats")
+        return ToolStats(bool(raw.grasping), raw.contacts, raw.energy_in_J, raw.energy_out_J, raw.limiter_energy_J,
+                         raw.largest_force_change_N, raw.steps)
+
+    def remove(self):
+        """Removes the tool from its scene (ent_tool_remove): from the next step it touches
+        nothing and lets go; its calls then raise enteron.Error (ERROR_NOT_FOUND). A driving
+        call: from the thread that steps."""
+        check(lib.ent_tool_remove(self._scene._live(), self._id), "ent_tool_remove")
 
     def contacts(self):
         """ent_tool_read_contacts as a ToolContacts, from one snapshot. Any thread."""

@@ -32,7 +32,9 @@ def raw_mesh(skin):
     return view, {"positions": copy(view.positions_xyz_m, 3 * v, np.float32).reshape(v, 3),
                   "normals": copy(view.normals_xyz, 3 * v, np.float32).reshape(v, 3),
                   "u": copy(view.axis_u, v, np.float32),
-                  "indices": copy(view.indices, 3 * t, np.uint32).reshape(t, 3)}
+                  "indices": copy(view.indices, 3 * t, np.uint32).reshape(t, 3),
+                  "v": copy(view.around_v, v, np.float32),
+                  "tangents": copy(view.tangents_xyz, 3 * v, np.float32).reshape(v, 3)}
 
 
 class MeshIsTheCApis(unittest.TestCase):
@@ -107,6 +109,65 @@ class MeshIsTheCApis(unittest.TestCase):
             self.assertGreater(lod_vertices, even_vertices)
             self.assertLess(lod.facet_error_max, even.facet_error_max)
             self.assertTrue(lod.watertight)
+
+
+class StableTopology(unittest.TestCase):
+    """A mesh a GPU can keep: tube and convolution keep their indices while the bowel
+    moves; v around the tube in [0, 1); unit tangents perpendicular to the normals."""
+
+    def test_ring_skins_keep_their_indices_while_the_bowel_falls(self):
+        with enteron.Scene(SCENE) as scene:
+            for method in ("tube", "convolution"):
+                with self.subTest(method=method), enteron.Skin(scene, method) as skin:
+                    skin.update()
+                    first = skin.mesh()
+                    self.assertTrue(first.stable_topology)
+                    self.assertTrue(first.topology_changed)
+                    self.assertEqual(first.topology_serial, 1)
+                    for _ in range(5):
+                        for _ in range(40):
+                            scene.step(H)
+                        skin.update()
+                        mesh = skin.mesh()
+                        self.assertFalse(mesh.topology_changed)
+                        self.assertEqual(mesh.topology_serial, 1)
+                        np.testing.assert_array_equal(mesh.indices, first.indices)
+                        np.testing.assert_array_equal(mesh.v, first.v)
+                    self.assertGreater(np.abs(mesh.positions - first.positions).max(), 1e-3)  # it moved
+
+    def test_v_and_tangents_for_every_method(self):
+        with enteron.Scene(SCENE) as scene:
+            for _ in range(10):
+                scene.step(H)
+            for method in ("tube", "point_skeleton", "convolution"):
+                with self.subTest(method=method), enteron.Skin(scene, method) as skin:
+                    skin.update()
+                    mesh = skin.mesh()
+                    _, raw = raw_mesh(skin)
+                    np.testing.assert_array_equal(mesh.v, raw["v"])
+                    np.testing.assert_array_equal(mesh.tangents, raw["tangents"])
+                    self.assertEqual((mesh.v.shape, mesh.tangents.shape), ((mesh.vertex_count,), (mesh.vertex_count, 3)))
+                    self.assertGreaterEqual(float(mesh.v.min()), 0.0)
+                    self.assertLess(float(mesh.v.max()), 1.0)
+                    np.testing.assert_allclose(np.linalg.norm(mesh.tangents, axis=1), 1.0, atol=1e-6)
+                    self.assertLess(float(np.abs((mesh.tangents * mesh.normals).sum(axis=1)).max()), 1e-5)
+                    self.assertEqual(mesh.stable_topology, method != "point_skeleton")
+
+    def test_point_skeleton_and_stable_topology_off_say_when_indices_change(self):
+        with enteron.Scene(SCENE) as scene, enteron.Skin(scene, "point_skeleton") as skin:
+            for serial in (1, 2):
+                scene.step(H)
+                skin.update()
+                mesh = skin.mesh()
+                self.assertFalse(mesh.stable_topology)
+                self.assertTrue(mesh.topology_changed)
+                self.assertEqual(mesh.topology_serial, serial)
+        with enteron.Scene(SCENE) as scene, enteron.Skin(scene, "tube", stable_topology=0) as skin:
+            skin.update()
+            self.assertFalse(skin.mesh().stable_topology)
+        with enteron.Scene(SCENE) as scene, self.assertRaises(enteron.Error) as caught:
+            enteron.Skin(scene, "tube", stable_topology=2)
+        self.assertIn("stable_topology", str(caught.exception))
 
 
 class Copies(unittest.TestCase):

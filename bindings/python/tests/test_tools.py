@@ -257,5 +257,58 @@ class Obstacles(unittest.TestCase):
             self.assertFalse(scene.effect_stats("environment").enabled)
 
 
+class Haptics(unittest.TestCase):
+    """Issue 18 through the binding: the proxy, the stiffness, the passivity observer,
+    removal and count."""
+
+    def test_the_proxy_stays_out_of_the_tube_and_the_stiffness_pushes_back(self):
+        with bowel_on_floor() as scene:
+            tool = scene.add_tool(radius=0.005, max_force=5.0, position=(0.0, 0.0, 3 * R))
+            self.assertTrue(np.array_equal(tool.stiffness(), np.zeros((3, 3))))
+            # The device goes 2 cm into the bowel: the proxy rests on its surface.
+            for i in range(1, 101):
+                tool.set_pose((0.0, 0.0, 3 * R - 3e-4 * i))
+                scene.step(H)
+            feedback = tool.feedback()
+            np.testing.assert_array_equal(feedback.commanded_position, (0.0, 0.0, 3 * R - 0.03))
+            self.assertGreater(feedback.proxy_position[2], R + 0.005 - 0.2 * R, "on the bowel, not through it")
+            self.assertLessEqual(np.linalg.norm(feedback.force), 5.0 * (1 + 1e-12))
+            k = tool.stiffness()
+            self.assertEqual(k.shape, (3, 3))
+            np.testing.assert_array_equal(k, feedback.stiffness)
+            # The coupling is saturated (2 cm at 1 N/mm > 5 N): no stiffer along the force.
+            self.assertLessEqual(k[2, 2], 1e-9, "deeper pushes up harder, or not at all when saturated")
+            stats = tool.stats()
+            self.assertIsInstance(stats, enteron.ToolStats)
+            self.assertGreater(stats.energy_in, 0.0)
+            self.assertEqual(stats.limiter_energy, 0.0)
+
+    def test_tools_can_be_removed_and_counted(self):
+        with bowel_on_floor() as scene:
+            self.assertEqual(scene.tool_count, 0)
+            first = scene.add_tool(position=(0.0, 0.0, 0.1), mode="direct", friction=0.0)
+            second = scene.add_tool(position=(0.1, 0.0, 0.1), passivity_limiter=True)
+            self.assertEqual(scene.tool_count, 2)
+            first.remove()
+            self.assertEqual(scene.tool_count, 1)
+            self.assertEqual(scene.tools, (second,))
+            with self.assertRaises(enteron.Error) as caught:
+                first.stiffness()
+            self.assertEqual(caught.exception.status, enteron.ERROR_NOT_FOUND)
+            scene.step(H)
+            self.assertEqual(second.feedback().contacts, 0)
+
+    def test_bad_haptic_settings_raise(self):
+        with bowel_on_floor() as scene:
+            with self.assertRaisesRegex(ValueError, "mode must be one of proxy, direct"):
+                scene.add_tool(mode="ghost")
+            with self.assertRaisesRegex(TypeError, "passivity_limiter must be True or False"):
+                scene.add_tool(passivity_limiter=1)
+            with self.assertRaises(enteron.Error) as caught:
+                scene.add_tool(coupling_stiffness=-1.0)
+            self.assertIn("coupling_stiffness_N_per_m", caught.exception.message)
+            self.assertEqual(scene.tool_count, 0)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -136,6 +136,12 @@ TEST(BridgeApi, TheWorkspaceMappingTakesDevicePosesInAndForcesOut) {
     ASSERT_GT(magnitude(f.force_N), 0.05);
     EXPECT_GT(f.force_N[1], 0.9 * magnitude(f.force_N));
     EXPECT_LE(magnitude(f.force_N), kMaxForce_N + 1e-12);
+    // The tool's stiffness (ent_tool_stiffness) travels too, mapped like the force: pressing
+    // deeper (scene -z, device -y) pushes up harder, per device millimetre.
+    double K[9];
+    ASSERT_EQ(ent_tool_stiffness(ent_lcm_bridge_scene(bridge.get()), 0, K), ENT_OK) << ent_last_error();
+    ASSERT_LT(K[8], -1.0) << "dF_z/dz in the scene, N/m";
+    EXPECT_NEAR(f.stiffness_N_per_m[4], 0.001 * K[8], 1e-9 * std::fabs(K[8])) << "dF_y/dy on the device, N/mm";
 }
 
 }  // namespace

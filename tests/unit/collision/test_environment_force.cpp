@@ -13,6 +13,7 @@
 #include "collision/contact_model.h"
 #include "collision/obstacle.h"
 #include "collision/sphere_loads.h"
+#include "mechanics/rigid_frames.h"
 #include "mechanics/state.h"
 
 namespace {
@@ -26,6 +27,7 @@ using enteron::collision::ObstacleKind;
 using enteron::collision::SphereLoads;
 using enteron::mechanics::AxisModel;
 using enteron::mechanics::ContactSummary;
+using enteron::mechanics::RigidFrames;
 using enteron::mechanics::State;
 
 TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForces) {
@@ -48,7 +50,9 @@ TEST(EnvironmentForce, AStraightAxisPressedIntoAPlaneGetsTheSumOfItsSpheresForce
     const ContactParameters contact;
     CollisionSpheres axis_spheres(model.control_points, length, 0.5 * kRadius, kRadius, std::pmr::new_delete_resource());
     SphereLoads loads(axis_spheres, std::pmr::new_delete_resource());
-    EnvironmentForce effect(axis_spheres, contact, {plane}, state, std::pmr::new_delete_resource(), loads);
+    RigidFrames frames(std::pmr::new_delete_resource());
+    EnvironmentForce effect(axis_spheres, contact, frames, state, std::pmr::new_delete_resource(), loads);
+    effect.add_obstacle(plane);
     // What Dynamics does with the loads the contact effects share.
     const auto evaluate = [&](std::vector<double>& force) {
         loads.clear();

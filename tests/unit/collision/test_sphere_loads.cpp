@@ -15,6 +15,7 @@
 #include "collision/environment_force.h"
 #include "collision/self_contact_force.h"
 #include "mechanics/dynamics.h"
+#include "mechanics/rigid_frames.h"
 #include "mechanics/state.h"
 
 namespace {
@@ -39,7 +40,7 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
     floor.kind = ObstacleKind::plane;
     floor.center = {0.0, 0.0, -0.6 * kRadius};
     floor.extent = {0.0, 0.0, 1.0};
-    const std::vector<Obstacle> obstacles{floor};
+    mech::RigidFrames frames(memory);  // the floor's, at rest
     ContactParameters contact;
     contact.damping_depth = 0.1 * kRadius;
     const std::size_t m = axis.state.q.size();
@@ -57,7 +58,8 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
     // Each effect with loads of its own, applied after it.
     CollisionSpheres spheres_apart = axis.make_spheres();
     SphereLoads floor_loads(spheres_apart, memory), self_loads(spheres_apart, memory);
-    EnvironmentForce floor_apart(spheres_apart, contact, obstacles, axis.state, memory, floor_loads);
+    EnvironmentForce floor_apart(spheres_apart, contact, frames, axis.state, memory, floor_loads);
+    floor_apart.add_obstacle(floor);
     SelfContactForce self_apart(spheres_apart, contact, axis.state, memory, self_loads);
     Result apart = fresh();
     mech::Linearization lin_apart{&apart.system, h, apart.hv.data()};
@@ -71,7 +73,8 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
     // Both into one set of loads: nothing reaches the forces until the loads are applied.
     CollisionSpheres spheres_shared = axis.make_spheres();
     SphereLoads loads(spheres_shared, memory);
-    EnvironmentForce floor_shared(spheres_shared, contact, obstacles, axis.state, memory, loads);
+    EnvironmentForce floor_shared(spheres_shared, contact, frames, axis.state, memory, loads);
+    floor_shared.add_obstacle(floor);
     SelfContactForce self_shared(spheres_shared, contact, axis.state, memory, loads);
     Result shared = fresh();
     mech::Linearization lin_shared{&shared.system, h, shared.hv.data()};
@@ -85,8 +88,10 @@ TEST(SphereLoads, SharedByTheContactEffectsEqualsEachApplyingItsOwn) {
     CollisionSpheres spheres_dynamics = axis.make_spheres();
     SphereLoads dynamics_loads(spheres_dynamics, memory);
     mech::Dynamics dynamics(axis.model, memory);
-    dynamics.add_effect(enteron::make_owned<EnvironmentForce>(memory, spheres_dynamics, contact, obstacles,
-                                                              axis.state, memory, dynamics_loads));
+    auto floor_dynamics = enteron::make_owned<EnvironmentForce>(memory, spheres_dynamics, contact, frames, axis.state,
+                                                                memory, dynamics_loads);
+    floor_dynamics->add_obstacle(floor);
+    dynamics.add_effect(std::move(floor_dynamics));
     dynamics.add_effect(enteron::make_owned<SelfContactForce>(memory, spheres_dynamics, contact, axis.state, memory,
                                                               dynamics_loads));
     dynamics.add_shared_loads(&dynamics_loads, enteron::mechanics::EffectId::self_collision);

@@ -1,13 +1,15 @@
 // The tools effect (lib/collision/tools_force.h) on its own: the force of a tool on the
 // bowel and the wrench it reports are action and reaction, within max_force however deep
-// the tool presses, with the torque of the contact points about the tip; and a grasp
-// pulled past max_force slips: it adds no force and no energy, and is let go when the step
-// is accepted.
+// the tool presses, with the torque of the contact points about the tip; a grasp pulled
+// past max_force slips: it adds no force and no energy, and is let go when the step is
+// accepted; and the stiffness the tools publish is the derivative of their force (central
+// finite differences, direct tools here and the proxy in tool_proxy's own solve).
 #include "collision/tools_force.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory_resource>
 #include <vector>
 
@@ -50,6 +52,7 @@ struct Bench {
         tool.pose.position = {-0.1, 0.0, height};
         // Local +z along world +x: a quarter turn about y.
         tool.pose.orientation = {std::sqrt(0.5), 0.0, std::sqrt(0.5), 0.0};
+        tool.settings.mode = enteron::collision::ToolMode::direct;  // the capsule where it is put
         return tool;
     }
 
@@ -60,6 +63,7 @@ struct Bench {
         tools.begin_step(axis.state, kStep);
         tools.begin_attempt();
         tools.evaluate(state, force.data(), nullptr);
+        tools.evaluation_used(kStep, nullptr);  // one explicit evaluation over the whole step
         tools.end_step(true);
         *output = channels.outputs()[0];
         return force;
@@ -114,6 +118,7 @@ TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
     // A vertical tool (the identity pose) whose tip touches the bowel's middle from above.
     ToolConfig tool;
     tool.settings.max_force = 1.0;
+    tool.settings.mode = enteron::collision::ToolMode::direct;
     tool.pose.position = {0.2, 0.0, kRadius + tool.settings.radius};
     bench.tools.add_tool(tool);
     bench.channels.mailbox(0)->post_grasp(enteron::collision::ToolMailbox::Grasp::grasp);
@@ -137,6 +142,68 @@ TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
     EXPECT_EQ(bench.tools.potential_energy(at_end), 0.0);
     bench.tools.end_step(true);
     EXPECT_FALSE(bench.channels.outputs()[0].grasping);
+}
+
+// The force on a direct tool resting at `tool` (no motion: velocities zero) and its stiffness.
+struct Evaluated {
+    Vec3 force;
+    enteron::Mat3 stiffness;
+};
+Evaluated evaluate_at(const ToolConfig& tool, const enteron::mechanics::State& state) {
+    Bench bench;
+    bench.tools.add_tool(tool);
+    std::vector<double> force(state.q.size(), 0.0);
+    bench.tools.evaluate(state, force.data(), nullptr);
+    return {bench.tools.last_force(0), bench.tools.last_stiffness(0)};
+}
+
+// Central differences of the force, the tool moved by +-delta along each axis, against the
+// stiffness; the largest relative error.
+double stiffness_error(const ToolConfig& tool, const enteron::mechanics::State& state, double delta) {
+    const Evaluated at = evaluate_at(tool, state);
+    enteron::Mat3 differences;
+    for (int j = 0; j < 3; ++j) {
+        ToolConfig plus = tool, minus = tool;
+        plus.pose.position[j] += delta;
+        minus.pose.position[j] -= delta;
+        differences.col(j) = (evaluate_at(plus, state).force - evaluate_at(minus, state).force) / (2 * delta);
+    }
+    return (differences - at.stiffness).norm() / std::max(1e-12, differences.norm());
+}
+
+TEST(ToolsForce, TheStiffnessOfADirectToolIsTheDerivativeOfItsForce) {
+    Bench bench;
+    enteron::mechanics::State state = bench.axis.state;
+    // The bowel bent a little and moving (friction and damping at work), so that normals
+    // and slips differ from contact to contact.
+    for (std::size_t i = 0; i < state.q.size() / 3; ++i) {
+        state.q[3 * i + 1] = 0.01 * std::sin(10.0 * state.q[3 * i]);
+        state.v[3 * i + 0] = 0.02;
+        state.v[3 * i + 1] = -0.01;
+    }
+    struct Case {
+        const char* name;
+        ToolConfig tool;
+    };
+    ToolConfig vertical;  // one end pressing on the bowel from above
+    vertical.settings.mode = enteron::collision::ToolMode::direct;
+    vertical.settings.max_force = 100.0;
+    vertical.pose.position = {0.2, 0.003, kRadius + vertical.settings.radius - 0.002};
+    ToolConfig bounded = vertical;  // the same, within a bound it reaches
+    bounded.settings.max_force = 0.3;
+    ToolConfig slanted = vertical;  // across the bowel, a few spheres
+    slanted.pose.orientation = {std::cos(0.6), std::sin(0.6), 0.0, 0.0};
+    slanted.pose.position = {0.21, 0.004, kRadius + vertical.settings.radius - 0.003};
+    const Case cases[] = {{"one end", vertical}, {"bounded", bounded}, {"across", slanted},
+                          {"lying", Bench::lying_tool(kRadius + kToolRadius - 0.001, 100.0)}};
+    for (const Case& c : cases) {
+        const Evaluated at = evaluate_at(c.tool, state);
+        ASSERT_GT(at.force.norm(), 0.0) << c.name;
+        const double error = stiffness_error(c.tool, state, 1e-7);
+        std::cout << "[ stiffness " << c.name << " ] |F| " << at.force.norm() << " N, |K| " << at.stiffness.norm()
+                  << " N/m, finite-difference error " << error << "\n";
+        EXPECT_LT(error, 0.05) << c.name;
+    }
 }
 
 }  // namespace

@@ -178,7 +178,7 @@ TEST(Validate, CNamesAndCode) {
                  "shape_helix_pitch_m must be >= 2 x radius_m (0.025), got 0.001");
 
     SceneConfig pinned;
-    pinned.pinned = PinnedConfig{pin_both, {1, 2, 240}};
+    pinned.pinned = PinnedConfig{pin_both, {1, 2, 240}, {}};
     EXPECT_STREQ(validate_error(pinned, c_field_names()).what(),
                  "pinned_points[2] must be < control_points (240), got 240");
 }
@@ -241,7 +241,7 @@ TEST(Validate, EnumsOutOfRangeFromC) {
     EXPECT_STREQ(validate_error(integrator, c_field_names()).what(), "integrator must be >= 0, got -1");
 
     SceneConfig pinned;
-    pinned.pinned = PinnedConfig{4, {}};
+    pinned.pinned = PinnedConfig{4, {}, {}};
     EXPECT_STREQ(validate_error(pinned, c_field_names()).what(), "pinned_ends must be <= 3, got 4");
 }
 

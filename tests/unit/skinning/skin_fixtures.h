@@ -1,9 +1,13 @@
-// Shared by the skinning tests: the default radius and the default settings of each method.
+// Shared by the skinning tests: the default radius, the default settings of each method,
+// and a skin updated on an axis and measured against the ideal tube.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "skinning/skin.h"
+#include "skinning/skin_metrics.h"
 #include "skinning/skin_settings.h"
 
 namespace skin_test {
@@ -25,6 +29,12 @@ inline SkinSettings defaults(SkinMethod method) {
     s.voxel_size = R / 3.0;
     s.window = R;
     return s;
+}
+
+// Updates `skin` on the axis of control points q (x y z each) and measures its mesh.
+inline enteron::skinning::SkinMetrics skin_and_measure(enteron::skinning::Skin& skin, const std::vector<double>& q) {
+    skin.update(q.data(), q.size() / 3);
+    return enteron::skinning::measure_skin(skin.mesh(), skin.axis_points(), skin.axis_count(), skin.arc_length(), R);
 }
 
 }  // namespace skin_test

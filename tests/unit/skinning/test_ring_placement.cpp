@@ -27,9 +27,11 @@ TEST(RingPlacement, RingsComeCloserOnABendByTheChordErrorBound) {
     auto skin = make_skin(s);  // for its arc-length table
     skin->update(q.data(), q.size() / 3);
     AxisSamples axis;
-    axis.build(skin->arc_length(), skin->axis_points(), skin->axis_count(), 0.25 * R, 0.0);
+    axis.build(skin->arc_length(), skin->axis_points(), skin->axis_count(),
+               AxisSamples::intervals_for(skin->arc_length().total_length(), 0.25 * R), 0.0,
+               AxisSamples::Curvature::skip);
     RingPlacement placement;
-    const std::vector<double>& rings = placement.place(axis, R, largest, 0.05 * R, e);
+    const std::vector<double>& rings = placement.place(axis, R, largest, 0.05 * R, e, 0);
     const double k = 1.0 / rho, bend = std::sqrt(8.0 * e / (k * (1.0 + k * R)));
     const double leg = 0.2, arc = kPi * rho;  // the half circle spans [leg, leg + arc] in arc length
     ASSERT_NEAR(rings.back(), 2 * leg + arc, 1e-3);
@@ -48,6 +50,36 @@ TEST(RingPlacement, RingsComeCloserOnABendByTheChordErrorBound) {
         }
     }
     EXPECT_GT(on_bend, 10u);
+}
+
+TEST(RingPlacement, LevelsMoveInStepsWithHysteresis) {
+    // U-turns of shrinking then growing radius: the count the bends need changes with
+    // every one; in levels of 8 rings it is the next level up at once (never fewer rings
+    // than needed), and drops only once a whole level is spare.
+    const double e = 0.01 * R, largest = 2.0 * R;
+    SkinSettings s = defaults(SkinMethod::convolution);
+    auto skin = make_skin(s);
+    RingPlacement free_rings, levelled;
+    std::size_t previous_level = 0, changes = 0, shapes = 0;
+    for (double rho : {6.0, 5.5, 5.0, 4.5, 4.0, 3.5, 3.0, 3.5, 4.0, 4.5, 5.0, 5.5, 6.0}) {
+        const auto q = skin_test::u_turn_axis(0.2, 2.0 * rho * R, 0.25 * R);
+        skin->update(q.data(), q.size() / 3);
+        AxisSamples axis;
+        axis.build(skin->arc_length(), skin->axis_points(), skin->axis_count(),
+                   AxisSamples::intervals_for(skin->arc_length().total_length(), 0.25 * R), 0.0,
+                   AxisSamples::Curvature::skip);
+        const std::size_t needed = free_rings.place(axis, R, largest, 0.05 * R, e, 0).size() - 1;
+        const std::size_t level = levelled.place(axis, R, largest, 0.05 * R, e, 8).size() - 1;
+        EXPECT_EQ(level % 8, 0u);
+        EXPECT_GE(level, needed) << "rho " << rho << " R";
+        if (previous_level != 0 && level < previous_level) {
+            EXPECT_GE(previous_level, needed + 8) << "dropped a level without a whole level spare";
+        }
+        if (previous_level != 0 && level != previous_level) ++changes;
+        previous_level = level;
+        ++shapes;
+    }
+    EXPECT_LT(changes, shapes - 1);  // the levels held over some of the changes of shape
 }
 
 }  // namespace

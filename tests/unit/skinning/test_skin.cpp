@@ -18,11 +18,6 @@ using namespace skin_test;
 using namespace enteron::skinning;
 using skin_test::kPi;
 
-SkinMetrics skin_and_measure(Skin& skin, const std::vector<double>& q) {
-    skin.update(q.data(), q.size() / 3);
-    return measure_skin(skin.mesh(), skin.axis_points(), skin.axis_count(), skin.arc_length(), R);
-}
-
 const SkinMethod kMethods[] = {SkinMethod::tube, SkinMethod::point_skeleton, SkinMethod::convolution};
 
 const char* name(SkinMethod m) {

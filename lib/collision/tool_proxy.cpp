@@ -1,0 +1,154 @@
+#include "collision/tool_proxy.h"
+
+#include <cmath>
+#include <Eigen/LU>
+
+namespace enteron::collision {
+
+namespace {
+
+// How far the continuous collision lets the proxy into a sphere it meets: a contact that has
+// just begun, so that Newton's next step sees its stiffness (a fraction of the reach).
+constexpr double kFirstTouchDepth = 1e-6;
+// Longest Newton step while the proxy touches the bowel (a fraction of the reach): the
+// contacts' linearisation holds for short steps around a curved surface.
+constexpr double kLongestContactStep = 0.25;
+constexpr int kMaxHalvings = 4;
+
+// Solves J x = r for a 3 x 3 J that may be (nearly) singular: a direction nothing holds
+// (a saturated coupling across a frictionless contact) gets a tiny stiffness instead.
+template <int Columns>
+Eigen::Matrix<double, 3, Columns> solve3(const Mat3& jacobian, const Eigen::Matrix<double, 3, Columns>& r) {
+    const double scale = jacobian.cwiseAbs().maxCoeff();
+    Mat3 j = jacobian;
+    if (!(std::fabs(j.determinant()) > 1e-12 * scale * scale * scale)) j += (1e-6 * scale + 1e-12) * Mat3::Identity();
+    return j.partialPivLu().solve(r);
+}
+
+}  // namespace
+
+ToolProxy::ToolProxy(std::pmr::memory_resource* memory) : contacts_(memory) {}
+
+void ToolProxy::reserve(std::size_t spheres) { contacts_.reserve(spheres); }
+
+Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<ProxyCandidate>& candidates,
+                        const Vec3& p, ProxyResult& result, Mat3& jacobian) {
+    const double rate = problem.dt > 0.0 ? 1.0 / problem.dt : 0.0;  // d(v_p)/dp
+    const Vec3 vp = problem.dt > 0.0 ? Vec3((p - problem.start) * rate) : problem.start_velocity;
+    const Shaft shaft(p, p + problem.shaft, problem.reach);
+    contacts_.clear();
+    Vec3 given = Vec3::Zero();  // to the bowel
+    Mat3 given_rate = Mat3::Zero();  // d(given)/dp
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const ProxyCandidate& candidate = candidates[k];
+        double s, distance2;
+        Vec3 d;
+        if (!shaft.touches(candidate.center, &s, &d, &distance2)) continue;
+        const double distance = std::sqrt(distance2);
+        ProxyContact contact;
+        contact.candidate = k;
+        contact.depth = problem.reach - distance;
+        contact.s = s;
+        // A centre on the shaft's axis: push it up, any direction will do.
+        contact.normal = distance > 1e-12 ? Vec3(d / distance) : Vec3::UnitZ();
+        const Vec3 relative = candidate.velocity - (vp + s * problem.shaft_velocity);
+        contact.force = contact_force(problem.contact, contact.depth, contact.normal, relative);
+        if (distance > 1e-12) {
+            contact.jacobian = contact_jacobian(problem.contact, contact.depth, d, relative);
+        } else {
+            const Mat3 nn = contact.normal * contact.normal.transpose();
+            contact.jacobian = {-problem.contact.stiffness * nn,
+                                -(contact.force.damping * nn + contact.force.friction_damping * (Mat3::Identity() - nn))};
+        }
+        given += contact.force.force;
+        // The closest point moves with p, and its velocity with (p - p0) / dt.
+        given_rate -= contact.jacobian.position + rate * contact.jacobian.velocity;
+        contacts_.push_back(contact);
+    }
+    result.grasp_taut = false;
+    result.grasp_force = Vec3::Zero();
+    if (problem.grasp.holding) {
+        const ProxyGrasp& g = problem.grasp;
+        const Vec3 gap = p - g.point;
+        const double length = gap.norm();
+        if (length > g.rest) {
+            const Vec3 n = gap / length;
+            const double a = g.stiffness * g.rest / length, b = g.stiffness * (1.0 - g.rest / length);
+            result.grasp_taut = true;
+            result.grasp_force = g.stiffness * (length - g.rest) * n + g.damping * (vp - g.velocity);
+            given_rate += a * n * n.transpose() + (b + g.damping * rate) * Mat3::Identity();
+        }
+        given += result.grasp_force;
+    }
+    // The coupling and its bound.
+    const Vec3 raw = problem.coupling_stiffness * (problem.target - p) + problem.coupling_damping * (problem.target_velocity - vp);
+    const double magnitude = raw.norm();
+    Mat3 bound = Mat3::Identity();  // d(F_c)/d(raw)
+    result.saturated = magnitude > problem.max_force;
+    result.coupling_force = raw;
+    if (result.saturated) {
+        const Vec3 u = raw / magnitude;
+        result.coupling_force = problem.max_force * u;
+        bound = (problem.max_force / magnitude) * (Mat3::Identity() - u * u.transpose());
+    }
+    result.position = p;
+    result.velocity = vp;
+    bound_ = bound;
+    raw_ = raw;
+    jacobian = (problem.coupling_stiffness + problem.coupling_damping * rate) * bound + given_rate;
+    const Vec3 residual = result.coupling_force - given;
+    result.residual = residual.norm();
+    return residual;
+}
+
+ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector<ProxyCandidate>& candidates) {
+    ProxyResult result;
+    Mat3 jacobian;
+    Vec3 p = problem.start;
+    Vec3 residual = balance(problem, candidates, p, result, jacobian);
+    const double tolerance = kTolerance * problem.max_force;
+    const double rate = problem.dt > 0.0 ? 1.0 / problem.dt : 0.0;  // d(v_p)/dp
+    int iteration = 0;
+    for (; iteration < kMaxIterations && !(result.residual <= tolerance); ++iteration) {
+        const bool touching = !contacts_.empty();
+        // Touching nothing, the proxy rests where the unbounded coupling force is zero, a
+        // linear equation: one step, whatever the bound (whose Jacobian is singular along
+        // a saturated force).
+        const double coupling_rate = problem.coupling_stiffness + problem.coupling_damping * rate;
+        Vec3 step = touching || result.grasp_taut ? solve3<1>(jacobian, residual) : Vec3(raw_ / coupling_rate);
+        if (!step.allFinite()) break;
+        const double longest = kLongestContactStep * problem.reach;
+        if (touching && step.norm() > longest) step *= longest / step.norm();
+        // Continuous collision: stop where the shaft first reaches a sphere it does not touch
+        // yet, just inside it.
+        const Shaft shaft(p, p + problem.shaft, problem.reach);
+        double first = 1.0;
+        for (const ProxyCandidate& candidate : candidates) {
+            const double t = shaft.first_touch(candidate.center, step, problem.reach - kFirstTouchDepth * problem.reach);
+            if (t > 0.0) first = std::min(first, t);
+        }
+        step *= first;
+        // Damped: halve a full step that made the balance worse.
+        const double before = result.residual;
+        Vec3 trial = p + step;
+        Vec3 trial_residual = balance(problem, candidates, trial, result, jacobian);
+        for (int halving = 0; halving < kMaxHalvings && first == 1.0 && !(result.residual < before); ++halving) {
+            step *= 0.5;
+            trial = p + step;
+            trial_residual = balance(problem, candidates, trial, result, jacobian);
+        }
+        p = trial;
+        residual = trial_residual;
+    }
+    result.iterations = iteration;
+    // d(-F_c)/dx at rest: F_c moves with x directly (v_x held) and through p, which follows
+    // dp/dx = J^-1 dF_c/dx so that the balance holds.
+    const Mat3 direct = problem.coupling_stiffness * bound_;
+    const Mat3 through = (problem.coupling_stiffness + problem.coupling_damping * rate) * bound_;
+    // Touching nothing, the coupling force is zero wherever the device is.
+    const bool free = contacts_.empty() && !result.grasp_taut;
+    result.device_stiffness = free ? Mat3::Zero() : Mat3(-(direct - through * solve3<3>(jacobian, direct)));
+    return result;
+}
+
+}  // namespace enteron::collision

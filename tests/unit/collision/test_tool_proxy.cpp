@@ -1,0 +1,130 @@
+// A tool's proxy (lib/collision/tool_proxy.h) on its own, against a few collision spheres:
+// in free space it rests where the coupling pulls nothing; pressed into the bowel it stops
+// on its surface however far the device goes, within max_force; and its device stiffness
+// is the derivative of the coupling force with respect to the commanded tip (central
+// finite differences), in several contact states.
+#include "collision/tool_proxy.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory_resource>
+
+namespace {
+
+using enteron::Mat3;
+using enteron::Vec3;
+using enteron::collision::ProxyCandidate;
+using enteron::collision::ProxyProblem;
+using enteron::collision::ProxyResult;
+using enteron::collision::ToolProxy;
+
+constexpr double kBowelRadius = 0.0125, kToolRadius = 0.005;
+
+// A straight row of spheres along x at height 0 (a bowel's axis), moving at `velocity`.
+std::pmr::vector<ProxyCandidate> row(const Vec3& velocity) {
+    std::pmr::vector<ProxyCandidate> spheres(std::pmr::new_delete_resource());
+    for (int i = -8; i <= 8; ++i) spheres.push_back({std::size_t(i + 8), Vec3(0.00625 * i, 0.0, 0.0), velocity});
+    return spheres;
+}
+
+ProxyProblem problem(const Vec3& target, double max_force) {
+    ProxyProblem p;
+    p.shaft = Vec3(0.0, 0.0, 0.3);  // vertical, rising from the tip
+    p.reach = kToolRadius + kBowelRadius;
+    p.contact.stiffness = enteron::collision::proxy_contact_stiffness(p.contact.stiffness, max_force, kBowelRadius);
+    p.coupling_stiffness = 1000.0;
+    p.coupling_damping = 1.0;
+    p.max_force = max_force;
+    p.start = Vec3(0.001, 0.002, p.reach + 0.001);  // just above the bowel
+    p.target = target;
+    p.target_velocity = Vec3(0.0, 0.0, -0.05);
+    p.dt = 1e-3;
+    return p;
+}
+
+TEST(ToolProxy, InFreeSpaceItRestsWhereTheCouplingPullsNothing) {
+    ToolProxy proxy(std::pmr::new_delete_resource());
+    const std::pmr::vector<ProxyCandidate> none(std::pmr::new_delete_resource());
+    ProxyProblem p = problem(Vec3(0.05, 0.0, 0.2), 5.0);
+    p.start = Vec3(0.0, 0.0, 0.2);
+    const ProxyResult r = proxy.solve(p, none);
+    // k (x - p) + b (v_x - (p - p0) / dt) = 0 is linear in p.
+    const double rate = 1.0 / p.dt;
+    const Vec3 expected = (p.coupling_stiffness * p.target + p.coupling_damping * (p.target_velocity + rate * p.start)) /
+                          (p.coupling_stiffness + p.coupling_damping * rate);
+    EXPECT_LT((r.position - expected).norm(), 1e-12);
+    EXPECT_LT(r.coupling_force.norm(), 1e-9);
+    EXPECT_EQ(r.device_stiffness, Mat3::Zero());
+}
+
+TEST(ToolProxy, PressedFarIntoTheBowelItStopsOnItsSurfaceWithinMaxForce) {
+    // The device goes down through the bowel at up to 5 m/s, 1 ms ticks; each solve starts
+    // where the last one rested (as the tools effect does).
+    ToolProxy proxy(std::pmr::new_delete_resource());
+    const std::pmr::vector<ProxyCandidate> spheres = row(Vec3::Zero());
+    for (double max_force : {5.0, 50.0}) {
+        for (double speed : {0.05, 0.5, 5.0}) {
+            Vec3 start(0.001, 0.002, kToolRadius + kBowelRadius + 0.001);
+            double deepest = 0.0, largest = 0.0;
+            ProxyResult r;
+            for (int tick = 1; tick <= 300; ++tick) {
+                const double travel = speed * 1e-3 * std::min(tick, 200);
+                ProxyProblem p = problem(Vec3(start.x(), start.y(), kToolRadius + kBowelRadius - travel), max_force);
+                p.start = start;
+                p.target_velocity = Vec3(0.0, 0.0, tick <= 200 ? -speed : 0.0);
+                r = proxy.solve(p, spheres);
+                start = r.position;
+                deepest = std::max(deepest, p.reach - r.position.z());
+                largest = std::max(largest, r.coupling_force.norm());
+            }
+            EXPECT_LE(largest, max_force * (1 + 1e-12));
+            // Issue 18's bound: the tool's surface stays 0.8 R from the axis.
+            EXPECT_LT(deepest, 0.2 * kBowelRadius) << max_force << " N, " << speed << " m/s";
+            EXPECT_LT(r.residual, 1e-6 * max_force) << "balanced at rest";
+        }
+    }
+}
+
+TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
+    ToolProxy proxy(std::pmr::new_delete_resource());
+    struct Case {
+        const char* name;
+        Vec3 target;
+        double max_force;
+        Vec3 bowel_velocity;
+    };
+    const double reach = kToolRadius + kBowelRadius;
+    const Case cases[] = {
+        {"resting on the bowel", Vec3(0.001, 0.002, reach - 0.002), 50.0, Vec3::Zero()},
+        {"between two spheres", Vec3(0.003, 0.001, reach - 0.003), 50.0, Vec3::Zero()},
+        {"sliding with friction", Vec3(0.001, 0.002, reach - 0.002), 50.0, Vec3(0.03, -0.02, 0.0)},
+        {"on the side of the tube", Vec3(0.001, 0.012, 0.004), 50.0, Vec3(0.0, 0.01, 0.0)},
+    };
+    const double delta = 1e-7;
+    for (const Case& c : cases) {
+        const std::pmr::vector<ProxyCandidate> spheres = row(c.bowel_velocity);
+        const ProxyResult at = proxy.solve(problem(c.target, c.max_force), spheres);
+        ASSERT_GT(proxy.contacts().size(), 0u) << c.name;
+        ASSERT_FALSE(at.saturated) << c.name;
+        Mat3 differences;
+        for (int j = 0; j < 3; ++j) {
+            Vec3 plus = c.target, minus = c.target;
+            plus[j] += delta;
+            minus[j] -= delta;
+            const Vec3 f_plus = -proxy.solve(problem(plus, c.max_force), spheres).coupling_force;
+            const Vec3 f_minus = -proxy.solve(problem(minus, c.max_force), spheres).coupling_force;
+            differences.col(j) = (f_plus - f_minus) / (2 * delta);
+        }
+        const double error = (differences - at.device_stiffness).norm() / differences.norm();
+        std::cout << "[ proxy stiffness " << c.name << " ] |F| " << at.coupling_force.norm() << " N, contacts "
+                  << proxy.contacts().size() << ", K_zz " << at.device_stiffness(2, 2)
+                  << " N/m, finite-difference error " << error << "\n";
+        EXPECT_LT(error, 0.05) << c.name;
+        // Never stiffer than the coupling itself (1 N/mm): what the device feels.
+        EXPECT_LE(at.device_stiffness.norm(), std::sqrt(3.0) * 1000.0 * (1 + 1e-9)) << c.name;
+    }
+}
+
+}  // namespace
