@@ -1,5 +1,8 @@
 // Collision accuracy at the tool: a grasper presses a bowel lying on the floor and slides
 // along it, against the collision sphere spacing and the contact stiffness.
+// The tool is a direct capsule (JSON "mode": "direct"): the bowel meets it where it is put,
+// so the penetration measures the contact law. A proxy tool (the default, docs/haptics.md)
+// stands off by its coupling spring's stretch, whatever the contact stiffness.
 //
 // The scene is deterministic (a pile is not: each knob would give another pile): a 1 m
 // bowel (41 control points, the 2.5 cm segments of the 6 m default), straight along x on a
@@ -44,7 +47,7 @@ std::string pressed_bowel_json(double spacing, double stiffness) {
         " \"gravity\": [0, 0, -9.81], \"damping\": {},"
         " \"collision\": {\"sphere_spacing\": %.17g, \"stiffness\": %.17g},"
         " \"environment\": [{\"type\": \"plane\", \"point\": [0, 0, 0], \"normal\": [0, 0, 1]}],"
-        " \"tools\": [{\"radius\": %.17g, \"length\": %.17g, \"max_force\": %.17g,"
+        " \"tools\": [{\"mode\": \"direct\", \"radius\": %.17g, \"length\": %.17g, \"max_force\": %.17g,"
         " \"position\": [%.17g, %.17g, %.17g], \"orientation\": [1, 0, 0, 0]}]}",
         kLength, kPileRadius, kControlPoints, kPileRadius, spacing, stiffness, kToolRadius, kToolLength,
         kToolMaxForce, 0.5 * kLength, kStartY, 0.5 * kPileRadius);
