@@ -143,7 +143,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
         if (obstacle.kind == collision::ObstacleKind::mesh)
             validate_obstacle(obstacle, name, names, state_.q.data(), n, &start_clearance_);
         warn_mesh(obstacle, name, logger_);
-        if (environment() == nullptr) add_environment();
+        if (environment() == nullptr) add_environment(make_effect_environment());
         environment()->add_obstacle(obstacle);
         ++obstacles_;
     }
@@ -184,10 +184,8 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     collision::EnvironmentForce* env = environment();
     if (env == nullptr) {
         auto effect = make_effect_environment();
-        env = effect.get();
-        env->add_obstacle(prepared);
-        dynamics_.add_effect(std::move(effect));
-        contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = &env->contact_log();
+        effect->add_obstacle(prepared);
+        add_environment(std::move(effect));
     } else {
         env->add_obstacle(prepared);
     }
@@ -204,10 +202,10 @@ Owned<collision::EnvironmentForce> Scene::make_effect_environment() {
                                                    memory_, contact_loads(EffectId::environment));
 }
 
-void Scene::add_environment() {
-    auto effect = make_effect_environment();
-    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = &effect->contact_log();
+void Scene::add_environment(Owned<collision::EnvironmentForce> effect) {
+    const collision::ContactLog* log = &effect->contact_log();
     dynamics_.add_effect(std::move(effect));
+    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = log;
 }
 
 collision::EnvironmentForce* Scene::environment() {

@@ -132,9 +132,10 @@ private:
     // with no obstacle.
     collision::EnvironmentForce* environment();
     collision::EnvironmentForce& environment_with(std::size_t index) const;
-    // The environment effect made (with no obstacle yet), and made and added with its contact log.
+    // The environment effect made (with no obstacle yet); added to the dynamics with its
+    // contact log.
     Owned<collision::EnvironmentForce> make_effect_environment();
-    void add_environment();
+    void add_environment(Owned<collision::EnvironmentForce> effect);
     // A change between steps that changed the stored energy: the guard measures it again
     // and the change is published.
     void changed_between_steps();
