@@ -233,12 +233,16 @@ void haptic_until(ent_scene* scene, const std::atomic<bool>& stop, uint64_t seed
 }
 
 // Owns a skin of the scene, updating it until told the scene is gone, then a few times more.
-void render_until(ent_scene* scene, const std::atomic<bool>& scene_gone, int32_t method) {
+// It says when its skin exists: a skin is made from a live scene (the scene may go first
+// once the skin holds it).
+void render_until(ent_scene* scene, std::atomic<bool>& skin_made, const std::atomic<bool>& scene_gone,
+                  int32_t method) {
     ent_skin_desc desc;
     ent_skin_desc_default(&desc);
     desc.method = method;
     ent_skin* skin = nullptr;
     check_status(ent_skin_create(scene, &desc, &skin), false);
+    skin_made = true;
     if (skin == nullptr) fail("a default skin was refused");
     double last_time = -1.0;
     for (int after = 0; after < 3;) {
@@ -339,10 +343,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         fail("a base scene failed to load");
     second.start(scene);
 
-    std::atomic<bool> stop{false}, scene_gone{false};
+    std::atomic<bool> stop{false}, skin_made{false}, scene_gone{false};
     std::thread query(query_until, scene, std::cref(stop), seed + 2);
     std::thread haptic(haptic_until, scene, std::cref(stop), seed + 3);
-    std::thread render(render_until, scene, std::cref(scene_gone), static_cast<int32_t>(base / kBaseSceneCount % 3));
+    std::thread render(render_until, scene, std::ref(skin_made), std::cref(scene_gone),
+                       static_cast<int32_t>(base / kBaseSceneCount % 3));
 
     for (int op = 0; op < 48 && !in.empty(); ++op) drive(in, scene);
 
@@ -350,6 +355,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     query.join();
     haptic.join();
     second.stop();
+    while (!skin_made.load()) std::this_thread::yield();  // a slow render thread has not made its skin yet
     ent_scene_destroy(scene);
     scene_gone = true;
     render.join();
