@@ -94,6 +94,13 @@ inline std::string describe_link(const LinkStatus& link) {
     return std::string(text) + counts;
 }
 
+// Where an obstacle's frame is now (ent_obstacle_pose): a retracted liver moves.
+struct ObstaclePose {
+    bool present = false;                      // false: removed (or unknown)
+    double position_m[3] = {};
+    double orientation_wxyz[4] = {1, 0, 0, 0};
+};
+
 // One frame's view of the scene, filled by Session::read on the render thread.
 struct FrameState {
     double time_s = 0.0;                       // simulated time of the physics report
@@ -106,6 +113,7 @@ struct FrameState {
     double skin_update_ms = 0.0;               // wall time of this frame's ent_skin_update
     std::uint32_t tool_count = 0;
     ToolReadback tools[kMaxTools];
+    std::vector<ObstaclePose> obstacles;       // one per layout obstacle; empty: as the layout says
     bool paused = false;
     double gate_reached_s = -1.0;              // capture: the gate the physics waits at
     std::vector<StepSample> new_steps;         // every step since the last read, oldest first

@@ -59,7 +59,10 @@ bool Viewer::open_initial(std::string& error) {
 bool Viewer::open(const std::string& json, const std::string& name, const std::string& path, std::string& error) {
     // The skin method and resolution carry over from the scene shown before.
     if (session_) settings_.session.skin = session_->skin();
-    std::unique_ptr<Session> session = LocalSession::open(json, name, settings_.session, error);
+    // A mesh file is found next to the scene file, as ent_scene_create_json_file finds it.
+    const std::size_t slash = path.rfind('/');
+    const std::string scene_dir = slash == std::string::npos ? "" : path.substr(0, slash);
+    std::unique_ptr<Session> session = LocalSession::open(json, name, scene_dir, settings_.session, error);
     if (!session) {
         load_error_ = error;
         json_edit_ = json;  // to mend it in the Scene panel
