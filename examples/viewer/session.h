@@ -68,6 +68,9 @@ struct LinkStatus {
     double tool0_largest_move_m = 0.0;     // the server's tool 0 from where it was first seen
     double tool0_sent_m[3] = {};           // tool 0's target as sent (scene frame, before the mapping)
     double tool0_commanded_m[3] = {};      // the server's newest accepted command for it, mapped back
+    // Each tool's tool_feedback_t STATUS_* bits in the newest state, in words ("stale, force
+    // limited"; "" when none is set): why a device gets no force or a clamped one.
+    std::string tool_status[kMaxTools];
 };
 
 inline const char* link_state_name(LinkStatus::State state) {
