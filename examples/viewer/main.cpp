@@ -13,7 +13,6 @@
 #include <cstring>
 #include <string>
 
-#include "demo_scene.h"
 #include "run.h"
 #include "viewer.h"
 
@@ -138,21 +137,19 @@ int main(int argc, char** argv) {
     if (remote && !settings.scene_path.empty()) return usage_error("--lcm shows the server's scene: give no SCENE.json");
     if (!remote && !settings.lcm_channel_suffix.empty()) return usage_error("--channel-suffix goes with --lcm");
     // A scene with a motion of its own (demo_scene.h: the demo scene's tool path, the
-    // abdomen's retractor and grasper) plays it unless told otherwise: headless all of it;
-    // in a window the organs' part, the mouse being the tool.
-    const bool script_given = !script_name.empty();
-    if (!script_given && !remote) {
-        const demo_motion* motion = demo_motion_for_scene(settings.scene_path.empty() ? nullptr : settings.scene_path.c_str());
-        if (motion != nullptr && (headless || motion->obstacle >= 0)) script_name = motion->name;
-    }
+    // abdomen's retractor and grasper) plays it unless a script is given: headless all of
+    // it; in a window the organs' part, the mouse being the tool.
+    settings.scene_motion = script_name.empty() && !remote;
+    settings.scene_motion_tool = headless;
     if (!script_name.empty()) {
         std::string error;
         if (!options.script.load(script_name, error)) return usage_error(error);
         // Tool and organ paths are played by a local physics thread; a remote tool follows the mouse.
-        if (remote && (!options.script.tool_path().empty() || !options.script.obstacle_paths().empty()))
+        const ScenePaths& paths = options.script.paths();
+        if (remote && (!paths.tool0.empty() || !paths.obstacles.empty()))
             return usage_error("with --lcm a script drives the tool with mouse lines, not tool lines (nor obstacle lines)");
-        if (script_given || headless) settings.session.tool0_path = options.script.tool_path();
-        settings.session.obstacle_paths = options.script.obstacle_paths();
+        settings.session.tool0_path = paths.tool0;
+        settings.session.obstacle_paths = paths.obstacles;
     }
     // The simulation waits for the picture: headless, for frame 1's time; in a window, at
     // t = 0 until the window shows its first frame (Viewer::start_clock).

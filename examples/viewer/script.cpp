@@ -32,12 +32,19 @@ int key_code(const std::string& name) {
 
 }  // namespace
 
+ScenePaths scene_paths(const demo_motion* motion) {
+    ScenePaths paths;
+    if (motion == nullptr) return paths;
+    paths.tool0.assign(motion->tool_keys, motion->tool_keys + 4 * motion->tool_key_count);
+    if (motion->obstacle >= 0)
+        paths.obstacles.push_back(ObstaclePath{
+            motion->obstacle, std::vector<double>(motion->obstacle_keys, motion->obstacle_keys + 4 * motion->obstacle_key_count)});
+    return paths;
+}
+
 bool Script::load(const std::string& path_or_motion, std::string& error) {
     if (const demo_motion* motion = demo_motion_named(path_or_motion.c_str())) {
-        tool_path_.assign(motion->tool_keys, motion->tool_keys + 4 * motion->tool_key_count);
-        if (motion->obstacle >= 0)
-            obstacle_paths_.push_back(ObstaclePath{
-                motion->obstacle, std::vector<double>(motion->obstacle_keys, motion->obstacle_keys + 4 * motion->obstacle_key_count)});
+        paths_ = scene_paths(motion);
         return true;
     }
     std::string text;
@@ -102,14 +109,14 @@ bool Script::parse(const std::string& text, const std::string& name, std::string
     std::stable_sort(mouse_.begin(), mouse_.end(), earlier);
     std::stable_sort(events_.begin(), events_.end(), earlier);
     std::stable_sort(tool_keys.begin(), tool_keys.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
-    for (const auto& key : tool_keys) tool_path_.insert(tool_path_.end(), key.begin(), key.end());
+    for (const auto& key : tool_keys) paths_.tool0.insert(paths_.tool0.end(), key.begin(), key.end());
     // Each obstacle's keys in time order, one path per obstacle.
     std::stable_sort(obstacle_keys.begin(), obstacle_keys.end(),
                      [](const auto& a, const auto& b) { return a.second[0] < b.second[0]; });
     for (const auto& [id, key] : obstacle_keys) {
-        auto path = std::find_if(obstacle_paths_.begin(), obstacle_paths_.end(),
+        auto path = std::find_if(paths_.obstacles.begin(), paths_.obstacles.end(),
                                  [id = id](const ObstaclePath& p) { return p.obstacle == id; });
-        if (path == obstacle_paths_.end()) path = obstacle_paths_.insert(obstacle_paths_.end(), ObstaclePath{id, {}});
+        if (path == paths_.obstacles.end()) path = paths_.obstacles.insert(paths_.obstacles.end(), ObstaclePath{id, {}});
         path->keys.insert(path->keys.end(), key.begin(), key.end());
     }
     return true;

@@ -28,9 +28,20 @@
 
 #include "physics_thread.h"
 
+struct demo_motion;  // demo_scene.h
+
 namespace viewer {
 
 class Viewer;
+
+// What a session plays on its physics thread: tool 0's path and the obstacles'.
+struct ScenePaths {
+    ToolPathKeys tool0;
+    std::vector<ObstaclePath> obstacles;
+};
+
+// A motion of demo_scene.h as paths; nothing for null.
+ScenePaths scene_paths(const demo_motion* motion);
 
 class Script {
 public:
@@ -38,8 +49,7 @@ public:
     bool parse(const std::string& text, const std::string& name, std::string& error);
     bool load(const std::string& path_or_motion, std::string& error);
 
-    const ToolPathKeys& tool_path() const { return tool_path_; }
-    const std::vector<ObstaclePath>& obstacle_paths() const { return obstacle_paths_; }
+    const ScenePaths& paths() const { return paths_; }
     // Render thread, once a frame at simulated time time_s: the input events due go to
     // the viewer, the pointer moves along its path; the screenshots due are appended.
     void play(double time_s, Viewer& viewer, std::vector<std::string>& screenshots);
@@ -58,8 +68,7 @@ private:
     };
     std::vector<MouseKey> mouse_;
     std::vector<Event> events_;
-    ToolPathKeys tool_path_;
-    std::vector<ObstaclePath> obstacle_paths_;
+    ScenePaths paths_;
     std::size_t next_mouse_ = 0, next_event_ = 0;
     bool button_down_ = false;
     double pointer_x_ = -1.0, pointer_y_ = -1.0;

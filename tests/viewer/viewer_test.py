@@ -206,6 +206,11 @@ class ViewerTest(unittest.TestCase):
         self.assertIn("intestine.radius must be > 0, got -1", err)
         self.assertIn("ENT_ERROR_INVALID_SCENE", err)
         self.assertFalse(os.path.exists(self.path("x.png")))
+        # A script that moves an obstacle the scene does not have (the abdomen's liver on
+        # the demo scene, whose one obstacle is the cavity): refused when the scene opens.
+        status, out, err = self.run_viewer(["--script", "abdomen", "--headless", "--seconds", "1"], window=False)
+        self.assertEqual(status, 1)
+        self.assertIn("the script moves obstacle 1, the scene has 1", err)
 
     def test_bad_scene_window(self):
         """In a window the same error is on the screen: the status line's red text along the
@@ -238,10 +243,12 @@ class ViewerTest(unittest.TestCase):
     def test_bad_command_line(self):
         """Mistakes on the command line or in a script: a message naming them, status 2."""
         script = self.write("bad_script.txt", "0.5 mouse 10 20\n")
+        obstacle_script = self.write("bad_obstacle.txt", "0.5 obstacle 1 0 0\n")
         for args, message in ((["--seconds", "x"], "--seconds wants a number"),
                               (["--headless"], "--headless needs --seconds"),
                               (["--video", "a.avi", "--headless", "--seconds", "1"], "--video wants a .mp4 or .gif"),
                               (["--script", script], "bad_script.txt:1: mouse wants X Y down|up"),
+                              (["--script", obstacle_script], "bad_obstacle.txt:1: obstacle wants an obstacle number"),
                               (["--lcm", "memq://", "scene.json"], "--lcm shows the server's scene"),
                               (["--channel-suffix", "_A"], "--channel-suffix goes with --lcm"),
                               (["--lcm", "memq://", "--script", "demo"], "mouse lines, not tool lines")):
