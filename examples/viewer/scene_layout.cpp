@@ -147,8 +147,8 @@ void frame_on_cavity(SceneLayout& layout) {
             return;
         }
         if (obstacle.kind == ENT_OBSTACLE_MESH && obstacle.mesh && obstacle.mesh->cavity) {
-            // The box around it in its frame, moved to its origin (a wall is not turned); its
-            // size across the view (x and z: the camera looks along +y), as deep as it is.
+            // The box around it in its frame, moved to its origin (a wall is not turned); the
+            // size that counts is across the view (x and z: the camera looks along +y).
             const OrganMesh& wall = *obstacle.mesh;
             for (int c = 0; c < 3; ++c)
                 layout.scene_center_m[c] = obstacle.position_m[c] + 0.5 * (wall.low_m[c] + wall.high_m[c]);
