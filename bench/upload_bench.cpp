@@ -17,7 +17,8 @@
 //
 // On Mesa's llvmpipe (EGL's surfaceless platform, no GPU: examples/egl_offscreen_context.h)
 // a buffer is host memory: an upload is the driver's copy and bookkeeping, with no PCIe
-// transfer. The figures bound the driver's work, not a GPU's transfer time.
+// transfer. The figures bound the driver's work, not a GPU's transfer time. Nothing draws
+// from the buffers, so no upload waits for a draw still reading one.
 //
 // Reported, not asserted. Run:
 //   build/bench/enteron_upload_bench [--frames N]   (default 600: 10 s at 60 Hz)
