@@ -15,7 +15,6 @@
 
 using namespace capi_test;
 using saved_state_image::kHeaderSize;
-using saved_state_image::kSectionHeaderSize;
 using saved_state_image::reseal;
 
 namespace {
@@ -288,17 +287,16 @@ TEST(SaveRestore, BadImagesAreRefusedWithTheSceneUntouched) {
     image = good;
     image[saved_state_image::kVersionAt] = 99;
     expect_refused(scene.get(), image, ENT_ERROR_VERSION, "format version 99");
-    // The time (the first double of the first section, after its 32-byte header and the
-    // point count) made NaN, resealed: the value check names it.
+    // The time made NaN, resealed: the value check names it.
     image = good;
     const double nan = std::nan("");
-    std::memcpy(image.data() + kHeaderSize + kSectionHeaderSize + 4, &nan, 8);
+    std::memcpy(image.data() + saved_state_image::kTimeAt, &nan, 8);
     reseal(image);
     expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "time");
     // A position made infinite, resealed: the last section applied nothing either.
     image = good;
     const double infinite = HUGE_VAL;
-    std::memcpy(image.data() + kHeaderSize + kSectionHeaderSize + 4 + 8 + 8 * 5, &infinite, 8);
+    std::memcpy(image.data() + saved_state_image::kPositionsAt + 8 * 5, &infinite, 8);
     reseal(image);
     expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "positions");
 

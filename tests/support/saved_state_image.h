@@ -20,6 +20,10 @@ constexpr std::size_t kChecksumAt = 32;
 constexpr std::size_t kHeaderSize = 48;
 // Each section starts with a 32-byte header (name, version, reserved, payload size).
 constexpr std::size_t kSectionHeaderSize = 32;
+// The first section (`scene`) holds the control point count (4 bytes), the time (a
+// double), then the control points' positions (doubles).
+constexpr std::size_t kTimeAt = kHeaderSize + kSectionHeaderSize + 4;
+constexpr std::size_t kPositionsAt = kTimeAt + 8;
 
 // 64-bit FNV-1a over the body's 64-bit words, with a shift that carries a word's high bits
 // to the next word's low bits; the last bytes one by one.
