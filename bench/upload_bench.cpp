@@ -34,6 +34,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "egl_offscreen_context.h"
 #include "skin_piles.h"
 #include "step_timing.h"
@@ -166,13 +168,15 @@ double upload(SkinUnderTest& s, int variant, const ent_mesh_view& view) {
     return bytes;
 }
 
+// The load averages over 1, 5 and 15 minutes, as uptime prints them.
 std::string load_average() {
     std::string text = "?";
     if (FILE* f = std::fopen("/proc/loadavg", "r")) {
-        char line[128] = {};
-        if (std::fgets(line, sizeof line, f) != nullptr) {
+        double one = 0.0, five = 0.0, fifteen = 0.0;
+        if (std::fscanf(f, "%lf %lf %lf", &one, &five, &fifteen) == 3) {
+            char line[64];
+            std::snprintf(line, sizeof line, "%.2f, %.2f, %.2f", one, five, fifteen);
             text = line;
-            while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
         }
         std::fclose(f);
     }
@@ -272,7 +276,8 @@ int main(int argc, char** argv) {
                 "simulated time; skins with stable_topology 1 (the default).\n",
                 context.renderer().c_str(), reinterpret_cast<const char*>(glGetString(GL_VERSION)), kDemoPile.settle_s,
                 frames, kFramesPerSecond);
-    std::printf("Load average (1, 5, 15 min) before: %s; after: %s.\n\n", load_before.c_str(), load_after.c_str());
+    std::printf("Load average (1, 5, 15 min) before: %s; after: %s (on %ld cores).\n\n", load_before.c_str(),
+                load_after.c_str(), sysconf(_SC_NPROCESSORS_ONLN));
     std::printf("| skin | segments, ring spacing | vertices | triangles | topology changes | variant | kB per frame | "
                 "median us | p99 us | GB/s at median |\n|---|---|---:|---:|---:|---|---:|---:|---:|---:|\n");
     for (SkinUnderTest& s : skins) {
