@@ -30,9 +30,10 @@ Vec3 tail_of(const ToolPose& pose, double length) {
 
 Mat3 outer(const Vec3& n) { return n * n.transpose(); }
 
-// The grasp: a tension-only spring-damper of rest length `rest` (the tool's radius plus
-// the bowel's: the held point sits on the tool's surface, where the contact neither pushes
-// nor pulls) from the held axis point p to the tip. Slack, it does nothing, so a grasp
+// The grasp: a tension-only spring-damper of rest length `rest` (grasp_rest: from where
+// the held point was when grasped down to the tool's radius plus the bowel's, where the
+// held point sits on the tool's surface and the contact neither pushes nor pulls) from the
+// held axis point p to the tip. Slack, it does nothing, so a grasp
 // starts and ends without a jolt. Its stiffness, for the implicit step, is
 // H = a n n^T + b I along the unit direction n from p to the tip.
 struct GraspSpring {
@@ -125,6 +126,12 @@ std::size_t ToolsForce::border_bodies() const {
     std::size_t bodies = 0;
     for (const Tool& tool : tools_) bodies += !tool.removed && tool.settings.mode == ToolMode::proxy;
     return bodies;
+}
+
+double ToolsForce::grasp_rest(const Tool& tool, double t) const {
+    const double surface = tool.settings.radius + spheres_.radius();
+    const double elapsed = step_dt_ > 0.0 ? std::max(0.0, t - step_start_) : 0.0;
+    return std::max(surface, tool.grasp_rest - kGraspClosingSpeed * elapsed);
 }
 
 double ToolsForce::fraction_of_step(double t) const {
@@ -257,7 +264,7 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     if (holding) {
         const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
         grasp_v = spline::evaluate(state.v.data(), tool.grasp_point);
-        spring = grasp_spring(tool.settings, tool.settings.radius + r, segment.tip, segment.tip_velocity, p, grasp_v);
+        spring = grasp_spring(tool.settings, grasp_rest(tool, t), segment.tip, segment.tip_velocity, p, grasp_v);
         grasp = spring.force;
         if (grasp.norm() > tool.settings.max_force) {
             tool.slipped = true;  // released when the step is accepted
@@ -332,7 +339,7 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
         problem.grasp.holding = true;
         problem.grasp.point = spline::evaluate(state.q.data(), tool.grasp_point);
         problem.grasp.velocity = spline::evaluate(state.v.data(), tool.grasp_point);
-        problem.grasp.rest = problem.reach;
+        problem.grasp.rest = grasp_rest(tool, t);
         problem.grasp.stiffness = tool.settings.grasp_stiffness;
         problem.grasp.damping = tool.settings.grasp_damping;
     }
@@ -483,7 +490,7 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
         // count the energy of the spring it let go of, however far the jump stretched it.
         if (tool.grasping && !tool.slipped) {
             const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
-            const double stretch = std::max(0.0, (tip - p).norm() - (tool.settings.radius + r));
+            const double stretch = std::max(0.0, (tip - p).norm() - grasp_rest(tool, state.time));
             energy += 0.5 * tool.settings.grasp_stiffness * stretch * stretch;
         }
     }
@@ -497,6 +504,8 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
     const Vec3 tip = tool.settings.mode == ToolMode::proxy ? tool.proxy : tool.current.position;
     double best = reach * reach;
     bool found = false;
+    // The spring starts slack wherever the held point is (no jolt), then closes.
+    tool.grasp_rest = tool.settings.radius + spheres_.radius();
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const double d2 = (spheres_[i].center - tip).squaredNorm();
         if (d2 <= best) {
@@ -506,7 +515,10 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
             found = true;
         }
     }
-    if (found) tool.grasping = true;
+    if (found) {
+        tool.grasping = true;
+        tool.grasp_rest = std::max(tool.grasp_rest, std::sqrt(best));
+    }
 }
 
 void ToolsForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
@@ -604,6 +616,7 @@ void ToolsForce::end_step(bool accepted) {
             tool.accepted_stiffness = tool.used_stiffness;
             tool.contacts = tool.used_contacts;
             tool.current = tool.target;
+            tool.grasp_rest = grasp_rest(tool, step_start_ + step_dt_);
             tool.contact_impulse += tool.attempt_contact_impulse;
             tool.contact_impulse_magnitude += tool.attempt_contact_impulse_magnitude;
         } else {
@@ -655,7 +668,7 @@ void save_mat3(StateWriter& out, const Mat3& m) { out.f64s(m.data(), 9); }
 // left it), accepted outputs, passivity observer and impulses; the rest is rebuilt by the
 // next step (the attempt's sums, the evaluation's contacts).
 void ToolsForce::save_state(StateWriter& out) const {
-    out.begin_section("tools", 2);
+    out.begin_section("tools", 3);
     out.u32(static_cast<uint32_t>(tools_.size()));
     for (const Tool& tool : tools_) {
         out.u8(tool.removed ? 1 : 0);
@@ -665,6 +678,7 @@ void ToolsForce::save_state(StateWriter& out) const {
         out.u32(static_cast<uint32_t>(tool.grasp_point.first));
         out.f64s(tool.grasp_point.w.data(), 4);
         out.u32(tool.grasp_sphere);
+        out.f64(tool.grasp_rest);
         out.f64s(tool.proxy.data(), 3);
         out.f64s(tool.proxy_velocity.data(), 3);
         out.f64(tool.proxy_time);
@@ -685,7 +699,8 @@ void ToolsForce::save_state(StateWriter& out) const {
 
 void ToolsForce::restore_state(StateReader& in) {
     // Version 1 (before the proxy) cannot give a proxy's state: refused as too old.
-    if (in.begin_section("tools", 2) < 2) in.fail("saved before tools had proxies (version 1); save it again");
+    const uint32_t version = in.begin_section("tools", 3);
+    if (version < 2) in.fail("saved before tools had proxies (version 1); save it again");
     if (in.u32("tools") != tools_.size()) in.fail("saved with another number of tools");
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         Tool& tool = tools_[i];
@@ -699,6 +714,10 @@ void ToolsForce::restore_state(StateReader& in) {
         saved.grasp_point.first = in.index("first control point grasped", spheres_.control_points() - 3);
         in.f64s("grasp weights", 4, saved.grasp_point.w.data());
         saved.grasp_sphere = in.index("sphere grasped", spheres_.size());
+        // Version 2 held the point on the tool's surface from the start.
+        saved.grasp_rest = version >= 3 ? in.f64("grasp rest length") : tool.settings.radius + spheres_.radius();
+        if (!(saved.grasp_rest >= tool.settings.radius + spheres_.radius()) || !std::isfinite(saved.grasp_rest))
+            in.fail("grasp rest length shorter than the tool's radius plus the bowel's, or not finite");
         in.f64s("proxy position", 3, saved.proxy.data());
         in.f64s("proxy velocity", 3, saved.proxy_velocity.data());
         saved.proxy_time = in.f64("proxy time");
