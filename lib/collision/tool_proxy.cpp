@@ -3,6 +3,8 @@
 #include <cmath>
 #include <Eigen/LU>
 
+#include "collision/shaft_contact.h"
+
 namespace enteron::collision {
 
 namespace {
@@ -68,37 +70,19 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
     Mat3 given_rate = Mat3::Zero();  // d(given)/dp
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         const ProxyCandidate& candidate = candidates[k];
-        double s, distance2;
-        Vec3 d;
-        if (!shaft.touches(candidate.center, &s, &d, &distance2)) continue;
-        const double distance = std::sqrt(distance2);
+        ShaftContact touch;
+        if (!shaft_contact(shaft, candidate.center, &touch)) continue;
         ProxyContact contact;
         contact.candidate = k;
-        contact.depth = problem.reach - distance;
-        contact.s = s;
-        // A centre on the shaft's axis: push it up, any direction will do.
-        contact.normal = distance > 1e-12 ? Vec3(d / distance) : Vec3::UnitZ();
-        const Vec3 relative = candidate.velocity - (vp + s * problem.shaft_velocity);
+        contact.depth = touch.depth;
+        contact.s = touch.s;
+        contact.normal = touch.normal;
+        const Vec3 relative = candidate.velocity - (vp + touch.s * problem.shaft_velocity);
         contact.force = contact_force(problem.contact, contact.depth, contact.normal, relative);
-        if (distance > 1e-12) {
-            contact.jacobian = contact_jacobian(problem.contact, contact.depth, d, relative);
-        } else {
-            const Mat3 nn = contact.normal * contact.normal.transpose();
-            contact.jacobian = {-problem.contact.stiffness * nn,
-                                -(contact.force.damping * nn + contact.force.friction_damping * (Mat3::Identity() - nn))};
-        }
+        contact.jacobian = shaft_contact_jacobian(problem.contact, touch, contact.force, relative);
         given += contact.force.force;
-        // How d and the relative velocity move with p (v_p with (p - p0) / dt): at an end of
-        // the shaft the closest point moves with p; along its side it slides along the axis
-        // a, so that d(d)/dp = -(I - a a^T / |a|^2) and ds/dp = -a^T / |a|^2.
-        if (s > 0.0 && s < 1.0) {
-            const Eigen::RowVector3d ds_dp = -shaft.inverse_axis2 * problem.shaft.transpose();
-            const Mat3 across = Mat3::Identity() + problem.shaft * ds_dp;
-            given_rate -= contact.jacobian.position * across +
-                          contact.jacobian.velocity * (rate * Mat3::Identity() + problem.shaft_velocity * ds_dp);
-        } else {
-            given_rate -= contact.jacobian.position + rate * contact.jacobian.velocity;
-        }
+        // v_p moves with (p - p0) / dt.
+        given_rate += shaft_contact_rate(contact.jacobian, touch, shaft, problem.shaft_velocity, rate);
         contacts_.push_back(contact);
     }
     result.grasp_taut = false;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "collision/shaft_contact.h"
 #include "collision/tool_shaft.h"
 #include "mechanics/bordered_system.h"
 #include "mechanics/system_matrix.h"
@@ -99,6 +100,7 @@ std::size_t ToolsForce::add_tool(const ToolConfig& tool) {
     t.current = tool.pose;
     t.target = tool.pose;
     t.proxy = t.step_proxy = tool.pose.position;
+    t.grasp_rest = t.settings.radius + spheres_.radius();
     // Nothing changes if an allocation fails: every reservation comes first. Each tool may
     // touch every sphere and hold one point.
     tools_.reserve(tools_.size() + 1);
@@ -227,33 +229,31 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     hits_.clear();
     Vec3 total = Vec3::Zero();     // on the bowel
     double total_magnitude = 0.0;  // sum of the magnitudes of its parts
-    // Their change as the tool moves by dx (d moves by -dx), velocities held: for the stiffness.
+    // Their change as the tool moves rigidly by dx, velocities held (shaft_contact_rate): for the stiffness.
     Mat3 total_rate = Mat3::Zero();
     Eigen::RowVector3d magnitude_rate = Eigen::RowVector3d::Zero();
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const Sphere& sphere = spheres_[i];
-        double s, dist2;
-        Vec3 d;
-        if (!shaft.touches(sphere.center, &s, &d, &dist2)) continue;
-        const double dist = std::sqrt(dist2);
+        ShaftContact touch;
+        if (!shaft_contact(shaft, sphere.center, &touch)) continue;
+        const double s = touch.s;
         Hit hit;
         hit.sphere = i;
-        const double depth = hit.depth = shaft.reach - dist;
-        // A centre on the tool's axis: push it up, any direction will do.
-        hit.normal = dist > 1e-12 ? Vec3(d / dist) : Vec3::UnitZ();
+        hit.depth = touch.depth;
+        hit.normal = touch.normal;
         hit.velocity = spline::evaluate(state.v.data(), sphere.weights);
-        const Vec3 tool_v = (1.0 - s) * segment.tip_velocity + s * segment.tail_velocity;
-        hit.force = contact_force(tool.contact, depth, hit.normal, hit.velocity - tool_v);
+        const Vec3 relative = hit.velocity - ((1.0 - s) * segment.tip_velocity + s * segment.tail_velocity);
+        hit.force = contact_force(tool.contact, hit.depth, hit.normal, relative);
         hit.arm = s * shaft.axis + tool.settings.radius * hit.normal;
         total += hit.force.force;
         const double magnitude = hit.force.force.norm();
         total_magnitude += magnitude;
-        const Mat3 jacobian = dist > 1e-12 ? contact_jacobian(tool.contact, depth, d, hit.velocity - tool_v).position
-                                           : Mat3(-tool.contact.stiffness * outer(hit.normal));
-        total_rate -= jacobian;
-        if (magnitude > 0.0) magnitude_rate -= (hit.force.force / magnitude).transpose() * jacobian;
+        const Mat3 rate = shaft_contact_rate(shaft_contact_jacobian(tool.contact, touch, hit.force, relative), touch,
+                                             shaft, segment.tail_velocity - segment.tip_velocity, 0.0);
+        total_rate += rate;
+        if (magnitude > 0.0) magnitude_rate += (hit.force.force / magnitude).transpose() * rate;
         hits_.push_back(hit);
-        last_.max_penetration = std::max(last_.max_penetration, depth);
+        last_.max_penetration = std::max(last_.max_penetration, hit.depth);
     }
     tool.sphere_contacts = static_cast<uint32_t>(hits_.size());
 

@@ -246,6 +246,40 @@ TEST(ToolHaptics, ForceContinuitySuite) {
     }
 }
 
+TEST(ToolHaptics, AClosingGraspIsSavedAndRestored) {
+    // A grasp taken 1 mm away closes over the next steps; a second tool never grasps. Saved
+    // mid-closing, restored: the same forces to the bit (the rest length is state).
+    const double dt = 1e-3, r = 0.0025, top = 2 * kRadius + r;
+    ScenePtr scene = bowel_on_floor(1.0, 40, dt);
+    ASSERT_TRUE(scene);
+    const double above[3] = {0.0, 0.0, top + 0.001}, away[3] = {0.3, 0.0, 0.1};
+    add_tool(scene.get(), above, r, 8.0, ENT_TOOL_MODE_PROXY);
+    add_tool(scene.get(), away, r, 8.0, ENT_TOOL_MODE_PROXY);
+    ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK);
+    ASSERT_TRUE(step_n(scene.get(), dt, 5));
+    ASSERT_EQ(feedback(scene.get(), 0).grasping, 1);
+    size_t size = 0;
+    ASSERT_EQ(ent_scene_save_state(scene.get(), nullptr, 0, &size), ENT_OK);
+    std::vector<unsigned char> saved(size);
+    ASSERT_EQ(ent_scene_save_state(scene.get(), saved.data(), saved.size(), &size), ENT_OK) << ent_last_error();
+    const auto run = [&] {
+        std::vector<double> forces;
+        for (int i = 1; i <= 60; ++i) {
+            const double p[3] = {0.0, 0.0, top + 0.001 + 0.0002 * i};
+            EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK);
+            EXPECT_EQ(ent_scene_step(scene.get(), dt), ENT_OK) << ent_last_error();
+            const ent_tool_feedback f = feedback(scene.get(), 0);
+            forces.insert(forces.end(), f.force_N, f.force_N + 3);
+        }
+        return forces;
+    };
+    const std::vector<double> first = run();
+    ASSERT_EQ(ent_scene_restore_state(scene.get(), saved.data(), size), ENT_OK) << ent_last_error();
+    const std::vector<double> again = run();
+    EXPECT_EQ(first, again);
+    EXPECT_GT(std::fabs(first[3 * 59 + 2]), 0.05) << "the grasp held the bowel";
+}
+
 // The closest approach of the tool's surface (the shaft in the scene: the proxy's) to the
 // bowel's axis, m: the distance from the axis to the shaft less the tool's radius.
 double closest_approach(const ent_scene* scene, const double tip[3], double length, double radius,
