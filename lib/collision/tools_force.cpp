@@ -31,11 +31,11 @@ Vec3 tail_of(const ToolPose& pose, double length) {
 
 Mat3 outer(const Vec3& n) { return n * n.transpose(); }
 
-// The grasp: a tension-only spring-damper of rest length `rest` (grasp_rest: from where
-// the held point was when grasped down to the tool's radius plus the bowel's, where the
-// held point sits on the tool's surface and the contact neither pushes nor pulls) from the
-// held axis point p to the tip. Slack, it does nothing, so a grasp
-// starts and ends without a jolt. Its stiffness, for the implicit step, is
+// The grasp: a tension-only spring-damper of rest length `rest` from the held axis point p
+// to the tip (ToolsForce::grasp_rest: from where the held point was when grasped, closing
+// to the tool's radius plus the bowel's, where the held point sits on the tool's surface
+// and the contact neither pushes nor pulls). Slack, it does nothing, so a grasp starts
+// and ends without a jolt. Its stiffness, for the implicit step, is
 // H = a n n^T + b I along the unit direction n from p to the tip.
 struct GraspSpring {
     bool taut = false;
@@ -504,8 +504,6 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
     const Vec3 tip = tool.settings.mode == ToolMode::proxy ? tool.proxy : tool.current.position;
     double best = reach * reach;
     bool found = false;
-    // The spring starts slack wherever the held point is (no jolt), then closes.
-    tool.grasp_rest = tool.settings.radius + spheres_.radius();
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const double d2 = (spheres_[i].center - tip).squaredNorm();
         if (d2 <= best) {
@@ -517,7 +515,8 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
     }
     if (found) {
         tool.grasping = true;
-        tool.grasp_rest = std::max(tool.grasp_rest, std::sqrt(best));
+        // The spring starts slack wherever the held point is (no jolt), then closes.
+        tool.grasp_rest = std::max(tool.settings.radius + spheres_.radius(), std::sqrt(best));
     }
 }
 
