@@ -470,7 +470,7 @@ ENT_API const char* ent_effect_name(int32_t effect);
 
 /**
  * Saves the whole state of the scene into buffer: a versioned, self-describing binary image
- * (docs/save-restore.md lays it out) of everything its future depends on: the control
+ * (docs/scoring-and-state.md lays it out) of everything its future depends on: the control
  * points' positions and velocities, the time, the integrator's history, each effect's state
  * (the tools' poses, grasps and contact impulses; the self-contact's near pairs, which a
  * restored scene must search in the same order), the counters of ent_stats and

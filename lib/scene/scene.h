@@ -108,7 +108,7 @@ public:
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
 
-    // Save and restore (docs/save-restore.md; scene_state.cpp). save_state writes the state
+    // Save and restore (docs/scoring-and-state.md; scene_state.cpp). save_state writes the state
     // into `buffer` if it fits in `capacity` bytes (a null buffer only measures) and returns
     // its size. restore_state checks the whole image first (format, fingerprint, every
     // section) and throws Error naming what is wrong with the scene untouched; then it
