@@ -93,11 +93,6 @@ void ClampedEnds::attach(bool first_end, const RigidFrames& frames, std::size_t 
     for (int e = 0; e < 2; ++e) clamp->local_across[e] = placement.rotation.transpose() * clamp->across[e];
 }
 
-std::size_t ClampedEnds::frame(bool first_end) const {
-    const Clamp* clamp = find(first_end);
-    return clamp != nullptr ? clamp->frame : kWorld;
-}
-
 bool ClampedEnds::prescribe(State& state, double dt, double speed_limit) {
     bool turned = false;
     for (std::size_t k = 0; k < count_; ++k) {

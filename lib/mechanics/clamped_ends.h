@@ -72,8 +72,6 @@ public:
     // outlive this) from now on, as it is at time t, or in the world again (kWorld). The end
     // point itself is attached by the pins. Requires clamped(first_end).
     void attach(bool first_end, const RigidFrames& frames, std::size_t frame, double t);
-    // The frame an end follows, or kWorld.
-    std::size_t frame(bool first_end) const;
 
     // Before each attempt of a step of dt seconds (state holds the step's start, the end
     // points' velocities already prescribed): the attached clamps take the directions of
