@@ -68,7 +68,7 @@ void Scene::restore_sections(StateReader& in) {
         guard_.set_reference(reference);
     }
     frames_.restore_state(in);
-    dynamics_.restore_state(in);
+    dynamics_.restore_state(in, frames_);
     integrator_->restore_state(in);
 }
 
