@@ -256,7 +256,8 @@ class Scene(OwnedHandle):
     log=callable(level, message)        optional: receives the scene's log lines
     add_tool(...) -> enteron.Tool, tool(id), tools; add_obstacle(kind, ...) -> index, then
     set_obstacle_pose, set_obstacle_velocity, set_obstacle_friction, remove_obstacle,
-    obstacle_mesh; set_gravity, pin_point, unpin_point, attach_mesentery (moving anatomy).
+    obstacle_mesh; set_gravity, pin_point, unpin_point, attach_mesentery, attach_clamped_end (moving
+    anatomy).
     Failures raise enteron.Error. Threads: as in C, one thread drives (step, add_*, the
     moving anatomy's calls, every Tool call) while others query (axis, control_points,
     stats, effect_stats, obstacle_pose, obstacle_count).
@@ -380,6 +381,12 @@ class Scene(OwnedHandle):
         """Fixes the mesentery's root to an obstacle's frame, or to the world
         (ent_scene_attach_mesentery)."""
         check(lib.ent_scene_attach_mesentery(self._live(), obstacle), "ent_scene_attach_mesentery")
+
+    def attach_clamped_end(self, ends, obstacle=NO_OBSTACLE):
+        """Fixes clamped ends (PIN_FIRST, PIN_LAST or PIN_BOTH; the scene's clamped_ends) to
+        an obstacle's frame, or to the world: the end point and its tangent's direction move
+        with the obstacle from where they are now (ent_scene_attach_clamped_end)."""
+        check(lib.ent_scene_attach_clamped_end(self._live(), ends, obstacle), "ent_scene_attach_clamped_end")
 
     def add_tool(self, *, position=(0.0, 0.0, 0.0), orientation=(1.0, 0.0, 0.0, 0.0), **settings):
         """Adds a surgical tool (ent_tool_add) and returns its enteron.Tool. Keywords, SI

@@ -121,6 +121,24 @@ class MovingAnatomy(unittest.TestCase):
             settle(scene, 200)
             self.assertLess(scene.control_points()[0, 2], end[2] - 0.05)
 
+    def test_a_clamped_end_on_a_lifted_organ_keeps_its_place_and_direction(self):
+        with enteron.Scene(dict(BOWEL, pinned={"clamped": "first"})) as scene:
+            organ = scene.add_obstacle("sphere", center=(-0.2, 0, 0.05), radius=0.03)
+            with self.assertRaises(enteron.Error) as caught:
+                scene.attach_clamped_end(enteron.PIN_LAST, organ)
+            self.assertEqual(caught.exception.status, enteron.ERROR_NOT_FOUND)
+            scene.attach_clamped_end(enteron.PIN_FIRST, organ)
+            start = scene.axis(30001)[:2].copy()
+            for i in range(1, 301):
+                scene.set_obstacle_pose(organ, (0, 0, 0.1 * i / 300))
+                scene.step(H)
+            # The clamp carries the end point and the end's direction (the axis' first chord,
+            # 0.01 mm long, is the tangent within the bend's curvature times its length).
+            end = scene.axis(30001)[:2]
+            np.testing.assert_allclose(end[0], start[0] + [0, 0, 0.1], atol=1e-6)
+            direction, start_direction = (d / np.linalg.norm(d) for d in (end[1] - end[0], start[1] - start[0]))
+            self.assertLess(np.arccos(min(1.0, direction @ start_direction)), 2e-4)
+
     def test_gravity_friction_and_removal_between_steps(self):
         with enteron.Scene(BOWEL) as scene:
             floor = scene.add_obstacle("plane", friction=0.0)
