@@ -108,14 +108,6 @@ ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resoluti
     return skin;
 }
 
-ent_mesh_view mesh_of(const ent_skin* skin) {
-    ent_mesh_view view;
-    std::memset(&view, 0, sizeof view);
-    view.struct_size = sizeof view;
-    if (ent_skin_mesh(skin, &view) != ENT_OK) view.vertex_count = 0;
-    return view;
-}
-
 void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method,
                     Resolution resolution) {
     ent_scene* scene = settled(*pile);
@@ -124,7 +116,7 @@ void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pil
         state.SkipWithError(ent_last_error());
         return;
     }
-    const uint64_t serial_before = mesh_of(skin).topology_serial;
+    const uint64_t serial_before = enteron::bench::mesh_of(skin).topology_serial;
     const auto start = std::chrono::steady_clock::now();
     for (auto _ : state) {
         if (ent_skin_update(skin) != ENT_OK) {
@@ -133,7 +125,7 @@ void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pil
         }
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const ent_mesh_view view = mesh_of(skin);
+    const ent_mesh_view view = enteron::bench::mesh_of(skin);
     // What a renderer uploads: the vertex data every update, the indices on a topology change.
     state.counters["vertex_bytes"] = double(view.vertex_count) * 3 * 3 * sizeof(float);
     state.counters["index_bytes"] = double(view.triangle_count) * 3 * sizeof(uint32_t);

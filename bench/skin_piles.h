@@ -74,6 +74,15 @@ inline ent_scene* settle_pile(const SkinPile& pile) {
     return scene;
 }
 
+// The skin's mesh view (ent_skin_mesh), or an empty one (vertex_count 0) on failure.
+inline ent_mesh_view mesh_of(const ent_skin* skin) {
+    ent_mesh_view view;
+    std::memset(&view, 0, sizeof view);
+    view.struct_size = sizeof view;
+    if (ent_skin_mesh(skin, &view) != ENT_OK) view.vertex_count = 0;
+    return view;
+}
+
 // How tightly an axis bends, in units of the bowel's radius R.
 struct BendRadii {
     static constexpr double kThresholds[] = {1.5, 2.0, 3.0, 4.0, 8.0};  // in R

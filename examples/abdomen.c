@@ -6,7 +6,8 @@
  *
  * Loads the scene file (its meshes are found next to it), lets the bowel settle for 1 s,
  * lifts the liver 4 cm anteriorly in 0.5 s (ent_obstacle_set_pose before every step, as a
- * simulator's retractor would), lowers the tool into the bowel, and prints one line per
+ * simulator's retractor would), lowers the tool into the bowel (abdomen_motion.h, the
+ * motion enteron_demo and enteron-viewer play on this scene too), and prints one line per
  * simulated half second: where the liver is, the bowel's lowest and highest point, its
  * contacts and their deepest penetration. Fails (exit 1) if a call fails or the bowel
  * leaves the cavity.
@@ -20,8 +21,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "abdomen_motion.h"
+
 #define STEP_S 0.001
-#define LIVER 1      /* the obstacles in the file's order: wall, liver, stomach */
+#define LIVER ABDOMEN_LIVER
 #define SECONDS 3.0
 
 static int failed(const char* call, ent_status status) {
@@ -43,20 +46,19 @@ int main(int argc, char** argv) {
     if (status != ENT_OK) return failed("the scene's queries", status);
     printf("%s: %u obstacles, %u control points\n", path, obstacles, count);
 
-    const double liver_start_z = liver_at[2];
     double* points = malloc(3 * (size_t)count * sizeof(double));
     if (points == NULL) return 1;
     int code = 0;
     const int steps = (int)lround(SECONDS / STEP_S);
     for (int i = 1; i <= steps && code == 0; ++i) {
         const double t = i * STEP_S;
-        /* The retractor: up 4 cm between 1 and 1.5 s. */
-        const double lift = 0.04 * fmin(1.0, fmax(0.0, (t - 1.0) / 0.5));
-        const double liver_to[3] = {liver_at[0], liver_at[1], liver_start_z + lift};
+        /* The retractor and the grasper (abdomen_motion.h). */
+        double lift[3], tip[3];
+        path_at(abdomen_liver_keys, ABDOMEN_LIVER_KEY_COUNT, t, lift);
+        const double liver_to[3] = {liver_at[0] + lift[0], liver_at[1] + lift[1], liver_at[2] + lift[2]};
         status = ent_obstacle_set_pose(scene, LIVER, liver_to, orientation);
         if (status != ENT_OK) return failed("ent_obstacle_set_pose", status);
-        /* The grasper: from above the cavity down to 5 cm above the floor between 1.5 and 2.5 s. */
-        const double tip[3] = {-0.1, -0.05, 0.3 - 0.41 * fmin(1.0, fmax(0.0, t - 1.5))};
+        path_at(abdomen_tool_keys, ABDOMEN_TOOL_KEY_COUNT, t, tip);
         const double upright[4] = {1.0, 0.0, 0.0, 0.0};
         status = ent_tool_set_pose(scene, 0, tip, upright);
         if (status == ENT_OK) status = ent_scene_step(scene, STEP_S);

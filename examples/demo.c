@@ -12,9 +12,15 @@
  * axis.obj (an OBJ polyline) and axis.csv, and the bowel's surface (convolution skin of
  * the last frame) as bowel.obj.
  *
- * Usage: enteron_demo [--seconds S] [--out DIR]
+ * With --scene FILE it runs a scene file instead (its mesh files found next to it) with
+ * that scene's motion (demo_scene.h): examples/scenes/abdomen.json, the bowel among organ
+ * meshes, gets the retractor that lifts the liver and the grasper of abdomen_motion.h; any
+ * other file gets the demo's tool path.
+ *
+ * Usage: enteron_demo [--seconds S] [--out DIR] [--scene FILE]
  *   --seconds S  simulated time, s (default 5)
  *   --out DIR    where to write axis.obj and axis.csv; created if missing (default out)
+ *   --scene FILE a JSON scene file instead of the demo scene (docs/scene-json.md)
  *
  * Plain C99 against the public header only: this is what a simulator links.
  * Exit status: 0 on success, 1 when a call fails (its ent_last_error() is printed),
@@ -256,14 +262,19 @@ static int write_skin(ent_scene* scene, const char* dir) {
 }
 
 static void usage(FILE* to) {
-    fprintf(to, "usage: enteron_demo [--seconds S] [--out DIR]\n"
+    fprintf(to, "usage: enteron_demo [--seconds S] [--out DIR] [--scene FILE]\n"
                 "  --seconds S  simulated time in seconds (default 5)\n"
-                "  --out DIR    output directory for axis.obj and axis.csv (default out)\n");
+                "  --out DIR    output directory for axis.obj and axis.csv (default out)\n"
+                "  --scene FILE a JSON scene file instead of the demo scene, played with its motion\n"
+                "               (examples/scenes/abdomen.json: the retractor lifts the liver)\n");
 }
 
 int main(int argc, char** argv) {
     double seconds = 5.0;
     const char* out_dir = "out";
+    const char* scene_path = NULL;  /* NULL: the demo scene */
+    const demo_motion* motion;
+    double obstacle_start_m[3] = {0.0, 0.0, 0.0}, obstacle_orientation[4] = {1.0, 0.0, 0.0, 0.0};
     ent_scene* scene = NULL;
     ent_status status;
     long total_steps, step;
@@ -285,6 +296,8 @@ int main(int argc, char** argv) {
             }
         } else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
             out_dir = argv[++i];
+        } else if (strcmp(argv[i], "--scene") == 0 && i + 1 < argc) {
+            scene_path = argv[++i];
         } else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
             usage(stdout);
             return 0;
@@ -302,15 +315,45 @@ int main(int argc, char** argv) {
     }
     if (make_directories(out_dir) != 0) return 1;
 
-    status = ent_scene_create_json(demo_scene_json, strlen(demo_scene_json), &scene);
-    if (status != ENT_OK) return report_failure("ent_scene_create_json", status);
+    if (scene_path == NULL) {
+        status = ent_scene_create_json(demo_scene_json, strlen(demo_scene_json), &scene);
+        if (status != ENT_OK) return report_failure("ent_scene_create_json", status);
+    } else {
+        status = ent_scene_create_json_file(scene_path, NULL, &scene);
+        if (status != ENT_OK) return report_failure("ent_scene_create_json_file", status);
+    }
+    motion = demo_motion_for_scene(scene_path);
+    if (motion == NULL) motion = demo_motion_named("demo");
+    if (motion->obstacle >= 0) {
+        /* The organ moves from where the scene puts it. */
+        status = ent_obstacle_pose(scene, motion->obstacle, obstacle_start_m, obstacle_orientation);
+        if (status != ENT_OK) {
+            ent_scene_destroy(scene);
+            return report_failure("ent_obstacle_pose", status);
+        }
+    }
 
     total_steps = lround(seconds / STEP_S);
     if (total_steps < 1) total_steps = 1;
-    printf("enteron_demo: libenteron %u.%u.%u, 6 m bowel, 240 control points, implicit Euler,"
-           " a tool, %ld steps of %g ms\n",
-           (unsigned)(version >> 16), (unsigned)((version >> 8) & 0xffu),
-           (unsigned)(version & 0xffu), total_steps, STEP_S * 1e3);
+    if (scene_path == NULL) {
+        printf("enteron_demo: libenteron %u.%u.%u, 6 m bowel, 240 control points, implicit Euler,"
+               " a tool, %ld steps of %g ms\n",
+               (unsigned)(version >> 16), (unsigned)((version >> 8) & 0xffu),
+               (unsigned)(version & 0xffu), total_steps, STEP_S * 1e3);
+    } else {
+        uint32_t control_points = 0, obstacles = 0;
+        status = ent_scene_control_points(scene, 0, NULL, &control_points);
+        if (status == ENT_OK) status = ent_scene_obstacle_count(scene, &obstacles);
+        if (status != ENT_OK) {
+            ent_scene_destroy(scene);
+            return report_failure("the scene's queries", status);
+        }
+        printf("enteron_demo: libenteron %u.%u.%u, %s: %u control points, %u obstacles, the %s motion,"
+               " %ld steps of %g ms\n",
+               (unsigned)(version >> 16), (unsigned)((version >> 8) & 0xffu),
+               (unsigned)(version & 0xffu), scene_path, (unsigned)control_points, (unsigned)obstacles,
+               motion->name, total_steps, STEP_S * 1e3);
+    }
     printf("%7s %12s %12s  %26s  %8s  %8s %8s %9s %9s %8s  %10s %10s\n", "t_s", "kinetic_J",
            "potential_J", "axis_centre_xyz_m", "lowest_z", "length_m", "contacts", "max_pen_m",
            "rollbacks", "tool_F_N", "median_us", "max_us");
@@ -325,11 +368,22 @@ int main(int argc, char** argv) {
         double start;
         /* Where the device puts the tool at the end of this step; it moves there
          * continuously during the step. */
-        path_at(demo_tool_keys, DEMO_TOOL_KEY_COUNT, (double)step * STEP_S, tip);
+        path_at(motion->tool_keys, motion->tool_key_count, (double)step * STEP_S, tip);
         status = ent_tool_set_pose(scene, 0, tip, upright);
         if (status != ENT_OK) {
             ent_scene_destroy(scene);
             return report_failure("ent_tool_set_pose", status);
+        }
+        if (motion->obstacle >= 0) {
+            /* The retractor: the organ's pose at the end of this step. */
+            double offset[3], to[3];
+            path_at(motion->obstacle_keys, motion->obstacle_key_count, (double)step * STEP_S, offset);
+            for (i = 0; i < 3; ++i) to[i] = obstacle_start_m[i] + offset[i];
+            status = ent_obstacle_set_pose(scene, motion->obstacle, to, obstacle_orientation);
+            if (status != ENT_OK) {
+                ent_scene_destroy(scene);
+                return report_failure("ent_obstacle_set_pose", status);
+            }
         }
         start = now_us();
         status = ent_scene_step(scene, STEP_S);
@@ -359,6 +413,17 @@ int main(int argc, char** argv) {
         }
     }
     printf("tool: largest force %.3f N (bound 5 N)\n", tool_force_max_N);
+    if (motion->obstacle >= 0) {
+        /* Where the retractor left the organ, as a renderer sees it (the published pose). */
+        double at[3], orientation[4];
+        status = ent_obstacle_pose(scene, motion->obstacle, at, orientation);
+        if (status != ENT_OK) {
+            ent_scene_destroy(scene);
+            return report_failure("ent_obstacle_pose", status);
+        }
+        printf("obstacle %d moved (%+.3f, %+.3f, %+.3f) m by the %s motion\n", motion->obstacle,
+               at[0] - obstacle_start_m[0], at[1] - obstacle_start_m[1], at[2] - obstacle_start_m[2], motion->name);
+    }
     {
         /* The tool's passivity observer over the whole path (docs/haptics.md, Passivity). */
         ent_tool_stats observer;

@@ -1,7 +1,9 @@
 /*
  * The demo scene, shared by enteron_demo (demo.c) and enteron-viewer: a 6 m small bowel
  * dropped into the abdominal cavity, held by its mesentery, and the path of the tool that
- * pushes it aside. Plain C99 (the viewer includes it from C++).
+ * pushes it aside; and the motions the demo and the viewer play on their scenes (the demo
+ * scene's tool path, the abdomen scene's retractor and grasper, abdomen_motion.h). Plain
+ * C99 (the viewer includes it from C++).
  *
  * No pinned ends: the bowel is dropped freely into the abdominal cavity (the inside of a
  * 30 cm box), its folds pile up on each other (self-collision) and its mesentery
@@ -12,6 +14,10 @@
 #define ENTERON_EXAMPLES_DEMO_SCENE_H
 
 #include <stddef.h>
+#include <string.h>
+
+#include "abdomen_motion.h"
+#include "key_path.h"
 
 static const char demo_scene_json[] =
     "{\n"
@@ -47,23 +53,46 @@ static const double demo_tool_keys[] = {0.0, -0.1, 0.0, 0.3,
                                         4.6, 0.1, 0.0, 0.3};
 #define DEMO_TOOL_KEY_COUNT (sizeof demo_tool_keys / (4 * sizeof demo_tool_keys[0]))
 
-/* The point at time t of a path given by count keys t_s, x, y, z (4 doubles each, sorted
- * by time): linear between keys, held before the first and after the last. */
-static inline void path_at(const double* keys, size_t count, double t, double out[3]) {
-    size_t k;
-    int c;
-    for (k = 1; k < count && t > keys[4 * k]; ++k) {
-    }
-    if (count == 1 || t <= keys[0]) {
-        for (c = 0; c < 3; ++c) out[c] = keys[c + 1];
-    } else if (k == count) {
-        for (c = 0; c < 3; ++c) out[c] = keys[4 * (count - 1) + c + 1];
-    } else {
-        const double* a = &keys[4 * (k - 1)];
-        const double* b = &keys[4 * k];
-        const double f = (t - a[0]) / (b[0] - a[0]);
-        for (c = 0; c < 3; ++c) out[c] = (1.0 - f) * a[c + 1] + f * b[c + 1];
-    }
+/* What drives a scene over time, as a simulator's hands and retractors would: tool 0's tip
+ * along tool_keys (t_s, x, y, z in m), and one obstacle (-1: none) displaced from its pose
+ * in the scene along obstacle_keys (t_s, dx, dy, dz in m). */
+typedef struct demo_motion {
+    const char* name;               /* "demo", "abdomen": enteron-viewer --script NAME */
+    const char* scene_file;         /* the scene file it belongs to (its base name), or NULL: the demo scene */
+    const double* tool_keys;
+    size_t tool_key_count;
+    int obstacle;
+    const double* obstacle_keys;
+    size_t obstacle_key_count;
+} demo_motion;
+
+static const demo_motion demo_motions[] = {
+    {"demo", NULL, demo_tool_keys, DEMO_TOOL_KEY_COUNT, -1, NULL, 0},
+    {"abdomen", "abdomen.json", abdomen_tool_keys, ABDOMEN_TOOL_KEY_COUNT, ABDOMEN_LIVER, abdomen_liver_keys,
+     ABDOMEN_LIVER_KEY_COUNT}};
+#define DEMO_MOTION_COUNT (sizeof demo_motions / sizeof demo_motions[0])
+
+/* The motion called name, or NULL. */
+static inline const demo_motion* demo_motion_named(const char* name) {
+    size_t i;
+    for (i = 0; i < DEMO_MOTION_COUNT; ++i)
+        if (strcmp(demo_motions[i].name, name) == 0) return &demo_motions[i];
+    return NULL;
+}
+
+/* The motion of a scene: NULL path (the demo scene) gives the demo's; a file whose base
+ * name is a motion's scene_file (examples/scenes/abdomen.json) gives that one; any other
+ * file NULL. */
+static inline const demo_motion* demo_motion_for_scene(const char* path) {
+    const char* base;
+    size_t i;
+    if (path == NULL) return &demo_motions[0];
+    base = strrchr(path, '/');
+    base = base != NULL ? base + 1 : path;
+    for (i = 0; i < DEMO_MOTION_COUNT; ++i)
+        if (demo_motions[i].scene_file != NULL && strcmp(demo_motions[i].scene_file, base) == 0)
+            return &demo_motions[i];
+    return NULL;
 }
 
 #endif

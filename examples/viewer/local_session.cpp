@@ -34,10 +34,12 @@ bool read_text_file(const std::string& path, std::string& text, std::string& err
 }
 
 std::unique_ptr<LocalSession> LocalSession::open(const std::string& json, const std::string& name,
-                                                 const LocalSessionOptions& options, std::string& error) {
+                                                 const std::string& scene_dir, const LocalSessionOptions& options,
+                                                 std::string& error) {
     std::unique_ptr<LocalSession> session(new LocalSession());
     session->json_ = json;
     session->name_ = name;
+    session->scene_dir_ = scene_dir;
     session->options_ = options;
     if (session->options_.skin.struct_size == 0) ent_skin_desc_default(&session->options_.skin);
     if (!session->start(error)) return nullptr;
@@ -47,12 +49,20 @@ std::unique_ptr<LocalSession> LocalSession::open(const std::string& json, const 
 LocalSession::~LocalSession() { stop(); }
 
 bool LocalSession::start(std::string& error) {
-    const ent_status status = ent_scene_create_json(json_.data(), json_.size(), &scene_);
+    const std::string json = with_mesh_files_from(json_, scene_dir_);
+    const ent_status status = ent_scene_create_json(json.data(), json.size(), &scene_);
     if (status != ENT_OK) {
         error = name_ + ": " + ent_last_error() + " (" + status_name(status) + ")";
         return false;
     }
-    if (!read_scene_layout(json_, layout_, error)) {
+    if (!read_scene_layout(json_, layout_, error) || !read_meshes(error)) {
+        stop();
+        return false;
+    }
+    for (const ObstaclePath& path : options_.obstacle_paths) {
+        if (path.obstacle >= 0 && static_cast<std::size_t>(path.obstacle) < layout_.obstacles.size()) continue;
+        error = name_ + ": the script moves obstacle " + std::to_string(path.obstacle) + ", the scene has " +
+                std::to_string(layout_.obstacles.size());
         stop();
         return false;
     }
@@ -69,6 +79,7 @@ bool LocalSession::start(std::string& error) {
     settings.tool_count = static_cast<std::uint32_t>(std::min<std::size_t>(layout_.tools.size(), kMaxTools));
     for (std::uint32_t i = 0; i < settings.tool_count; ++i) settings.initial[i] = layout_.tools[i].initial;
     settings.tool0_path = options_.tool0_path;
+    settings.obstacle_paths = options_.obstacle_paths;
     settings.step_s = options_.step_s > 0.0 ? options_.step_s : layout_.timestep_s;
     settings.rate = options_.rate;
     settings.paused = options_.paused;
@@ -77,6 +88,30 @@ bool LocalSession::start(std::string& error) {
     physics_failures_seen_ = 0;
     std::fill(std::begin(jaws_closed_), std::end(jaws_closed_), false);
     physics_ = std::make_unique<PhysicsThread>(settings);
+    return true;
+}
+
+bool LocalSession::read_meshes(std::string& error) {
+    // ent_obstacle_mesh is a driving call: here, before the physics thread drives the scene.
+    for (std::size_t i = 0; i < layout_.obstacles.size(); ++i) {
+        ObstacleShape& obstacle = layout_.obstacles[i];
+        if (obstacle.kind != ENT_OBSTACLE_MESH) continue;
+        const auto id = static_cast<std::int32_t>(i);
+        std::uint32_t vertex_count = 0, triangle_count = 0;
+        ent_status status = ent_obstacle_mesh(scene_, id, 0, nullptr, &vertex_count, 0, nullptr, &triangle_count);
+        std::vector<double> vertices(3 * static_cast<std::size_t>(vertex_count));
+        std::vector<std::uint32_t> triangles(3 * static_cast<std::size_t>(triangle_count));
+        if (status == ENT_OK)
+            status = ent_obstacle_mesh(scene_, id, vertex_count, vertices.data(), &vertex_count, triangle_count,
+                                       triangles.data(), &triangle_count);
+        if (status != ENT_OK) {
+            error = "ent_obstacle_mesh of obstacle " + std::to_string(i) + " (" + obstacle.name + "): " +
+                    ent_last_error() + " (" + status_name(status) + ")";
+            return false;
+        }
+        obstacle.mesh = make_organ_mesh(vertices, triangles);
+    }
+    frame_on_cavity(layout_);
     return true;
 }
 
@@ -136,6 +171,15 @@ void LocalSession::read(const FrameRequest& request, FrameState& frame) {
     frame.gate_reached_s = report_.gate_reached_s;
     frame.tool_count = report_.tool_count;
     std::copy(report_.tools, report_.tools + report_.tool_count, frame.tools);
+    // The obstacles where the newest snapshot has them (a removed one is not found).
+    frame.obstacles.resize(layout_.obstacles.size());
+    for (std::size_t i = 0; i < frame.obstacles.size(); ++i) {
+        ObstaclePose& pose = frame.obstacles[i];
+        const ent_status status =
+            ent_obstacle_pose(scene_, static_cast<std::int32_t>(i), pose.position_m, pose.orientation_wxyz);
+        pose.present = status == ENT_OK;
+        if (status != ENT_OK && status != ENT_ERROR_NOT_FOUND) record("ent_obstacle_pose", status);
+    }
     frame.new_steps.clear();
     physics_->samples().drain([&frame](const StepSample& sample) { frame.new_steps.push_back(sample); });
     frame.dropped_steps = physics_->samples().dropped();

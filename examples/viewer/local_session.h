@@ -19,14 +19,17 @@ struct LocalSessionOptions {
     bool paused = false;
     double gate_s = std::numeric_limits<double>::infinity();
     ToolPathKeys tool0_path;    // a scripted path for tool 0 (empty: the mouse drives it)
+    std::vector<ObstaclePath> obstacle_paths;  // scripted organs (a retractor)
 };
 
 class LocalSession final : public Session {
 public:
-    // Creates the scene from JSON text and starts it. Null, with the library's message
-    // (naming the bad key) in error, if the library refuses the description.
+    // Creates the scene from JSON text and starts it; a mesh obstacle's relative "file" is
+    // found in scene_dir (the scene file's directory; "": the current one). Null, with the
+    // library's message (naming the bad key) in error, if the library refuses the description.
     static std::unique_ptr<LocalSession> open(const std::string& json, const std::string& name,
-                                              const LocalSessionOptions& options, std::string& error);
+                                              const std::string& scene_dir, const LocalSessionOptions& options,
+                                              std::string& error);
     ~LocalSession() override;
 
     std::string name() const override { return name_; }
@@ -50,10 +53,11 @@ public:
 private:
     LocalSession() = default;
     bool start(std::string& error);  // scene, skin, physics thread
+    bool read_meshes(std::string& error);  // the mesh obstacles' triangles, before the physics thread
     void stop();                     // the reverse
     void record(const char* call, ent_status status);  // a failure on the render thread
 
-    std::string json_, name_;
+    std::string json_, name_, scene_dir_;
     LocalSessionOptions options_;
     SceneLayout layout_;
     ent_scene* scene_ = nullptr;

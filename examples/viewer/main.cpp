@@ -29,8 +29,10 @@ const char kUsage[] =
     "  --video FILE        encode the frames with ffmpeg: FILE.mp4 or FILE.gif\n"
     "  --screenshot FILE   write the last frame as a PNG\n"
     "  --size WxH          window or image size in pixels (default 1600x900; headless 1280x720)\n"
-    "  --script FILE|demo  scripted mouse, keys, tool path and screenshots (docs/viewer.md);\n"
-    "                      demo: the demo's tool path (the default for --headless on the demo scene)\n"
+    "  --script FILE|demo|abdomen  scripted mouse, keys, tool and organ paths, screenshots\n"
+    "                      (docs/viewer.md); demo: the demo's tool path (the default for --headless\n"
+    "                      on the demo scene); abdomen: the retractor lifting the liver and the grasper\n"
+    "                      of examples/scenes/abdomen.json (its default: the retractor alone in a window)\n"
     "  --skin METHOD       tube, point_skeleton or convolution (default convolution)\n"
     "  --ui MODE           full (panels), hud (a small overlay) or none (default: full; headless: hud)\n"
     "  --rate R            slow motion: simulated seconds per wall second, (0, 1] (default 1)\n"
@@ -134,15 +136,20 @@ int main(int argc, char** argv) {
     const bool remote = !settings.lcm_url.empty();
     if (remote && !settings.scene_path.empty()) return usage_error("--lcm shows the server's scene: give no SCENE.json");
     if (!remote && !settings.lcm_channel_suffix.empty()) return usage_error("--channel-suffix goes with --lcm");
-    // The demo scene, headless, plays the demo's tool path unless told otherwise.
-    if (script_name.empty() && headless && settings.scene_path.empty() && !remote) script_name = "demo";
+    // A scene with a motion of its own (demo_scene.h: the demo scene's tool path, the
+    // abdomen's retractor and grasper) plays it unless a script is given: headless all of
+    // it; in a window the organs' part, the mouse being the tool.
+    settings.scene_motion = script_name.empty() && !remote;
+    settings.scene_motion_tool = headless;
     if (!script_name.empty()) {
         std::string error;
         if (!options.script.load(script_name, error)) return usage_error(error);
-        // A tool path is played by a local physics thread; a remote tool follows the mouse.
-        if (remote && !options.script.tool_path().empty())
-            return usage_error("with --lcm a script drives the tool with mouse lines, not tool lines");
-        settings.session.tool0_path = options.script.tool_path();
+        // Tool and organ paths are played by a local physics thread; a remote tool follows the mouse.
+        const ScenePaths& paths = options.script.paths();
+        if (remote && (!paths.tool0.empty() || !paths.obstacles.empty()))
+            return usage_error("with --lcm a script drives the tool with mouse lines, not tool lines (nor obstacle lines)");
+        settings.session.tool0_path = paths.tool0;
+        settings.session.obstacle_paths = paths.obstacles;
     }
     // The simulation waits for the picture: headless, for frame 1's time; in a window, at
     // t = 0 until the window shows its first frame (Viewer::start_clock).

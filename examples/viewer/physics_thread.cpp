@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "demo_scene.h"  // path_at
+#include "key_path.h"
 
 namespace viewer {
 
@@ -42,6 +42,14 @@ PhysicsThread::PhysicsThread(const PhysicsSettings& settings)
         latest_commands_.target[i] = settings_.initial[i];
     }
     latest_commands_.count = settings_.tool_count;
+    // A scripted organ moves from where the scene put it.
+    obstacle_starts_.resize(settings_.obstacle_paths.size());
+    for (std::size_t i = 0; i < settings_.obstacle_paths.size(); ++i) {
+        ObstacleStart& start = obstacle_starts_[i];
+        const ent_status status = ent_obstacle_pose(settings_.scene, settings_.obstacle_paths[i].obstacle,
+                                                    start.position_m, start.orientation_wxyz);
+        if (status != ENT_OK) fail("ent_obstacle_pose", status);
+    }
     reports_.publish(report_);
     thread_ = std::thread([this] { run(); });
 }
@@ -109,6 +117,7 @@ void PhysicsThread::run() {
 
 void PhysicsThread::step(double dt_s) {
     apply_tools(time_s_ + dt_s, dt_s);
+    apply_obstacles(time_s_ + dt_s);
     const auto start = Clock::now();
     const ent_status status = ent_scene_step(settings_.scene, dt_s);
     const auto end = Clock::now();
@@ -146,6 +155,18 @@ void PhysicsThread::apply_tools(double time_after_s, double dt_s) {
             continue;
         }
         report_.tools[i].pose = pose;
+    }
+}
+
+void PhysicsThread::apply_obstacles(double time_after_s) {
+    for (std::size_t i = 0; i < settings_.obstacle_paths.size(); ++i) {
+        const ObstaclePath& path = settings_.obstacle_paths[i];
+        const ObstacleStart& start = obstacle_starts_[i];
+        double offset[3], position[3];
+        path_at(path.keys.data(), path.keys.size() / 4, time_after_s, offset);
+        for (int c = 0; c < 3; ++c) position[c] = start.position_m[c] + offset[c];
+        const ent_status status = ent_obstacle_set_pose(settings_.scene, path.obstacle, position, start.orientation_wxyz);
+        if (status != ENT_OK) fail("ent_obstacle_set_pose", status);
     }
 }
 

@@ -49,11 +49,20 @@ struct PhysicsReport {
 // playing a recording.
 using ToolPathKeys = std::vector<double>;
 
+// A scripted motion of an obstacle (a retractor lifting the liver): its frame's origin
+// displaced from where the scene put it, 4 doubles per key (t_s, dx, dy, dz in m), its
+// orientation kept.
+struct ObstaclePath {
+    std::int32_t obstacle = -1;
+    std::vector<double> keys;
+};
+
 struct PhysicsSettings {
     ent_scene* scene = nullptr;          // driven by this thread only while it runs
     std::uint32_t tool_count = 0;        // tools to drive, <= kMaxTools
     ToolPose initial[kMaxTools];         // their poses in the scene description
     ToolPathKeys tool0_path;             // if not empty, tool 0 follows it, not the commands
+    std::vector<ObstaclePath> obstacle_paths;  // played before every step (ent_obstacle_set_pose)
     double step_s = 0.001;               // dt of each ent_scene_step
     double rate = 1.0;                   // simulated seconds per wall second
     bool paused = false;
@@ -87,6 +96,7 @@ private:
     void run();
     void step(double dt_s);
     void apply_tools(double time_after_s, double dt_s);
+    void apply_obstacles(double time_after_s);
     void read_tools(StepSample& sample);
     void fail(const char* call, ent_status status);
 
@@ -95,6 +105,11 @@ private:
     ToolCommands latest_commands_;
     PhysicsReport report_;
     double time_s_ = 0.0;
+    struct ObstacleStart {
+        double position_m[3] = {};
+        double orientation_wxyz[4] = {1, 0, 0, 0};
+    };
+    std::vector<ObstacleStart> obstacle_starts_;  // of each obstacle path, read at creation
 
     std::atomic<bool> stop_{false};
     std::atomic<bool> paused_;

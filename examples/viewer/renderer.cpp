@@ -51,6 +51,12 @@ Eigen::Matrix4f orthographic(double half_size, double near_m, double far_m) {
 
 Eigen::Vector3d point(const double* xyz) { return Eigen::Vector3d(xyz[0], xyz[1], xyz[2]); }
 
+// An obstacle's frame as a model matrix.
+Eigen::Matrix4f frame_transform(const double* position_m, const double* orientation_wxyz) {
+    const Eigen::Quaterniond q(orientation_wxyz[0], orientation_wxyz[1], orientation_wxyz[2], orientation_wxyz[3]);
+    return affine(q.normalized().toRotationMatrix(), point(position_m));
+}
+
 Eigen::Vector3d rotate(const ToolPose& pose, const Eigen::Vector3d& v) {
     const Eigen::Quaterniond q(pose.orientation_wxyz[0], pose.orientation_wxyz[1], pose.orientation_wxyz[2],
                                pose.orientation_wxyz[3]);
@@ -118,6 +124,19 @@ const Material& cavity_material() {
 }
 const Material& organ_material() {
     static const Material m = make(linear(0.74f, 0.60f, 0.40f), 0.15f, 40.0f, 0.3f);
+    return m;
+}
+// An organ mesh by its file's name, in the colours a laparoscope shows: a dark red-brown
+// liver, a pale stomach, a grey-pink abdominal wall (with the 5 cm grid, for scale).
+Material organ_mesh_material(const ObstacleShape& obstacle) {
+    const std::string& name = obstacle.name;
+    auto named = [&name](const char* word) { return name.find(word) != std::string::npos; };
+    if (obstacle.mesh && obstacle.mesh->cavity) return make(linear(0.60f, 0.50f, 0.49f), 0.05f, 20.0f, 0.2f, 2);
+    if (named("liver")) return make(linear(0.50f, 0.20f, 0.10f), 0.15f, 60.0f, 0.3f, 0, 0.85f);
+    if (named("stomach")) return make(linear(0.88f, 0.72f, 0.55f), 0.30f, 50.0f, 0.4f, 0, 0.85f);
+    if (named("colon")) return make(linear(0.80f, 0.62f, 0.48f), 0.30f, 50.0f, 0.4f, 0, 0.85f);
+    Material m = organ_material();
+    m.alpha = 0.85f;
     return m;
 }
 const Material& steel_material() {
@@ -290,7 +309,8 @@ void Renderer::draw(const SceneView& view, const Camera& camera, int width_px, i
     // Near things first: the depth test then skips the walls' pixels they hide, which
     // matters to a software renderer.
     draw_casters(view, true);
-    draw_obstacles(view, true);
+    draw_obstacles(view, ObstaclePass::opaque);
+    draw_obstacles(view, ObstaclePass::translucent);
     draw_overlays(view);
     active_ = nullptr;
 }
@@ -306,7 +326,7 @@ void Renderer::draw_casters(const SceneView& view, bool colour_pass) {
         draw_shape(*bowel_, Eigen::Matrix4f::Identity(), bowel_material());
         glDisable(GL_POLYGON_OFFSET_FILL);
     }
-    if (!colour_pass) draw_obstacles(view, false);
+    if (!colour_pass) draw_obstacles(view, ObstaclePass::shadow);
     if (view.toggles.tools) draw_tools(view, colour_pass);
     if (view.toggles.control_points && !frame.control_points_xyz_m.empty()) {
         scratch_.clear();
@@ -325,40 +345,92 @@ void Renderer::draw_casters(const SceneView& view, bool colour_pass) {
     }
 }
 
-void Renderer::draw_obstacles(const SceneView& view, bool colour_pass) {
+const GlMesh* Renderer::organ_buffer(std::size_t obstacle, const std::shared_ptr<const OrganMesh>& mesh) {
+    if (!mesh || mesh->indices.empty()) return nullptr;
+    if (organs_.size() <= obstacle) organs_.resize(obstacle + 1);
+    OrganBuffer& organ = organs_[obstacle];
+    if (organ.mesh != mesh) {
+        if (!organ.buffer) organ.buffer = std::make_unique<GlMesh>();
+        organ.buffer->upload(mesh->positions.data(), mesh->normals.data(), nullptr,
+                             static_cast<std::uint32_t>(mesh->positions.size() / 3), mesh->indices.data(),
+                             static_cast<std::uint32_t>(mesh->indices.size()), GL_STATIC_DRAW);
+        organ.mesh = mesh;
+    }
+    return organ.buffer.get();
+}
+
+void Renderer::draw_obstacles(const SceneView& view, ObstaclePass pass) {
     if (!view.toggles.obstacles) return;
-    for (const ObstacleShape& obstacle : view.layout->obstacles) {
+    const std::vector<ObstacleShape>& obstacles = view.layout->obstacles;
+    const std::vector<ObstaclePose>& poses = view.frame->obstacles;
+    const bool shadow = pass == ObstaclePass::shadow;
+    if (pass == ObstaclePass::translucent) {
+        // Front faces only, and no depth written: the bowel and the tools behind or inside
+        // an organ show through it, and its far side does not darken its near side.
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+    }
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+        const ObstacleShape& obstacle = obstacles[i];
+        // Where it is now (a retractor moves it); as described where the session has no
+        // poses (a remote one); not at all once removed.
+        if (i < poses.size() && !poses[i].present) continue;
+        const Eigen::Matrix4f frame = i < poses.size()
+                                          ? frame_transform(poses[i].position_m, poses[i].orientation_wxyz)
+                                          : frame_transform(obstacle.position_m, obstacle.orientation_wxyz);
+        const bool translucent = obstacle.kind == ENT_OBSTACLE_MESH && obstacle.mesh && !obstacle.mesh->cavity;
+        if (!shadow && translucent != (pass == ObstaclePass::translucent)) continue;
         switch (obstacle.kind) {
             case ENT_OBSTACLE_BOX_INSIDE:
-                if (!colour_pass) break;  // the cavity receives shadows, casts none
+                if (shadow) break;  // the cavity receives shadows, casts none
                 // Only the walls seen from inside: the near walls face away and are culled.
                 glEnable(GL_CULL_FACE);
                 draw_shape(*box_,
-                           affine(Eigen::Vector3d(obstacle.half_extents_m[0], obstacle.half_extents_m[1],
-                                                  obstacle.half_extents_m[2])
-                                      .asDiagonal(),
-                                  point(obstacle.center_m)),
+                           frame * affine(Eigen::Vector3d(obstacle.half_extents_m[0], obstacle.half_extents_m[1],
+                                                          obstacle.half_extents_m[2])
+                                              .asDiagonal(),
+                                          point(obstacle.center_m)),
                            cavity_material());
                 glDisable(GL_CULL_FACE);
                 break;
             case ENT_OBSTACLE_PLANE: {
-                if (!colour_pass) break;
-                const Eigen::Matrix3d frame = frame_along(point(obstacle.normal));
+                if (shadow) break;
+                const Eigen::Matrix3d plane = frame_along(point(obstacle.normal));
                 const double half = std::max(1.0, 2.0 * view.layout->scene_size_m);
-                draw_shape(*square_, affine(frame * Eigen::Vector3d(half, half, 1.0).asDiagonal(), point(obstacle.center_m)),
+                draw_shape(*square_,
+                           frame * affine(plane * Eigen::Vector3d(half, half, 1.0).asDiagonal(), point(obstacle.center_m)),
                            cavity_material());
                 break;
             }
             case ENT_OBSTACLE_SPHERE:
-                draw_shape(*sphere_, affine(obstacle.radius_m * Eigen::Matrix3d::Identity(), point(obstacle.center_m)),
+                draw_shape(*sphere_, frame * affine(obstacle.radius_m * Eigen::Matrix3d::Identity(), point(obstacle.center_m)),
                            organ_material());
                 break;
-            case ENT_OBSTACLE_CAPSULE:
-                draw_capsule(point(obstacle.start_m), point(obstacle.end_m), obstacle.radius_m, organ_material());
+            case ENT_OBSTACLE_CAPSULE: {
+                const Eigen::Matrix3d turn = frame.block<3, 3>(0, 0).cast<double>();
+                const Eigen::Vector3d shift = frame.block<3, 1>(0, 3).cast<double>();
+                draw_capsule(turn * point(obstacle.start_m) + shift, turn * point(obstacle.end_m) + shift, obstacle.radius_m,
+                             organ_material());
                 break;
+            }
+            case ENT_OBSTACLE_MESH: {
+                const GlMesh* mesh = organ_buffer(i, obstacle.mesh);
+                if (mesh == nullptr || (shadow && !translucent)) break;  // a wall casts no shadow
+                // A wall is seen from inside (its near side, facing away, is culled); an
+                // organ shows its near side.
+                if (!shadow) glEnable(GL_CULL_FACE);
+                draw_shape(*mesh, frame, organ_mesh_material(obstacle));
+                glDisable(GL_CULL_FACE);
+                break;
+            }
             default:
                 break;
         }
+    }
+    if (pass == ObstaclePass::translucent) {
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
     }
 }
 

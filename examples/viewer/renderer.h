@@ -1,7 +1,9 @@
 // Draws one frame of the scene with OpenGL 3.3 core: the bowel's skin shaded with its
-// normals, the obstacles, the tools' capsules, the force on each tool as an arrow, and on
-// request the axis, the control points, the collision spheres, the mesentery and a
-// wireframe. Needs a current context; every call on the render thread.
+// normals, the obstacles where they are now (organ meshes translucent, so that the bowel
+// under them shows; a cavity's wall seen from inside), the tools' capsules, the force on
+// each tool as an arrow, and on request the axis, the control points, the collision
+// spheres, the mesentery and a wireframe. Needs a current context; every call on the
+// render thread.
 #pragma once
 
 #include <Eigen/Core>
@@ -64,7 +66,11 @@ public:
 private:
     void upload_frame(const SceneView& view);
     void draw_casters(const SceneView& view, bool colour_pass);
-    void draw_obstacles(const SceneView& view, bool colour_pass);
+    // pass: shadow (what casts: solid organs), opaque (the rest but translucent organs),
+    // translucent (the solid organ meshes, after everything they may cover).
+    enum class ObstaclePass { shadow, opaque, translucent };
+    void draw_obstacles(const SceneView& view, ObstaclePass pass);
+    const GlMesh* organ_buffer(std::size_t obstacle, const std::shared_ptr<const OrganMesh>& mesh);
     void draw_tools(const SceneView& view, bool colour_pass);
     void draw_capsule(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius, const Material& material);
     void draw_arrow(const Eigen::Vector3d& from, const Eigen::Vector3d& vector, double radius, const Material& material);
@@ -75,6 +81,13 @@ private:
 
     GlProgram surface_, depth_, flat_;
     std::unique_ptr<GlMesh> bowel_, sphere_, sphere_instances_, cylinder_, cone_, box_, square_, lines_;
+    // The mesh obstacles' triangles on the GPU, by obstacle, uploaded once per mesh (the
+    // mesh is kept so that a new scene's mesh at the same address is not taken for it).
+    struct OrganBuffer {
+        std::shared_ptr<const OrganMesh> mesh;
+        std::unique_ptr<GlMesh> buffer;
+    };
+    std::vector<OrganBuffer> organs_;
     GLuint shadow_fbo_ = 0, shadow_texture_ = 0;
     int shadow_size_ = 1024;
 

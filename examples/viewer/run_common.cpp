@@ -114,6 +114,7 @@ void print_summary(const Viewer& viewer, int frames, double wall_s) {
                     link.url.c_str(), describe_link(link).c_str(), link.tool0_largest_move_m, link.tool0_sent_m[0],
                     link.tool0_sent_m[1], link.tool0_sent_m[2], link.tool0_commanded_m[0], link.tool0_commanded_m[1],
                     link.tool0_commanded_m[2]);
+        std::printf("; tool 0 status: %s", link.tool_status[0].empty() ? "ok" : link.tool_status[0].c_str());
     }
     std::printf("\nenteron-viewer: %llu failed calls\n", static_cast<unsigned long long>(frame.problem.count));
     std::fflush(stdout);

@@ -1,9 +1,9 @@
 // The viewer without a display (--headless): an OpenGL 3.3 core context from EGL on Mesa's
-// surfaceless platform (software rendering with llvmpipe: no X server, no GPU), frames
-// drawn into a Canvas at a fixed rate in simulated time. The physics thread still runs on
-// its own, up to a gate the render thread moves one frame at a time, so every frame shows
-// exactly the simulated time it is stamped with, however slow the rendering.
-#include <epoxy/egl.h>
+// surfaceless platform (examples/egl_offscreen_context.h; software rendering with llvmpipe:
+// no X server, no GPU), frames drawn into a Canvas at a fixed rate in simulated time. The
+// physics thread still runs on its own, up to a gate the render thread moves one frame at a
+// time, so every frame shows exactly the simulated time it is stamped with, however slow
+// the rendering.
 #include <epoxy/gl.h>
 
 #include <imgui.h>
@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "egl_offscreen_context.h"
 #include "run.h"
 
 namespace viewer {
@@ -25,66 +26,6 @@ using Clock = std::chrono::steady_clock;
 
 // Longer than this without reaching a frame's time means the physics thread is stuck.
 constexpr double kFrameTimeoutS = 60.0;
-
-class OffscreenContext {
-public:
-    ~OffscreenContext() {
-        if (display_ == EGL_NO_DISPLAY) return;
-        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-        if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-        eglTerminate(display_);
-    }
-
-    bool create(std::string& error) {
-        // Mesa's surfaceless platform first (any machine with libegl-mesa0), then the
-        // default display (a GPU driver's EGL).
-        if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
-            display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-        if (display_ == EGL_NO_DISPLAY) display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-        EGLint major = 0, minor = 0;
-        if (display_ == EGL_NO_DISPLAY || eglInitialize(display_, &major, &minor) != EGL_TRUE) {
-            error = "EGL has no display here (eglInitialize failed, EGL error 0x" + hex(eglGetError()) +
-                    "); Mesa's software renderer for EGL is in libegl-mesa0, or run the viewer in a window, under "
-                    "xvfb-run if there is no display";
-            display_ = EGL_NO_DISPLAY;
-            return false;
-        }
-        if (!epoxy_has_egl_extension(display_, "EGL_KHR_surfaceless_context")) {
-            error = "EGL on this display cannot make a context current without a surface";
-            return false;
-        }
-        const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
-        EGLConfig config = nullptr;
-        EGLint configs = 0;
-        if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE ||
-            eglChooseConfig(display_, config_attributes, &config, 1, &configs) != EGL_TRUE || configs == 0) {
-            error = "EGL offers no desktop OpenGL configuration";
-            return false;
-        }
-        const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                             EGL_NONE};
-        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attributes);
-        if (context_ == EGL_NO_CONTEXT || eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE) {
-            error = "EGL cannot make an OpenGL 3.3 core context (error 0x" + hex(eglGetError()) + ")";
-            return false;
-        }
-        renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        return true;
-    }
-
-    const std::string& renderer() const { return renderer_; }
-
-private:
-    static std::string hex(EGLint value) {
-        char text[16];
-        std::snprintf(text, sizeof text, "%x", static_cast<unsigned>(value));
-        return text;
-    }
-    EGLDisplay display_ = EGL_NO_DISPLAY;
-    EGLContext context_ = EGL_NO_CONTEXT;
-    std::string renderer_;
-};
 
 int capture(Viewer& viewer, RunOptions& options) {
     std::string error;
@@ -161,10 +102,13 @@ int capture(Viewer& viewer, RunOptions& options) {
 }  // namespace
 
 int run_headless(Viewer& viewer, RunOptions& options) {
-    OffscreenContext context;
+    enteron_examples::EglOffscreenContext context;
     std::string error;
     if (!context.create(error)) {
-        std::fprintf(stderr, "enteron-viewer: no renderer: %s\n", error.c_str());
+        std::fprintf(stderr,
+                     "enteron-viewer: no renderer: %s; or run the viewer in a window, under xvfb-run if there "
+                     "is no display\n",
+                     error.c_str());
         return kExitNoRenderer;
     }
     std::printf("enteron-viewer: headless, OpenGL on %s\n", context.renderer().c_str());

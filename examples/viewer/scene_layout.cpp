@@ -42,7 +42,8 @@ ObstacleShape read_obstacle(const json& item) {
     shape.kind = type == "plane" ? ENT_OBSTACLE_PLANE
                  : type == "sphere" ? ENT_OBSTACLE_SPHERE
                  : type == "capsule" ? ENT_OBSTACLE_CAPSULE
-                                     : ENT_OBSTACLE_BOX_INSIDE;
+                 : type == "mesh" ? ENT_OBSTACLE_MESH
+                                  : ENT_OBSTACLE_BOX_INSIDE;
     std::copy(desc.center_m, desc.center_m + 3, shape.center_m);
     std::copy(desc.normal, desc.normal + 3, shape.normal);
     std::copy(desc.start_m, desc.start_m + 3, shape.start_m);
@@ -55,6 +56,12 @@ ObstacleShape read_obstacle(const json& item) {
     read_vector(item, "start", shape.start_m);
     read_vector(item, "end", shape.end_m);
     read_number(item, "radius", shape.radius_m);
+    std::copy(desc.position_m, desc.position_m + 3, shape.position_m);
+    std::copy(desc.orientation_wxyz, desc.orientation_wxyz + 4, shape.orientation_wxyz);
+    read_vector(item, "position", shape.position_m);
+    read_vector(item, "orientation", shape.orientation_wxyz);
+    normalise(shape.orientation_wxyz, 4);
+    shape.name = item.value("file", type);
     return shape;
 }
 
@@ -125,16 +132,88 @@ bool read_scene_layout(const std::string& text, SceneLayout& layout, std::string
     if (document.contains("tools"))
         for (const json& item : document["tools"]) layout.tools.push_back(read_tool(item));
 
-    // The camera frames the cavity if there is one, else it is framed on the first
-    // frame by the bowel itself (scene_size_m 0).
+    frame_on_cavity(layout);
+    return true;
+}
+
+void frame_on_cavity(SceneLayout& layout) {
+    // The camera frames the cavity if there is one, else it is framed on the first frame
+    // by the bowel itself (scene_size_m 0).
     layout.scene_size_m = 0.0;
     for (const ObstacleShape& obstacle : layout.obstacles) {
-        if (obstacle.kind != ENT_OBSTACLE_BOX_INSIDE) continue;
-        std::copy(obstacle.center_m, obstacle.center_m + 3, layout.scene_center_m);
-        layout.scene_size_m = 2.0 * *std::max_element(obstacle.half_extents_m, obstacle.half_extents_m + 3);
-        break;
+        if (obstacle.kind == ENT_OBSTACLE_BOX_INSIDE) {
+            for (int c = 0; c < 3; ++c) layout.scene_center_m[c] = obstacle.position_m[c] + obstacle.center_m[c];
+            layout.scene_size_m = 2.0 * *std::max_element(obstacle.half_extents_m, obstacle.half_extents_m + 3);
+            return;
+        }
+        if (obstacle.kind == ENT_OBSTACLE_MESH && obstacle.mesh && obstacle.mesh->cavity) {
+            // The box around it in its frame, moved to its origin (a wall is not turned); the
+            // size that counts is across the view (x and z: the camera looks along +y).
+            const OrganMesh& wall = *obstacle.mesh;
+            for (int c = 0; c < 3; ++c)
+                layout.scene_center_m[c] = obstacle.position_m[c] + 0.5 * (wall.low_m[c] + wall.high_m[c]);
+            layout.scene_size_m = std::max(wall.high_m[0] - wall.low_m[0], wall.high_m[2] - wall.low_m[2]);
+            return;
+        }
     }
-    return true;
+}
+
+std::shared_ptr<const OrganMesh> make_organ_mesh(const std::vector<double>& vertices_xyz_m,
+                                                 const std::vector<std::uint32_t>& triangles) {
+    auto mesh = std::make_shared<OrganMesh>();
+    mesh->positions.assign(vertices_xyz_m.begin(), vertices_xyz_m.end());
+    mesh->indices = triangles;
+    mesh->normals.assign(mesh->positions.size(), 0.0f);
+    const std::size_t vertex_count = vertices_xyz_m.size() / 3;
+    for (int c = 0; c < 3; ++c) {
+        mesh->low_m[c] = vertex_count > 0 ? mesh->positions[c] : 0.0f;
+        mesh->high_m[c] = mesh->low_m[c];
+    }
+    for (std::size_t v = 0; v < vertex_count; ++v)
+        for (int c = 0; c < 3; ++c) {
+            mesh->low_m[c] = std::min(mesh->low_m[c], mesh->positions[3 * v + c]);
+            mesh->high_m[c] = std::max(mesh->high_m[c], mesh->positions[3 * v + c]);
+        }
+    // Each triangle adds its cross product (twice its area along its normal) to its corners,
+    // and its share of the signed volume, (a . (b x c)) / 6, to the mesh's.
+    double volume = 0.0;
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const double* a = &vertices_xyz_m[3 * static_cast<std::size_t>(triangles[t])];
+        const double* b = &vertices_xyz_m[3 * static_cast<std::size_t>(triangles[t + 1])];
+        const double* c = &vertices_xyz_m[3 * static_cast<std::size_t>(triangles[t + 2])];
+        const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+        const double n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2], ab[0] * ac[1] - ab[1] * ac[0]};
+        volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+                   a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+        for (std::size_t corner = 0; corner < 3; ++corner)
+            for (int k = 0; k < 3; ++k) mesh->normals[3 * static_cast<std::size_t>(triangles[t + corner]) + k] += static_cast<float>(n[k]);
+    }
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+        float* n = &mesh->normals[3 * v];
+        const float norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (norm > 0.0f)
+            for (int k = 0; k < 3; ++k) n[k] /= norm;
+    }
+    mesh->cavity = volume < 0.0;
+    return mesh;
+}
+
+std::string with_mesh_files_from(const std::string& text, const std::string& scene_dir) {
+    if (scene_dir.empty()) return text;
+    json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (document.is_discarded() || !document.is_object() || !document.contains("environment") ||
+        !document["environment"].is_array())
+        return text;
+    bool changed = false;
+    for (json& item : document["environment"]) {
+        if (!item.is_object() || !item.contains("file") || !item["file"].is_string()) continue;
+        const std::string file = item["file"].get<std::string>();
+        if (file.empty() || file[0] == '/') continue;
+        item["file"] = scene_dir + "/" + file;
+        changed = true;
+    }
+    return changed ? document.dump() : text;
 }
 
 }  // namespace viewer

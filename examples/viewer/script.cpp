@@ -32,19 +32,30 @@ int key_code(const std::string& name) {
 
 }  // namespace
 
-bool Script::load(const std::string& path_or_demo, std::string& error) {
-    if (path_or_demo == "demo") {
-        tool_path_.assign(demo_tool_keys, demo_tool_keys + 4 * DEMO_TOOL_KEY_COUNT);
+ScenePaths scene_paths(const demo_motion* motion) {
+    ScenePaths paths;
+    if (motion == nullptr) return paths;
+    paths.tool0.assign(motion->tool_keys, motion->tool_keys + 4 * motion->tool_key_count);
+    if (motion->obstacle >= 0)
+        paths.obstacles.push_back(ObstaclePath{
+            motion->obstacle, std::vector<double>(motion->obstacle_keys, motion->obstacle_keys + 4 * motion->obstacle_key_count)});
+    return paths;
+}
+
+bool Script::load(const std::string& path_or_motion, std::string& error) {
+    if (const demo_motion* motion = demo_motion_named(path_or_motion.c_str())) {
+        paths_ = scene_paths(motion);
         return true;
     }
     std::string text;
-    return read_text_file(path_or_demo, text, error) && parse(text, path_or_demo, error);
+    return read_text_file(path_or_motion, text, error) && parse(text, path_or_motion, error);
 }
 
 bool Script::parse(const std::string& text, const std::string& name, std::string& error) {
     std::istringstream lines(text);
     std::string line;
     std::vector<std::array<double, 4>> tool_keys;
+    std::vector<std::pair<std::int32_t, std::array<double, 4>>> obstacle_keys;
     for (int number = 1; std::getline(lines, line); ++number) {
         const std::string content = line.substr(0, line.find('#'));
         std::istringstream words(content);
@@ -59,7 +70,7 @@ bool Script::parse(const std::string& text, const std::string& name, std::string
             error = name + ":" + std::to_string(number) + ": " + what;
             return false;
         };
-        if (!(words >> kind)) return bad("an event after the time (mouse, wheel, key, screenshot, tool)");
+        if (!(words >> kind)) return bad("an event after the time (mouse, wheel, key, screenshot, tool, obstacle)");
         if (kind == "mouse") {
             MouseKey key{time_s, 0.0, 0.0, false};
             std::string button;
@@ -84,15 +95,30 @@ bool Script::parse(const std::string& text, const std::string& name, std::string
             std::array<double, 4> key{time_s, 0.0, 0.0, 0.0};
             if (!(words >> key[1] >> key[2] >> key[3])) return bad("tool wants X Y Z in m");
             tool_keys.push_back(key);
+        } else if (kind == "obstacle") {
+            long id = -1;
+            std::array<double, 4> key{time_s, 0.0, 0.0, 0.0};
+            if (!(words >> id >> key[1] >> key[2] >> key[3]) || id < 0 || id > 1000000)
+                return bad("obstacle wants an obstacle number (from 0) and DX DY DZ in m");
+            obstacle_keys.emplace_back(static_cast<std::int32_t>(id), key);
         } else {
-            return bad("unknown event \"" + kind + "\" (mouse, wheel, key, screenshot, tool)");
+            return bad("unknown event \"" + kind + "\" (mouse, wheel, key, screenshot, tool, obstacle)");
         }
     }
     auto earlier = [](const auto& a, const auto& b) { return a.time_s < b.time_s; };
     std::stable_sort(mouse_.begin(), mouse_.end(), earlier);
     std::stable_sort(events_.begin(), events_.end(), earlier);
     std::stable_sort(tool_keys.begin(), tool_keys.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
-    for (const auto& key : tool_keys) tool_path_.insert(tool_path_.end(), key.begin(), key.end());
+    for (const auto& key : tool_keys) paths_.tool0.insert(paths_.tool0.end(), key.begin(), key.end());
+    // Each obstacle's keys in time order, one path per obstacle.
+    std::stable_sort(obstacle_keys.begin(), obstacle_keys.end(),
+                     [](const auto& a, const auto& b) { return a.second[0] < b.second[0]; });
+    for (const auto& [id, key] : obstacle_keys) {
+        auto path = std::find_if(paths_.obstacles.begin(), paths_.obstacles.end(),
+                                 [id = id](const ObstaclePath& p) { return p.obstacle == id; });
+        if (path == paths_.obstacles.end()) path = paths_.obstacles.insert(paths_.obstacles.end(), ObstaclePath{id, {}});
+        path->keys.insert(path->keys.end(), key.begin(), key.end());
+    }
     return true;
 }
 

@@ -68,6 +68,9 @@ struct LinkStatus {
     double tool0_largest_move_m = 0.0;     // the server's tool 0 from where it was first seen
     double tool0_sent_m[3] = {};           // tool 0's target as sent (scene frame, before the mapping)
     double tool0_commanded_m[3] = {};      // the server's newest accepted command for it, mapped back
+    // Each tool's tool_feedback_t STATUS_* bits in the newest state, in words ("stale, force
+    // limited"; "" when none is set): why a device gets no force or a clamped one.
+    std::string tool_status[kMaxTools];
 };
 
 inline const char* link_state_name(LinkStatus::State state) {
@@ -94,6 +97,13 @@ inline std::string describe_link(const LinkStatus& link) {
     return std::string(text) + counts;
 }
 
+// Where an obstacle's frame is now (ent_obstacle_pose): a retracted liver moves.
+struct ObstaclePose {
+    bool present = false;                      // false: removed (or unknown)
+    double position_m[3] = {};
+    double orientation_wxyz[4] = {1, 0, 0, 0};
+};
+
 // One frame's view of the scene, filled by Session::read on the render thread.
 struct FrameState {
     double time_s = 0.0;                       // simulated time of the physics report
@@ -106,6 +116,7 @@ struct FrameState {
     double skin_update_ms = 0.0;               // wall time of this frame's ent_skin_update
     std::uint32_t tool_count = 0;
     ToolReadback tools[kMaxTools];
+    std::vector<ObstaclePose> obstacles;       // one per layout obstacle; empty: as the layout says
     bool paused = false;
     double gate_reached_s = -1.0;              // capture: the gate the physics waits at
     std::vector<StepSample> new_steps;         // every step since the last read, oldest first

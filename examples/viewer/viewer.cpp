@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "demo_scene.h"
+#include "script.h"
 #ifdef ENTERON_VIEWER_WITH_LCM
 #include "remote/remote_session.h"
 #endif
@@ -59,12 +60,22 @@ bool Viewer::open_initial(std::string& error) {
 bool Viewer::open(const std::string& json, const std::string& name, const std::string& path, std::string& error) {
     // The skin method and resolution carry over from the scene shown before.
     if (session_) settings_.session.skin = session_->skin();
-    std::unique_ptr<Session> session = LocalSession::open(json, name, settings_.session, error);
+    LocalSessionOptions options = settings_.session;
+    if (settings_.scene_motion) {
+        const ScenePaths paths = scene_paths(demo_motion_for_scene(path.empty() ? nullptr : path.c_str()));
+        options.tool0_path = settings_.scene_motion_tool ? paths.tool0 : ToolPathKeys();
+        options.obstacle_paths = paths.obstacles;
+    }
+    // A mesh file is found next to the scene file, as ent_scene_create_json_file finds it.
+    const std::size_t slash = path.rfind('/');
+    const std::string scene_dir = slash == std::string::npos ? "" : path.substr(0, slash);
+    std::unique_ptr<Session> session = LocalSession::open(json, name, scene_dir, options, error);
     if (!session) {
         load_error_ = error;
         json_edit_ = json;  // to mend it in the Scene panel
         return false;
     }
+    settings_.session = options;  // the paths the scene shown plays
     show(std::move(session), json, path);
     return true;
 }

@@ -28,6 +28,11 @@ struct ViewerSettings {
     std::string lcm_url;           // not empty: show enteron-lcm-server's session there instead
     std::string lcm_channel_suffix;
     UiMode ui = UiMode::full;
+    // No script given: each scene opened plays its own motion (demo_scene.h: the demo
+    // scene's tool path, the abdomen's retractor and grasper), the tool's part only if
+    // scene_motion_tool (headless; in a window the mouse is the tool).
+    bool scene_motion = false;
+    bool scene_motion_tool = false;
 };
 
 class Viewer {

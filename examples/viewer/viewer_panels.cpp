@@ -134,6 +134,8 @@ void Viewer::build_panels() {
         const double max_force = session_->layout().tools[active].max_force_N;
         ImGui::Text("F = (%+.2f, %+.2f, %+.2f) N  |F| = %.2f N  %u contacts", tool.force_N[0], tool.force_N[1],
                     tool.force_N[2], magnitude, tool.contacts);
+        if (frame_.link.remote)
+            ImGui::Text("server's status: %s", frame_.link.tool_status[active].empty() ? "ok" : frame_.link.tool_status[active].c_str());
         ImGui::Text("force on the tool, last %.0f s (bound %.1f N):", Histories::kPlotSeconds, max_force);
         const float top = static_cast<float>(std::max(0.5, std::min(max_force, 1.2 * histories_.force_magnitude[active].largest())));
         force_plot("##|F|", histories_.force_magnitude[active], top, 70.0f);
@@ -295,6 +297,8 @@ void Viewer::build_hud() {
                                            tool.force_N[2] * tool.force_N[2]);
         const double max_force = session_->layout().tools[0].max_force_N;
         ImGui::Text("force on the tool %.2f N%s", magnitude, tool.grasping ? "   holding" : "");
+        if (frame_.link.remote && !frame_.link.tool_status[0].empty())
+            ImGui::Text("tool: %s", frame_.link.tool_status[0].c_str());
         ImGui::PlotLines("##hud|F|", histories_.force_magnitude[0].data(), histories_.force_magnitude[0].size(),
                          histories_.force_magnitude[0].offset(), nullptr, 0.0f, static_cast<float>(max_force),
                          ImVec2(220.0f, 40.0f));

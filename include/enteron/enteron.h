@@ -21,8 +21,9 @@
  *   and the changes between steps of the anatomy (ent_obstacle_set_pose,
  *   _set_velocity, _set_friction, ent_scene_remove_obstacle, ent_obstacle_mesh,
  *   ent_scene_set_gravity, ent_scene_pin_point, ent_scene_unpin_point,
- *   ent_scene_attach_mesentery). One of them at a time per scene: a driving call made while another runs
- *   on the same scene on another thread returns ENT_ERROR_BUSY at once and changes nothing
+ *   ent_scene_attach_mesentery, ent_scene_attach_clamped_end). One of them at a time per
+ *   scene: a driving call made while another runs on the same scene on another thread
+ *   returns ENT_ERROR_BUSY at once and changes nothing
  *   (the check costs one atomic operation). The driving thread may change between calls.
  * - The tool commands (ent_tool_set_pose, ent_tool_grasp, ent_tool_release) are safe from
  *   any thread, at any time, never wait and allocate nothing: each goes into the tool's
@@ -469,7 +470,7 @@ ENT_API const char* ent_effect_name(int32_t effect);
 
 /**
  * Saves the whole state of the scene into buffer: a versioned, self-describing binary image
- * (docs/save-restore.md lays it out) of everything its future depends on: the control
+ * (docs/scoring-and-state.md lays it out) of everything its future depends on: the control
  * points' positions and velocities, the time, the integrator's history, each effect's state
  * (the tools' poses, grasps and contact impulses; the self-contact's near pairs, which a
  * restored scene must search in the same order), the counters of ent_stats and
@@ -721,6 +722,21 @@ ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_poin
  *         such obstacle); ENT_ERROR_BUSY.
  */
 ENT_API ent_status ent_scene_attach_mesentery(ent_scene* scene, int32_t obstacle);
+
+/**
+ * Attaches clamped ends (ent_scene_desc.clamped_ends; ends: ENT_PIN_FIRST, ENT_PIN_LAST or
+ * ENT_PIN_BOTH) to an obstacle's frame from where they are now: from then on the end point
+ * and its tangent's direction move with the obstacle (the duodenojejunal flexure on an organ
+ * the simulator moves); the rest of the bowel follows through the clamp. ENT_NO_OBSTACLE
+ * leaves them in the world where they are. After a jump of the obstacle the end catches up
+ * over the next steps, as an attached pin does (ent_scene_pin_point). JSON:
+ * pinned.clamped_attached. Thread: the driving thread, between steps; allocates, refactors
+ * the mass matrix (about as long as one step). While the obstacle turns, each step factors
+ * the clamped mass matrix again (explicit integrators) and allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, ends not one of those three);
+ *         ENT_ERROR_NOT_FOUND (an end named is not clamped, no such obstacle); ENT_ERROR_BUSY.
+ */
+ENT_API ent_status ent_scene_attach_clamped_end(ent_scene* scene, int32_t ends, int32_t obstacle);
 
 /* ------------------------------------------------------------------------------------ */
 /* Tools: surgical instruments that push and grasp the bowel                            */

@@ -12,7 +12,7 @@ namespace {
 constexpr char kMagic[8] = {'E', 'N', 'T', 'S', 'T', 'A', 'T', 'E'};
 constexpr uint32_t kByteOrderMark = 0x01020304u;
 
-// Header fields, by offset (docs/save-restore.md).
+// Header fields, by offset (docs/scoring-and-state.md).
 constexpr std::size_t kVersionAt = 8;
 constexpr std::size_t kByteOrderAt = 12;
 constexpr std::size_t kSizeAt = 16;

@@ -1,5 +1,5 @@
 // The saved state of a scene (ent_scene_save_state, ent_scene_restore_state): a versioned,
-// self-describing binary image, laid out in docs/save-restore.md.
+// self-describing binary image, laid out in docs/scoring-and-state.md.
 //
 //   header    magic "ENTSTATE", format version, byte order mark, total size, the scene's
 //             fingerprint, a checksum of everything after the header, the section count

@@ -321,4 +321,18 @@ ENT_API ent_status ent_scene_attach_mesentery(ent_scene* scene, int32_t obstacle
     });
 }
 
+ENT_API ent_status ent_scene_attach_clamped_end(ent_scene* scene, int32_t ends, int32_t obstacle) {
+    return guarded([&] {
+        SceneHandle& handle = live_handle(scene);
+        if (ends != ENT_PIN_FIRST && ends != ENT_PIN_LAST && ends != ENT_PIN_BOTH)
+            throw Error(ErrorCode::invalid_argument, "ent_scene_attach_clamped_end: ends is " + std::to_string(ends) +
+                                                         ", not ENT_PIN_FIRST (1), ENT_PIN_LAST (2) or ENT_PIN_BOTH (3)");
+        const enteron::capi::DrivingCall driving(handle, "ent_scene_attach_clamped_end");
+        enteron::scene::Scene& s = *handle.scene;
+        std::optional<std::size_t> frame;
+        if (obstacle != ENT_NO_OBSTACLE) frame = obstacle_index(s, obstacle);
+        s.attach_clamped_ends(ends, frame);
+    });
+}
+
 }  // extern "C"

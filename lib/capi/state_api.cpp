@@ -1,4 +1,4 @@
-// Save and restore through the C API (docs/save-restore.md): driving calls, since they read
+// Save and restore through the C API (docs/scoring-and-state.md): driving calls, since they read
 // or replace the live state of the scene, not a snapshot.
 #include <string>
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <Eigen/LU>
 
+#include "collision/shaft_contact.h"
+
 namespace enteron::collision {
 
 namespace {
@@ -13,7 +15,34 @@ constexpr double kFirstTouchDepth = 1e-6;
 // Longest Newton step while the proxy touches the bowel (a fraction of the reach): the
 // contacts' linearisation holds for short steps around a curved surface.
 constexpr double kLongestContactStep = 0.25;
-constexpr int kMaxHalvings = 4;
+// The line search along a Newton step (backtracking, Armijo's rule on |residual|): a step
+// of length alpha is taken once it shrinks the residual by at least kSufficientDecrease
+// alpha of it. The Newton step goes downhill on |residual|^2 wherever the Jacobian is
+// the derivative, so halving finds such a step unless the balance has a kink there (a
+// contact's onset, a sphere's centre on the shaft's axis) or Newton heads for a balance
+// deep inside the bowel that the contacts' negative stiffness makes (pressed far in from a
+// cold start). After kMaxHalvings the proxy relaxes instead: a step along the net force
+// on it, residual / (the stiffness holding it), the way a massless body let go would move.
+constexpr double kSufficientDecrease = 1e-4;
+constexpr int kMaxHalvings = 10;
+
+// The fraction of `step` the shaft at p can go before it first reaches a sphere it does
+// not touch yet, just inside it (continuous collision). A sphere it touches is already in
+// the balance, however shallow: a step stopped at its first touch leaves it within
+// rounding of the stop radius, where first_touch would stop every later step too.
+double free_fraction(const ProxyProblem& problem, const std::pmr::vector<ProxyCandidate>& candidates, const Vec3& p,
+                     const Vec3& step) {
+    const Shaft shaft(p, p + problem.shaft, problem.reach);
+    double first = 1.0;
+    for (const ProxyCandidate& candidate : candidates) {
+        double s, distance2;
+        Vec3 d;
+        if (shaft.touches(candidate.center, &s, &d, &distance2)) continue;
+        const double t = shaft.first_touch(candidate.center, step, problem.reach - kFirstTouchDepth * problem.reach);
+        if (t > 0.0) first = std::min(first, t);
+    }
+    return first;
+}
 
 // Solves J x = r for a 3 x 3 J that may be (nearly) singular: a direction nothing holds
 // (a saturated coupling across a frictionless contact) gets a tiny stiffness instead.
@@ -41,28 +70,19 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
     Mat3 given_rate = Mat3::Zero();  // d(given)/dp
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         const ProxyCandidate& candidate = candidates[k];
-        double s, distance2;
-        Vec3 d;
-        if (!shaft.touches(candidate.center, &s, &d, &distance2)) continue;
-        const double distance = std::sqrt(distance2);
+        ShaftContact touch;
+        if (!shaft_contact(shaft, candidate.center, &touch)) continue;
         ProxyContact contact;
         contact.candidate = k;
-        contact.depth = problem.reach - distance;
-        contact.s = s;
-        // A centre on the shaft's axis: push it up, any direction will do.
-        contact.normal = distance > 1e-12 ? Vec3(d / distance) : Vec3::UnitZ();
-        const Vec3 relative = candidate.velocity - (vp + s * problem.shaft_velocity);
+        contact.depth = touch.depth;
+        contact.s = touch.s;
+        contact.normal = touch.normal;
+        const Vec3 relative = candidate.velocity - (vp + touch.s * problem.shaft_velocity);
         contact.force = contact_force(problem.contact, contact.depth, contact.normal, relative);
-        if (distance > 1e-12) {
-            contact.jacobian = contact_jacobian(problem.contact, contact.depth, d, relative);
-        } else {
-            const Mat3 nn = contact.normal * contact.normal.transpose();
-            contact.jacobian = {-problem.contact.stiffness * nn,
-                                -(contact.force.damping * nn + contact.force.friction_damping * (Mat3::Identity() - nn))};
-        }
+        contact.jacobian = shaft_contact_jacobian(problem.contact, touch, contact.force, relative);
         given += contact.force.force;
-        // The closest point moves with p, and its velocity with (p - p0) / dt.
-        given_rate -= contact.jacobian.position + rate * contact.jacobian.velocity;
+        // v_p moves with (p - p0) / dt.
+        given_rate += shaft_contact_rate(contact.jacobian, touch, shaft, problem.shaft_velocity, rate);
         contacts_.push_back(contact);
     }
     result.grasp_taut = false;
@@ -118,24 +138,42 @@ ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector
         Vec3 step = touching || result.grasp_taut ? solve3<1>(jacobian, residual) : Vec3(raw_ / coupling_rate);
         if (!step.allFinite()) break;
         const double longest = kLongestContactStep * problem.reach;
+        // The proxy let go: it moves along the net force on it, residual / (the stiffness
+        // holding it), no farther than a Newton step may.
+        const auto relaxation = [&] {
+            const double holding = coupling_rate + (problem.grasp.holding ? problem.grasp.stiffness : 0.0);
+            const Vec3 relax = residual / holding;
+            return relax.norm() > longest ? Vec3(relax * (longest / relax.norm())) : relax;
+        };
+        // Newton against the net force on the proxy heads for a balance deep inside the
+        // bowel (the contacts' negative stiffness about a sphere's centre): relax instead.
+        const bool uphill = touching && !(step.dot(residual) > 0.0);
+        if (uphill) step = relaxation();
         if (touching && step.norm() > longest) step *= longest / step.norm();
-        // Continuous collision: stop where the shaft first reaches a sphere it does not touch
-        // yet, just inside it.
-        const Shaft shaft(p, p + problem.shaft, problem.reach);
-        double first = 1.0;
-        for (const ProxyCandidate& candidate : candidates) {
-            const double t = shaft.first_touch(candidate.center, step, problem.reach - kFirstTouchDepth * problem.reach);
-            if (t > 0.0) first = std::min(first, t);
-        }
+        // Continuous collision: stop where the shaft first reaches a sphere it does not touch.
+        const double first = free_fraction(problem, candidates, p, step);
         step *= first;
-        // Damped: halve a full step that made the balance worse.
+        // The line search along a Newton step (a step stopped at a first touch is taken as
+        // it is: the sphere it meets joins the balance at the next iteration).
         const double before = result.residual;
         Vec3 trial = p + step;
         Vec3 trial_residual = balance(problem, candidates, trial, result, jacobian);
-        for (int halving = 0; halving < kMaxHalvings && first == 1.0 && !(result.residual < before); ++halving) {
-            step *= 0.5;
-            trial = p + step;
-            trial_residual = balance(problem, candidates, trial, result, jacobian);
+        const auto descended = [&](double alpha) {
+            return result.residual <= (1.0 - kSufficientDecrease * alpha) * before;
+        };
+        if (!uphill && first == 1.0) {
+            double alpha = 1.0;
+            for (int halving = 0; halving < kMaxHalvings && !descended(alpha); ++halving) {
+                alpha *= 0.5;
+                trial = p + alpha * step;
+                trial_residual = balance(problem, candidates, trial, result, jacobian);
+            }
+            if (!descended(alpha)) {
+                Vec3 relax = relaxation();
+                relax *= free_fraction(problem, candidates, p, relax);
+                trial = p + relax;
+                trial_residual = balance(problem, candidates, trial, result, jacobian);
+            }
         }
         p = trial;
         residual = trial_residual;

@@ -86,7 +86,8 @@ struct ProxyResult {
 
 class ToolProxy {
 public:
-    static constexpr int kMaxIterations = 24;
+    // Enough for a cold start far inside the bowel (a few relaxation steps, tests/unit/collision/test_tool_proxy.cpp).
+    static constexpr int kMaxIterations = 64;
     // Newton stops when the forces balance to this fraction of max_force.
     static constexpr double kTolerance = 1e-10;
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "collision/shaft_contact.h"
 #include "collision/tool_shaft.h"
 #include "mechanics/bordered_system.h"
 #include "mechanics/system_matrix.h"
@@ -30,10 +31,11 @@ Vec3 tail_of(const ToolPose& pose, double length) {
 
 Mat3 outer(const Vec3& n) { return n * n.transpose(); }
 
-// The grasp: a tension-only spring-damper of rest length `rest` (the tool's radius plus
-// the bowel's: the held point sits on the tool's surface, where the contact neither pushes
-// nor pulls) from the held axis point p to the tip. Slack, it does nothing, so a grasp
-// starts and ends without a jolt. Its stiffness, for the implicit step, is
+// The grasp: a tension-only spring-damper of rest length `rest` from the held axis point p
+// to the tip (ToolsForce::grasp_rest: from where the held point was when grasped, closing
+// to the tool's radius plus the bowel's, where the held point sits on the tool's surface
+// and the contact neither pushes nor pulls). Slack, it does nothing, so a grasp starts
+// and ends without a jolt. Its stiffness, for the implicit step, is
 // H = a n n^T + b I along the unit direction n from p to the tip.
 struct GraspSpring {
     bool taut = false;
@@ -98,6 +100,7 @@ std::size_t ToolsForce::add_tool(const ToolConfig& tool) {
     t.current = tool.pose;
     t.target = tool.pose;
     t.proxy = t.step_proxy = tool.pose.position;
+    t.grasp_rest = t.settings.radius + spheres_.radius();
     // Nothing changes if an allocation fails: every reservation comes first. Each tool may
     // touch every sphere and hold one point.
     tools_.reserve(tools_.size() + 1);
@@ -125,6 +128,12 @@ std::size_t ToolsForce::border_bodies() const {
     std::size_t bodies = 0;
     for (const Tool& tool : tools_) bodies += !tool.removed && tool.settings.mode == ToolMode::proxy;
     return bodies;
+}
+
+double ToolsForce::grasp_rest(const Tool& tool, double t) const {
+    const double surface = tool.settings.radius + spheres_.radius();
+    const double elapsed = step_dt_ > 0.0 ? std::max(0.0, t - step_start_) : 0.0;
+    return std::max(surface, tool.grasp_rest - kGraspClosingSpeed * elapsed);
 }
 
 double ToolsForce::fraction_of_step(double t) const {
@@ -220,33 +229,31 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     hits_.clear();
     Vec3 total = Vec3::Zero();     // on the bowel
     double total_magnitude = 0.0;  // sum of the magnitudes of its parts
-    // Their change as the tool moves by dx (d moves by -dx), velocities held: for the stiffness.
+    // Their change as the tool moves rigidly by dx, velocities held (shaft_contact_rate): for the stiffness.
     Mat3 total_rate = Mat3::Zero();
     Eigen::RowVector3d magnitude_rate = Eigen::RowVector3d::Zero();
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const Sphere& sphere = spheres_[i];
-        double s, dist2;
-        Vec3 d;
-        if (!shaft.touches(sphere.center, &s, &d, &dist2)) continue;
-        const double dist = std::sqrt(dist2);
+        ShaftContact touch;
+        if (!shaft_contact(shaft, sphere.center, &touch)) continue;
+        const double s = touch.s;
         Hit hit;
         hit.sphere = i;
-        const double depth = hit.depth = shaft.reach - dist;
-        // A centre on the tool's axis: push it up, any direction will do.
-        hit.normal = dist > 1e-12 ? Vec3(d / dist) : Vec3::UnitZ();
+        hit.depth = touch.depth;
+        hit.normal = touch.normal;
         hit.velocity = spline::evaluate(state.v.data(), sphere.weights);
-        const Vec3 tool_v = (1.0 - s) * segment.tip_velocity + s * segment.tail_velocity;
-        hit.force = contact_force(tool.contact, depth, hit.normal, hit.velocity - tool_v);
+        const Vec3 relative = hit.velocity - ((1.0 - s) * segment.tip_velocity + s * segment.tail_velocity);
+        hit.force = contact_force(tool.contact, hit.depth, hit.normal, relative);
         hit.arm = s * shaft.axis + tool.settings.radius * hit.normal;
         total += hit.force.force;
         const double magnitude = hit.force.force.norm();
         total_magnitude += magnitude;
-        const Mat3 jacobian = dist > 1e-12 ? contact_jacobian(tool.contact, depth, d, hit.velocity - tool_v).position
-                                           : Mat3(-tool.contact.stiffness * outer(hit.normal));
-        total_rate -= jacobian;
-        if (magnitude > 0.0) magnitude_rate -= (hit.force.force / magnitude).transpose() * jacobian;
+        const Mat3 rate = shaft_contact_rate(shaft_contact_jacobian(tool.contact, touch, hit.force, relative), touch,
+                                             shaft, segment.tail_velocity - segment.tip_velocity, 0.0);
+        total_rate += rate;
+        if (magnitude > 0.0) magnitude_rate += (hit.force.force / magnitude).transpose() * rate;
         hits_.push_back(hit);
-        last_.max_penetration = std::max(last_.max_penetration, depth);
+        last_.max_penetration = std::max(last_.max_penetration, hit.depth);
     }
     tool.sphere_contacts = static_cast<uint32_t>(hits_.size());
 
@@ -257,7 +264,7 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     if (holding) {
         const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
         grasp_v = spline::evaluate(state.v.data(), tool.grasp_point);
-        spring = grasp_spring(tool.settings, tool.settings.radius + r, segment.tip, segment.tip_velocity, p, grasp_v);
+        spring = grasp_spring(tool.settings, grasp_rest(tool, t), segment.tip, segment.tip_velocity, p, grasp_v);
         grasp = spring.force;
         if (grasp.norm() > tool.settings.max_force) {
             tool.slipped = true;  // released when the step is accepted
@@ -332,7 +339,7 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
         problem.grasp.holding = true;
         problem.grasp.point = spline::evaluate(state.q.data(), tool.grasp_point);
         problem.grasp.velocity = spline::evaluate(state.v.data(), tool.grasp_point);
-        problem.grasp.rest = problem.reach;
+        problem.grasp.rest = grasp_rest(tool, t);
         problem.grasp.stiffness = tool.settings.grasp_stiffness;
         problem.grasp.damping = tool.settings.grasp_damping;
     }
@@ -483,7 +490,7 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
         // count the energy of the spring it let go of, however far the jump stretched it.
         if (tool.grasping && !tool.slipped) {
             const Vec3 p = spline::evaluate(state.q.data(), tool.grasp_point);
-            const double stretch = std::max(0.0, (tip - p).norm() - (tool.settings.radius + r));
+            const double stretch = std::max(0.0, (tip - p).norm() - grasp_rest(tool, state.time));
             energy += 0.5 * tool.settings.grasp_stiffness * stretch * stretch;
         }
     }
@@ -506,7 +513,11 @@ void ToolsForce::grasp(Tool& tool, const mechanics::State& state) {
             found = true;
         }
     }
-    if (found) tool.grasping = true;
+    if (found) {
+        tool.grasping = true;
+        // The spring starts slack wherever the held point is (no jolt), then closes.
+        tool.grasp_rest = std::max(tool.settings.radius + spheres_.radius(), std::sqrt(best));
+    }
 }
 
 void ToolsForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
@@ -604,6 +615,7 @@ void ToolsForce::end_step(bool accepted) {
             tool.accepted_stiffness = tool.used_stiffness;
             tool.contacts = tool.used_contacts;
             tool.current = tool.target;
+            tool.grasp_rest = grasp_rest(tool, step_start_ + step_dt_);
             tool.contact_impulse += tool.attempt_contact_impulse;
             tool.contact_impulse_magnitude += tool.attempt_contact_impulse_magnitude;
         } else {
@@ -655,7 +667,7 @@ void save_mat3(StateWriter& out, const Mat3& m) { out.f64s(m.data(), 9); }
 // left it), accepted outputs, passivity observer and impulses; the rest is rebuilt by the
 // next step (the attempt's sums, the evaluation's contacts).
 void ToolsForce::save_state(StateWriter& out) const {
-    out.begin_section("tools", 2);
+    out.begin_section("tools", 3);
     out.u32(static_cast<uint32_t>(tools_.size()));
     for (const Tool& tool : tools_) {
         out.u8(tool.removed ? 1 : 0);
@@ -665,6 +677,7 @@ void ToolsForce::save_state(StateWriter& out) const {
         out.u32(static_cast<uint32_t>(tool.grasp_point.first));
         out.f64s(tool.grasp_point.w.data(), 4);
         out.u32(tool.grasp_sphere);
+        out.f64(tool.grasp_rest);
         out.f64s(tool.proxy.data(), 3);
         out.f64s(tool.proxy_velocity.data(), 3);
         out.f64(tool.proxy_time);
@@ -685,7 +698,8 @@ void ToolsForce::save_state(StateWriter& out) const {
 
 void ToolsForce::restore_state(StateReader& in) {
     // Version 1 (before the proxy) cannot give a proxy's state: refused as too old.
-    if (in.begin_section("tools", 2) < 2) in.fail("saved before tools had proxies (version 1); save it again");
+    const uint32_t version = in.begin_section("tools", 3);
+    if (version < 2) in.fail("saved before tools had proxies (version 1); save it again");
     if (in.u32("tools") != tools_.size()) in.fail("saved with another number of tools");
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         Tool& tool = tools_[i];
@@ -699,6 +713,10 @@ void ToolsForce::restore_state(StateReader& in) {
         saved.grasp_point.first = in.index("first control point grasped", spheres_.control_points() - 3);
         in.f64s("grasp weights", 4, saved.grasp_point.w.data());
         saved.grasp_sphere = in.index("sphere grasped", spheres_.size());
+        // Version 2 held the point on the tool's surface from the start.
+        saved.grasp_rest = version >= 3 ? in.f64("grasp rest length") : tool.settings.radius + spheres_.radius();
+        if (!(saved.grasp_rest >= tool.settings.radius + spheres_.radius()) || !std::isfinite(saved.grasp_rest))
+            in.fail("grasp rest length shorter than the tool's radius plus the bowel's, or not finite");
         in.f64s("proxy position", 3, saved.proxy.data());
         in.f64s("proxy velocity", 3, saved.proxy_velocity.data());
         saved.proxy_time = in.f64("proxy time");

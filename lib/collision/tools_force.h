@@ -51,6 +51,10 @@ namespace enteron::collision {
 
 class ToolsForce final : public mechanics::Effect {
 public:
+    // How fast a grasp draws the held point in to the tool's surface, m/s: a grasp taken
+    // from a distance starts slack (no jolt for the device) and tightens by at most
+    // grasp_stiffness x 0.05 mm a millisecond (docs/haptics.md, "Force continuity").
+    static constexpr double kGraspClosingSpeed = 0.05;
     // `spheres` are shared with the other contact effects and `channels` connect the tools
     // with the caller's threads; both must outlive this effect.
     ToolsForce(CollisionSpheres& spheres, const ContactParameters& contact, const mechanics::State& initial,
@@ -124,6 +128,10 @@ private:
         bool slipped = false;                // in the current attempt
         spline::SegmentWeights grasp_point;  // material point of the axis held
         uint32_t grasp_sphere = 0;           // the collision sphere it was when grasped
+        // The grasp spring's rest length at the step's start, m: where the held point was
+        // when grasped (the spring starts slack), closing at kGraspClosingSpeed to the
+        // tool's radius plus the bowel's.
+        double grasp_rest = 0.0;
         // The proxy: its tip and velocity after the last evaluation the integrator used,
         // and when that was; at the step's start, for a retry.
         Vec3 proxy = Vec3::Zero(), proxy_velocity = Vec3::Zero();
@@ -175,6 +183,8 @@ private:
     // What a tool publishes (a tool not removed).
     static void write_output(const Tool& tool, ToolOutput& output);
     double fraction_of_step(double t) const;
+    // The grasp spring's rest length at time t of the step, m.
+    double grasp_rest(const Tool& tool, double t) const;
     // Grasps the axis point nearest the tip (the proxy's in proxy mode) within reach, if any.
     void grasp(Tool& tool, const mechanics::State& state);
     void evaluate_direct(Tool& tool, const mechanics::State& state, double t, double* force,

@@ -1,6 +1,7 @@
 #include "mechanics/clamped_ends.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "base/error.h"
 
@@ -69,10 +70,93 @@ ClampedEnds::ClampedEnds(bool first, bool last, const double* start_points, std:
     }
 }
 
-Vec3 ClampedEnds::direction(bool first_end) const {
+const ClampedEnds::Clamp* ClampedEnds::find(bool first_end) const {
     for (std::size_t k = 0; k < count_; ++k)
-        if ((clamps_[k].end == 0) == first_end) return clamps_[k].direction;
-    return Vec3::Zero();
+        if ((clamps_[k].end == 0) == first_end) return &clamps_[k];
+    return nullptr;
+}
+
+Vec3 ClampedEnds::direction(bool first_end) const {
+    const Clamp* clamp = find(first_end);
+    return clamp != nullptr ? clamp->direction : Vec3::Zero();
+}
+
+void ClampedEnds::attach(bool first_end, const RigidFrames& frames, std::size_t frame, double t) {
+    Clamp* clamp = find(first_end);
+    if (clamp == nullptr) throw Error(ErrorCode::internal, "attaching an end that is not clamped");
+    frames_ = &frames;
+    clamp->frame = frame;
+    clamp->rate[0] = clamp->rate[1] = 0.0;
+    if (frame == kWorld) return;
+    const FramePlacement placement = frames.at(frame, t);
+    clamp->local_direction = placement.rotation.transpose() * clamp->direction;
+    for (int e = 0; e < 2; ++e) clamp->local_across[e] = placement.rotation.transpose() * clamp->across[e];
+}
+
+bool ClampedEnds::prescribe(State& state, double dt, double speed_limit) {
+    bool turned = false;
+    for (std::size_t k = 0; k < count_; ++k) {
+        Clamp& c = clamps_[k];
+        if (c.frame == kWorld) continue;
+        const Eigen::Matrix3d& rotation = frames_->at_end(c.frame).rotation;
+        const Vec3 direction = rotation * c.local_direction;
+        if (direction != c.direction) turned = true;
+        c.direction = direction;
+        for (int e = 0; e < 2; ++e) c.across[e] = rotation * c.local_across[e];
+        // The rates that put u on d at the end of the step; the near point's velocity change
+        // they ask (u's rate is 4 v_1 + ...) bounded by the speed limit.
+        const Vec3 u = tangent_sum(c, state.q.data());
+        double rate[2] = {-c.across[0].dot(u) / dt, -c.across[1].dot(u) / dt};
+        const double change = 0.25 * std::hypot(rate[0], rate[1]);
+        if (change > speed_limit)
+            for (double& r : rate) r *= speed_limit / change;
+        // v_1 += e_k (rate_k - e_k . u(v)) / 4: the velocity meets the constraint at the
+        // start, so the explicit integrators (which hold its rate) keep it through the step.
+        const Vec3 u_rate = tangent_sum(c, state.v.data());
+        for (int e = 0; e < 2; ++e) {
+            c.rate[e] = rate[e];
+            point_at(state.v.data(), c.near) += c.across[e] * (0.25 * (rate[e] - c.across[e].dot(u_rate)));
+        }
+    }
+    return turned;
+}
+
+void ClampedEnds::save_attachments(StateWriter& out) const {
+    out.u32(static_cast<uint32_t>(count_));
+    for (std::size_t k = 0; k < count_; ++k) {
+        const Clamp& c = clamps_[k];
+        out.u32(c.frame == kWorld ? 0u : static_cast<uint32_t>(c.frame) + 1u);
+        out.f64s(c.direction.data(), 3);
+        for (const Vec3& across : c.across) out.f64s(across.data(), 3);
+        out.f64s(c.local_direction.data(), 3);
+        for (const Vec3& across : c.local_across) out.f64s(across.data(), 3);
+    }
+}
+
+void ClampedEnds::restore_attachments(StateReader& in, const RigidFrames& frames) {
+    if (in.count("clamped ends", clamps_.size()) != count_) in.fail("the saved scene clamps other ends");
+    std::array<Clamp, 2> clamps = clamps_;
+    for (std::size_t k = 0; k < count_; ++k) {
+        Clamp& c = clamps[k];
+        const uint32_t frame = in.index("frame of a clamped end (0: the world)", frames.size() + 1);
+        c.frame = frame == 0 ? kWorld : std::size_t{frame} - 1;
+        in.f64s("clamped end's direction", 3, c.direction.data());
+        for (Vec3& across : c.across) in.f64s("clamped end's cross direction", 3, across.data());
+        in.f64s("clamped end's direction in its frame", 3, c.local_direction.data());
+        for (Vec3& across : c.local_across) in.f64s("clamped end's cross direction in its frame", 3, across.data());
+        // An orthonormal frame (d, e_1, e_2), in the world and in the obstacle's frame.
+        Eigen::Matrix3d world, local;
+        world << c.direction, c.across[0], c.across[1];
+        local << c.local_direction, c.local_across[0], c.local_across[1];
+        const double off = (world.transpose() * world - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+        const double local_off = (local.transpose() * local - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+        if (!(off < 1e-9) || (c.frame != kWorld && !(local_off < 1e-9)))
+            in.fail("a clamped end's directions are not orthonormal");
+        c.rate[0] = c.rate[1] = 0.0;
+    }
+    if (in.checking()) return;
+    clamps_ = clamps;
+    frames_ = &frames;
 }
 
 bool ClampedEnds::constrains(std::size_t control_point) const {
@@ -119,12 +203,10 @@ void ClampedEnds::reduce_rhs(double* rhs, const double* velocity) const {
         // b'_1 = R^T b_1 / 4 (its components on d, e_1, e_2), b'_2 = b_1 / 4 + b_2.
         Vec3 reduced(c.direction.dot(b1) / 4.0, 0.0, 0.0);
         for (int e = 0; e < 2; ++e) {
-            // The rows across d: the change that puts u = 4 v_1 - v_2 (with v_0) back on d.
-            const double off = velocity == nullptr ? 0.0
-                                                   : c.across[e].dot(4.0 * point_at(velocity, c.near) -
-                                                                     3.0 * point_at(velocity, c.end) -
-                                                                     point_at(velocity, c.far));
-            reduced[1 + e] = -off;
+            // The rows across d: the change that puts u = 4 v_1 - v_2 (with v_0) back on d,
+            // or on the rate that turns it with its frame (accelerations keep that rate).
+            const double off = velocity == nullptr ? 0.0 : c.across[e].dot(tangent_sum(c, velocity));
+            reduced[1 + e] = c.frame == kWorld || velocity == nullptr ? -off : c.rate[e] - off;
         }
         point_at(rhs, c.far) += b1 / 4.0;
         point_at(rhs, c.near) = reduced;

@@ -23,12 +23,24 @@
 // is still a band matrix of half bandwidth 11; the two rows of u across d become identity
 // rows whose right-hand sides are the constraint's values; after the solve, x = T x'.
 // The cost is a few 3 x 3 block products per end and step.
+//
+// A clamp attached to a rigid frame (an organ the caller moves, rigid_frames.h) holds its
+// direction in that frame: d = R d_local, e_k = R e_k,local, taken at the end of each step
+// (where its end point, pinned to the same frame, goes). Before each attempt the two
+// across-components of the end's velocity get the rate that brings the tangent onto the new
+// direction by the end of the step, e_k . (4 v_1 - 3 v_0 - v_2) = -e_k . u(q) / dt with u =
+// 4 q_1 - 3 q_0 - q_2 at the step's start (bounded like an attached pin after a jump), and
+// the constraint rows hold that rate instead of zero.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <limits>
 
 #include "base/geometry.h"
+#include "base/state_io.h"
+#include "mechanics/rigid_frames.h"
+#include "mechanics/state.h"
 #include "mechanics/system_matrix.h"
 
 namespace enteron::mechanics {
@@ -43,6 +55,8 @@ bool clamped_end_is_degenerate(const double* points, std::size_t count, bool fir
 
 class ClampedEnds {
 public:
+    static constexpr std::size_t kWorld = std::numeric_limits<std::size_t>::max();
+
     // Clamps the first and/or last end of the axis through `start_points` (count x 3, m),
     // each along its tangent there (spline with quadratic ends at the clamped ones).
     // Requires count >= 4, and >= 6 with both ends (the two constraints share no point).
@@ -52,6 +66,25 @@ public:
 
     // The direction held at an end (unit, dP/dt's), or zero if that end is free.
     Vec3 direction(bool first_end) const;
+    bool clamped(bool first_end) const { return find(first_end) != nullptr; }
+
+    // Between steps: holds a clamped end's direction in frame `frame` of `frames` (which
+    // outlive this) from now on, as it is at time t, or in the world again (kWorld). The end
+    // point itself is attached by the pins. Requires clamped(first_end).
+    void attach(bool first_end, const RigidFrames& frames, std::size_t frame, double t);
+
+    // Before each attempt of a step of dt seconds (state holds the step's start, the end
+    // points' velocities already prescribed): the attached clamps take the directions of
+    // their frames at the end of the step, and the near points' velocities the rate that
+    // turns the tangent there. `speed_limit` (m/s) bounds that change of a near point's
+    // velocity. True if a direction changed: the mass matrix's reduction is then stale.
+    bool prescribe(State& state, double dt, double speed_limit);
+
+    // The attachments, in the "dynamics" section of a saved state (Dynamics::save_state).
+    // Restore checks the frames against `frames`, assigns only when !in.checking(), and
+    // needs the frames to outlive this.
+    void save_attachments(StateWriter& out) const;
+    void restore_attachments(StateReader& in, const RigidFrames& frames);
 
     // The control points the clamps constrain besides their end points: 1, 2 and n-2, n-3
     // for the clamped ends. A point pin on one of them would fight the change of variables.
@@ -74,7 +107,21 @@ private:
         std::size_t far;     // q_2
         Vec3 direction;      // d
         Vec3 across[2];      // e_1, e_2
+        // Attached to a frame: d and e_k in it, and the rates e_k . (4 v_1 - 3 v_0 - v_2)
+        // the constraint rows hold in the current step (zero in the world).
+        std::size_t frame = kWorld;
+        Vec3 local_direction = Vec3::Zero();
+        Vec3 local_across[2] = {Vec3::Zero(), Vec3::Zero()};
+        double rate[2] = {0.0, 0.0};
     };
+    const Clamp* find(bool first_end) const;
+    Clamp* find(bool first_end) { return const_cast<Clamp*>(static_cast<const ClampedEnds*>(this)->find(first_end)); }
+    // u = 4 x_1 - 3 x_0 - x_2 of a 3n vector (twice the end tangent, or its rate).
+    static Vec3 tangent_sum(const Clamp& c, const double* x) {
+        return 4.0 * point_at(x, c.near) - 3.0 * point_at(x, c.end) - point_at(x, c.far);
+    }
+
+    const RigidFrames* frames_ = nullptr;
 
     std::array<Clamp, 2> clamps_{};
     std::size_t count_ = 0;  // clamps in use

@@ -65,13 +65,8 @@ void Dynamics::finalize() {
     if (pinned_) pinned_->constrain(mass_factor_);
     if (!mass_factor_.factor()) throw Error(ErrorCode::internal, "the mass matrix is not positive definite");
     if (clamped_) {
-        // The clamps mix x, y and z: M over the 3n coordinates, with the same constraints.
         clamped_mass_factor_.resize(coordinates());
-        add_per_coordinate(mass_, 1.0, clamped_mass_factor_);
-        if (pinned_) pinned_->constrain(clamped_mass_factor_);
-        clamped_->reduce(clamped_mass_factor_);
-        if (!clamped_mass_factor_.factor())
-            throw Error(ErrorCode::internal, "the clamped mass matrix is not positive definite");
+        factor_clamped_mass();
     }
 
     const std::size_t n = model_.control_points;
@@ -158,6 +153,23 @@ void Dynamics::forces(const State& state, double* force, const Linearization* li
         counters_[static_cast<std::size_t>(owner)].total_time_ns += now_ns() - start;
     }
     if (pinned_) run(*pinned_);
+}
+
+void Dynamics::factor_clamped_mass() {
+    // The clamps mix x, y and z: M over the 3n coordinates, with the same constraints.
+    clamped_mass_factor_.set_zero();
+    add_per_coordinate(mass_, 1.0, clamped_mass_factor_);
+    if (pinned_) pinned_->constrain(clamped_mass_factor_);
+    clamped_->reduce(clamped_mass_factor_);
+    if (!clamped_mass_factor_.factor())
+        throw Error(ErrorCode::internal, "the clamped mass matrix is not positive definite");
+}
+
+bool Dynamics::prescribe(State& state, double dt) {
+    if (!pinned_) return false;
+    const bool moving = pinned_->prescribe(state, dt);
+    if (clamped_ && clamped_->prescribe(state, dt, pinned_->speed_limit())) factor_clamped_mass();
+    return moving;
 }
 
 void Dynamics::acceleration(const State& state, double* acceleration) {
@@ -273,22 +285,30 @@ double Dynamics::external_work_bound() const {
 }
 
 void Dynamics::save_state(StateWriter& out) const {
-    out.begin_section("dynamics", 1);
+    // Version 2: the clamped ends' attachments follow the counters.
+    out.begin_section("dynamics", 2);
     for (const EffectCounters& counter : counters_) {
         out.u64(counter.calls);
         out.u64(counter.total_time_ns);
     }
+    if (clamped_) clamped_->save_attachments(out);
+    else out.u32(0);
     out.end_section();
     for (const Owned<Effect>& effect : effects_) effect->save_state(out);
     if (pinned_) pinned_->save_state(out);
 }
 
-void Dynamics::restore_state(StateReader& in) {
-    in.begin_section("dynamics", 1);
+void Dynamics::restore_state(StateReader& in, const RigidFrames& frames) {
+    const uint32_t version = in.begin_section("dynamics", 2);
     std::array<EffectCounters, kEffectCount> counters{};
     for (EffectCounters& counter : counters) {
         counter.calls = in.u64("effect calls");
         counter.total_time_ns = in.u64("effect time");
+    }
+    // Version 1 (before clamped ends could follow frames): they stay as they are.
+    if (version >= 2) {
+        if (clamped_) clamped_->restore_attachments(in, frames);
+        else if (in.count("clamped ends", 0) != 0) in.fail("the saved scene clamps ends, this one does not");
     }
     in.end_section();
     for (Owned<Effect>& effect : effects_) effect->restore_state(in);

@@ -86,8 +86,12 @@ public:
     void begin_attempt();
     void end_step(bool accepted);
     // Before each attempt: the velocities of the points pinned to moving frames
-    // (pinned_points.h). True if one is not zero.
-    bool prescribe(State& state, double dt) const { return pinned_ && pinned_->prescribe(state, dt); }
+    // (pinned_points.h), then the turn of the clamped ends attached to frames
+    // (clamped_ends.h; the clamped mass matrix is factored again when one turned). True if
+    // one of those velocities is not zero.
+    bool prescribe(State& state, double dt);
+    // The clamps, or null.
+    ClampedEnds* clamps() { return clamped_.get(); }
 
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;
@@ -96,7 +100,8 @@ public:
     // then each effect's section (Effect::save_state), the pins' last. restore_state reads
     // them back in the same order, assigning only when !in.checking().
     void save_state(StateWriter& out) const;
-    void restore_state(StateReader& in);
+    // `frames` are those the clamped ends may follow.
+    void restore_state(StateReader& in, const RigidFrames& frames);
     // Adds the effects in the order they run (the order of their sections) to a fingerprint.
     void add_layout(Fingerprint& fingerprint) const;
     // Work the effects driven from outside may do in the current step (effect.h), J.
@@ -131,6 +136,8 @@ public:
 
 private:
     double largest_eigenvalue(const numerics::ScalarBandMatrix& bound) const;
+    // M over the 3n coordinates with the pins and the clamps' reduction, factored.
+    void factor_clamped_mass();
 
     AxisModel model_;
     std::pmr::memory_resource* memory_;

@@ -116,7 +116,7 @@ public:
     // the step began).
     virtual void end_step(bool /*accepted*/) {}
 
-    // Save and restore (base/state_io.h, docs/save-restore.md). An effect whose future
+    // Save and restore (base/state_io.h, docs/scoring-and-state.md). An effect whose future
     // depends on more than the axis state q, v, t (what it holds between steps, caches whose
     // order the next results depend on, the outputs it publishes) writes that into its own
     // section and reads it back: restore_state reads and validates every value, and assigns

@@ -56,6 +56,8 @@ public:
     void save_state(StateWriter& out) const override;
     void restore_state(StateReader& in, std::size_t control_points);
     std::size_t size() const { return points_.size(); }
+    // How fast an attached point catches up with its frame after a jump, m/s.
+    double speed_limit() const { return speed_limit_; }
 
     // Before each attempt of a step of dt seconds: the velocities of the points attached to
     // frames (state holds the step's start). True if one of them is not zero.

@@ -287,11 +287,25 @@ void read_attached_pins(const json& value, const std::string& path, PinnedConfig
     }
 }
 
+// pinned.clamped_attached: {"first": k, "last": k}, the obstacle each clamped end follows.
+using ClampedObstacles = std::optional<std::size_t>[2];
+const Key<ClampedObstacles> kClampedAttachedKeys[] = {
+    {"first", [](auto& v, auto& p, auto& c) { c[0] = read_count(v, p); }},
+    {"last", [](auto& v, auto& p, auto& c) { c[1] = read_count(v, p); }},
+};
+
+void read_clamped_attached(const json& value, const std::string& path, PinnedConfig& pinned) {
+    if (!value.is_object())
+        fail(path + " must be an object {\"first\": k, \"last\": k} naming obstacles, got " + describe(value));
+    read_object(value, path, kClampedAttachedKeys, pinned.clamped_obstacle);
+}
+
 const Key<PinnedConfig> kPinnedKeys[] = {
     {"ends", [](auto& v, auto& p, auto& c) { c.ends = read_choice(v, p, kPinnedEnds); }},
     {"control_points", read_pinned_points},
     {"attached", read_attached_pins},
     {"clamped", [](auto& v, auto& p, auto& c) { c.clamped = read_choice(v, p, kPinnedEnds); }},
+    {"clamped_attached", read_clamped_attached},
 };
 
 const Key<CollisionConfig> kCollisionKeys[] = {

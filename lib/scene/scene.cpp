@@ -150,6 +150,10 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     if (config.pinned)
         for (const PinAttachment& pin : config.pinned->attached) pin_point_only(pin.point, pin.obstacle);
     if (config.mesentery && config.mesentery->obstacle) attach_mesentery_only(config.mesentery->obstacle);
+    if (config.pinned)
+        for (const auto& [end, obstacle] : {std::pair{pin_first, config.pinned->clamped_obstacle[0]},
+                                            std::pair{pin_last, config.pinned->clamped_obstacle[1]}})
+            if (obstacle) attach_clamped_ends_only(end, obstacle);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision) {
         auto effect = make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state_,
@@ -296,6 +300,26 @@ void Scene::attach_mesentery_only(std::optional<std::size_t> obstacle) {
 
 void Scene::attach_mesentery(std::optional<std::size_t> obstacle) {
     attach_mesentery_only(obstacle);
+    changed_between_steps();
+}
+
+void Scene::attach_clamped_ends_only(int32_t ends, std::optional<std::size_t> obstacle) {
+    ClampedEnds* clamps = dynamics_.clamps();
+    for (const bool first : {true, false})
+        if ((ends & (first ? pin_first : pin_last)) != 0 && (clamps == nullptr || !clamps->clamped(first)))
+            throw Error(ErrorCode::not_found, std::string("the scene's ") + (first ? "first" : "last") +
+                                                  " end is not clamped (clamped_ends)");
+    const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : ClampedEnds::kWorld;
+    for (const bool first : {true, false}) {
+        if ((ends & (first ? pin_first : pin_last)) == 0) continue;
+        // The end point rides on the frame like a pin; the clamp turns its direction with it.
+        pin_point_only(first ? 0 : model_.control_points - 1, obstacle);
+        clamps->attach(first, frames_, frame, state_.time);
+    }
+}
+
+void Scene::attach_clamped_ends(int32_t ends, std::optional<std::size_t> obstacle) {
+    attach_clamped_ends_only(ends, obstacle);
     changed_between_steps();
 }
 

@@ -83,6 +83,10 @@ public:
     bool unpin_point(std::size_t point);
     // Between steps: the mesentery's root follows an obstacle's frame (or stays in the world).
     void attach_mesentery(std::optional<std::size_t> obstacle);
+    // Between steps: a clamped end (pin_first or pin_last; both with pin_both) follows an
+    // obstacle's frame from where it is now, its end point and its tangent's direction (or
+    // stays in the world where it is). Throws Error(not_found) if such an end is not clamped.
+    void attach_clamped_ends(int32_t ends, std::optional<std::size_t> obstacle);
 
     // Adds a tool (validated: unit quaternion), starting the tools effect with the first
     // one; returns its index. Not during a step.
@@ -104,7 +108,7 @@ public:
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
 
-    // Save and restore (docs/save-restore.md; scene_state.cpp). save_state writes the state
+    // Save and restore (docs/scoring-and-state.md; scene_state.cpp). save_state writes the state
     // into `buffer` if it fits in `capacity` bytes (a null buffer only measures) and returns
     // its size. restore_state checks the whole image first (format, fingerprint, every
     // section) and throws Error naming what is wrong with the scene untouched; then it
@@ -142,6 +146,7 @@ private:
     // pin_point and attach_mesentery without refinalize and publish (the constructor's).
     void pin_point_only(std::size_t point, std::optional<std::size_t> obstacle);
     void attach_mesentery_only(std::optional<std::size_t> obstacle);
+    void attach_clamped_ends_only(int32_t ends, std::optional<std::size_t> obstacle);
     // Adds a tool, creating the tools effect with the first; no refinalize.
     std::size_t add_tool_effect_only(const collision::ToolConfig& tool);
     // Bounds, substep limit and energies after the set of effects changed.

@@ -80,6 +80,8 @@ struct PinnedConfig {
     std::vector<uint32_t> points;  // further control point indices
     std::vector<PinAttachment> attached;  // points held on obstacles (JSON pinned.attached)
     int32_t clamped = pin_none;    // ends held in place and in direction (mechanics/clamped_ends.h)
+    // The obstacle the first / last clamped end follows (JSON pinned.clamped_attached).
+    std::optional<std::size_t> clamped_obstacle[2] = {};
 };
 
 // Settings shared by every contact of the bowel: the environment, the self-contact and

@@ -1,4 +1,4 @@
-// Save and restore of a scene (scene.h, docs/save-restore.md): the scene's own section (the
+// Save and restore of a scene (scene.h, docs/scoring-and-state.md): the scene's own section (the
 // axis state, the counters, the guard's reference energies), then the dynamics' sections
 // (effect counters, then each effect's own), then the integrator's.
 //
@@ -68,7 +68,7 @@ void Scene::restore_sections(StateReader& in) {
         guard_.set_reference(reference);
     }
     frames_.restore_state(in);
-    dynamics_.restore_state(in);
+    dynamics_.restore_state(in, frames_);
     integrator_->restore_state(in);
 }
 

@@ -562,6 +562,16 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     if (config.mesentery && config.mesentery->obstacle)
         validator.check_named(*config.mesentery->obstacle, "mesentery.obstacle")
             .below(obstacles, "the number of obstacles");
+    if (config.pinned)
+        for (const bool first : {true, false}) {
+            const std::optional<std::size_t>& obstacle = config.pinned->clamped_obstacle[first ? 0 : 1];
+            if (!obstacle) continue;
+            const std::string name = std::string("pinned.clamped_attached.") + (first ? "first" : "last");
+            if ((config.pinned->clamped & (first ? pin_first : pin_last)) == 0)
+                validator.fail(name, std::string("attaches the ") + (first ? "first" : "last") +
+                                         " end, which pinned.clamped does not clamp: clamp it or remove the key");
+            validator.check_named(*obstacle, name).below(obstacles, "the number of obstacles");
+        }
     for (std::size_t i = 0; i < config.tools.size(); ++i) {
         const std::string prefix = indexed("tools", i) + ".";
         validator.tool_settings(config.tools[i].settings, prefix);

@@ -725,6 +725,13 @@ std::vector<BadInput> table() {
          "scene"},
         {"ent_scene_attach_mesentery", "unknown obstacle 1",
          [](L l) { return ent_scene_attach_mesentery(l.scene, 1); }, ENT_ERROR_NOT_FOUND, "obstacle 1"},
+        {"ent_scene_attach_clamped_end", "scene NULL",
+         [](L) { return ent_scene_attach_clamped_end(nullptr, ENT_PIN_FIRST, -1); }, kArg, "scene"},
+        {"ent_scene_attach_clamped_end", "ends 0", [](L l) { return ent_scene_attach_clamped_end(l.scene, 0, -1); },
+         kArg, "ends"},
+        {"ent_scene_attach_clamped_end", "an end not clamped",
+         [](L l) { return ent_scene_attach_clamped_end(l.scene, ENT_PIN_FIRST, -1); }, ENT_ERROR_NOT_FOUND,
+         "not clamped"},
         {"ent_scene_add_obstacle", "mesh vertex NaN",
          obstacle_with([](ent_obstacle_desc& d) {
              static const double v[9] = {0, 0, -1, 1, 0, -1, 0, kNaN, -1};

@@ -1,4 +1,4 @@
-// Save and restore (ent_scene_save_state, ent_scene_restore_state; docs/save-restore.md).
+// Save and restore (ent_scene_save_state, ent_scene_restore_state; docs/scoring-and-state.md).
 //
 // A restored scene continues bit-identically: the test runs a scripted trainee (a tool
 // pushing through a self-colliding pile in a box, grasping and pulling, releasing) for N
@@ -8,11 +8,14 @@
 // another scene, a non-finite value, random corruption) is refused with a message and
 // leaves the scene exactly as it was (its saved image compares equal byte for byte).
 #include "capi_test_support.h"
+#include "saved_state_image.h"
 
 #include <cstdint>
 #include <random>
 
 using namespace capi_test;
+using saved_state_image::kHeaderSize;
+using saved_state_image::reseal;
 
 namespace {
 
@@ -106,34 +109,6 @@ void expect_same_runs(const std::vector<std::vector<unsigned char>>& a,
                       const std::vector<std::vector<unsigned char>>& b) {
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t k = 0; k < a.size(); ++k) ASSERT_TRUE(a[k] == b[k]) << "the runs differ at step " << k;
-}
-
-// The image's checksum (docs/save-restore.md), so that a test can change a value and still
-// get past the checksum to the check of that value.
-uint64_t checksum(const unsigned char* data, std::size_t size) {
-    uint64_t hash = 0xcbf29ce484222325ull;
-    std::size_t i = 0;
-    for (; i + 8 <= size; i += 8) {
-        uint64_t word;
-        std::memcpy(&word, data + i, 8);
-        hash ^= word;
-        hash *= 0x100000001b3ull;
-        hash ^= hash >> 29;
-    }
-    for (; i < size; ++i) {
-        hash ^= data[i];
-        hash *= 0x100000001b3ull;
-    }
-    return hash;
-}
-
-constexpr std::size_t kHeader = 48, kChecksumAt = 32, kSizeAt = 16;
-
-void reseal(std::vector<unsigned char>& image) {
-    const uint64_t size = image.size();
-    std::memcpy(image.data() + kSizeAt, &size, 8);
-    const uint64_t sum = checksum(image.data() + kHeader, image.size() - kHeader);
-    std::memcpy(image.data() + kChecksumAt, &sum, 8);
 }
 
 // Restoring `image` must fail with `status` and a message holding `words`, and change nothing.
@@ -310,19 +285,18 @@ TEST(SaveRestore, BadImagesAreRefusedWithTheSceneUntouched) {
     image[image.size() / 2] ^= 0x10;
     expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "checksum");
     image = good;
-    image[8] = 99;  // the format version
+    image[saved_state_image::kVersionAt] = 99;
     expect_refused(scene.get(), image, ENT_ERROR_VERSION, "format version 99");
-    // The time (the first double of the first section, after its 32-byte header and the
-    // point count) made NaN, resealed: the value check names it.
+    // The time made NaN, resealed: the value check names it.
     image = good;
     const double nan = std::nan("");
-    std::memcpy(image.data() + kHeader + 32 + 4, &nan, 8);
+    std::memcpy(image.data() + saved_state_image::kTimeAt, &nan, 8);
     reseal(image);
     expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "time");
     // A position made infinite, resealed: the last section applied nothing either.
     image = good;
     const double infinite = HUGE_VAL;
-    std::memcpy(image.data() + kHeader + 32 + 4 + 8 + 8 * 5, &infinite, 8);
+    std::memcpy(image.data() + saved_state_image::kPositionsAt + 8 * 5, &infinite, 8);
     reseal(image);
     expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "positions");
 
@@ -407,7 +381,7 @@ TEST(SaveRestore, FuzzedImagesFailCleanly) {
                 image[at] = static_cast<unsigned char>(random());
             }
         }
-        if (kind != 0 && image.size() >= kHeader) reseal(image);
+        if (kind != 0 && image.size() >= kHeaderSize) reseal(image);
         const ent_status status = ent_scene_restore_state(scene.get(), image.data(), image.size());
         if (status != ENT_OK) {
             ASSERT_NE(std::string(ent_last_error()), "") << "trial " << trial;

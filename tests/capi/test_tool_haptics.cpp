@@ -6,7 +6,10 @@
 #include "capi_test_support.h"
 
 #include <array>
+#include <cstring>
 #include <iostream>
+
+#include "../../bench/skin_piles.h"
 
 using namespace capi_test;
 
@@ -47,6 +50,27 @@ ScenePtr bowel_on_floor(double length, uint32_t points, double dt) {
     plane.kind = ENT_OBSTACLE_PLANE;
     EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
     EXPECT_TRUE(step_n(scene.get(), dt, int(std::lround(0.2 / dt))));  // settle
+    return scene;
+}
+
+// The demo's 6 m bowel (240 control points, self-collision, mesentery, in its cavity)
+// settled for 2 s in 1 ms steps (bench/skin_piles.h), made once and saved; each call gives
+// a fresh scene restored to it (to be stepped at any dt).
+ScenePtr settled_pile() {
+    static const std::vector<unsigned char> saved = [] {
+        std::vector<unsigned char> bytes;
+        ScenePtr pile(enteron::bench::settle_pile(enteron::bench::kDemoPile));
+        EXPECT_TRUE(pile) << ent_last_error();
+        if (!pile) return bytes;
+        size_t size = 0;
+        EXPECT_EQ(ent_scene_save_state(pile.get(), nullptr, 0, &size), ENT_OK) << ent_last_error();
+        bytes.resize(size);
+        EXPECT_EQ(ent_scene_save_state(pile.get(), bytes.data(), bytes.size(), &size), ENT_OK) << ent_last_error();
+        return bytes;
+    }();
+    ScenePtr scene = create_json(enteron::bench::kDemoPile.json);
+    if (!scene || saved.empty()) return nullptr;
+    EXPECT_EQ(ent_scene_restore_state(scene.get(), saved.data(), saved.size()), ENT_OK) << ent_last_error();
     return scene;
 }
 
@@ -130,15 +154,16 @@ TEST(ToolHaptics, NoClickAtAReversalWithFriction) {
 }
 
 // The force continuity suite (issue 18): a proxy tool (radius 2.5 mm, max_force 8 N) on
-// the 1 m bowel on the floor, each scenario a path of the commanded tip; the largest change
-// of the rendered force per tick against 5 % of the scenario's peak. The release of a
-// held load is reported but exempt: the weight really lets go.
+// the 1 m bowel on the floor, or in the settled demo pile ("drag"), each scenario a path of
+// the commanded tip; the largest change of the rendered force per tick against 5 % of the
+// scenario's peak. The release of a held load is reported but exempt: the weight really
+// lets go.
 Continuity scenario(const char* name, double dt) {
     Continuity out;
-    ScenePtr scene = bowel_on_floor(1.0, 40, dt);
-    if (!scene) return out;
     const double r = 0.0025, top = 2 * kRadius + r;
     const std::string which = name;
+    ScenePtr scene = which == "drag" ? settled_pile() : bowel_on_floor(1.0, 40, dt);
+    if (!scene) return out;
     // path(t) for t in [0, duration]; grasp and release at given times.
     double duration = 0.0, grasp_at = -1.0, release_at = -1.0;
     auto path = [&](double t, double p[3]) {
@@ -154,12 +179,16 @@ Continuity scenario(const char* name, double dt) {
         } else if (which == "slide") {  // 3 mm in, then 20 cm along the bowel (0.15 m/s at most)
             p[2] = top - 0.003 * smooth(t / 0.1);
             p[0] = -0.1 + 0.2 * smooth((t - 0.2) / 2.0);
+        } else if (which == "drag") {  // down into the coil's free middle, out through its wall (+y)
+            p[2] = 0.1 - 0.2 * smooth(t / 1.0);
+            p[1] = 0.12 * smooth((t - 1.0) / 2.0);
         } else {  // grasp, lift 3 cm (75 mm/s at most), hold, release
             p[2] = top + 0.001 + 0.03 * smooth((t - 0.1) / 0.6);
         }
     };
     if (which == "onset") duration = 0.2;
     if (which == "slide") duration = 2.2;
+    if (which == "drag") duration = 3.2;
     if (which == "grasp" || which == "release") duration = 1.2, grasp_at = 0.05, release_at = 1.0;
     double p[3];
     path(0.0, p);
@@ -203,28 +232,60 @@ Continuity scenario(const char* name, double dt) {
 
 TEST(ToolHaptics, ForceContinuitySuite) {
     std::cout << "| scenario | dt ms | peak N | largest change per tick N | RMS change N | bound (5 % of peak) |\n";
-    for (const char* name : {"onset", "slide", "grasp", "release"}) {
+    for (const char* name : {"onset", "slide", "grasp", "drag", "release"}) {
         for (double dt : {1e-3, 0.5e-3}) {
             const Continuity c = scenario(name, dt);
             std::cout << "| " << name << " | " << dt * 1e3 << " | " << c.peak << " | " << c.largest_change << " | "
                       << c.rms_change << " | " << 0.05 * c.peak << " |\n";
             EXPECT_GT(c.peak, 0.05) << name;
-            // The 5 % bound holds at the onset (and at the reversal, above). Not yet for the
-            // slide (contacts switching between spheres: about 11 % at 1 ms) nor for the grasp
-            // (the spring's first pull: about 12 %); those are printed for the table and
-            // bounded here at what they are measured to be, so that they cannot get worse
-            // unnoticed (docs/haptics.md, "Force continuity").
-            const double bound = std::string(name) == "onset" ? 0.05 : std::string(name) == "release" ? 1.0 : 0.15;
+            // Within 5 % of the peak per tick (docs/haptics.md, "Force continuity"), but for
+            // the release of a held load, which really lets go.
+            const double bound = std::string(name) == "release" ? 1.0 : 0.05;
             EXPECT_LE(c.largest_change, bound * c.peak) << name << ", dt " << dt;
         }
     }
 }
 
+TEST(ToolHaptics, AClosingGraspIsSavedAndRestored) {
+    // A grasp taken 1 mm away closes over the next steps; a second tool never grasps. Saved
+    // mid-closing, restored: the same forces to the bit (the rest length is state).
+    const double dt = 1e-3, r = 0.0025, top = 2 * kRadius + r;
+    ScenePtr scene = bowel_on_floor(1.0, 40, dt);
+    ASSERT_TRUE(scene);
+    const double above[3] = {0.0, 0.0, top + 0.001}, away[3] = {0.3, 0.0, 0.1};
+    add_tool(scene.get(), above, r, 8.0, ENT_TOOL_MODE_PROXY);
+    add_tool(scene.get(), away, r, 8.0, ENT_TOOL_MODE_PROXY);
+    ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK);
+    ASSERT_TRUE(step_n(scene.get(), dt, 5));
+    ASSERT_EQ(feedback(scene.get(), 0).grasping, 1);
+    size_t size = 0;
+    ASSERT_EQ(ent_scene_save_state(scene.get(), nullptr, 0, &size), ENT_OK);
+    std::vector<unsigned char> saved(size);
+    ASSERT_EQ(ent_scene_save_state(scene.get(), saved.data(), saved.size(), &size), ENT_OK) << ent_last_error();
+    const auto run = [&] {
+        std::vector<double> forces;
+        for (int i = 1; i <= 60; ++i) {
+            const double p[3] = {0.0, 0.0, top + 0.001 + 0.0002 * i};
+            EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK);
+            EXPECT_EQ(ent_scene_step(scene.get(), dt), ENT_OK) << ent_last_error();
+            const ent_tool_feedback f = feedback(scene.get(), 0);
+            forces.insert(forces.end(), f.force_N, f.force_N + 3);
+        }
+        return forces;
+    };
+    const std::vector<double> first = run();
+    ASSERT_EQ(ent_scene_restore_state(scene.get(), saved.data(), size), ENT_OK) << ent_last_error();
+    const std::vector<double> again = run();
+    EXPECT_EQ(first, again);
+    EXPECT_GT(std::fabs(first[3 * 59 + 2]), 0.05) << "the grasp held the bowel";
+}
+
 // The closest approach of the tool's surface (the shaft in the scene: the proxy's) to the
 // bowel's axis, m: the distance from the axis to the shaft less the tool's radius.
-double closest_approach(const ent_scene* scene, const double tip[3], double length, double radius) {
-    std::vector<double> points(3 * 400);
-    EXPECT_EQ(ent_scene_axis(scene, 400, points.data()), ENT_OK) << ent_last_error();
+double closest_approach(const ent_scene* scene, const double tip[3], double length, double radius,
+                        uint32_t samples = 400) {
+    std::vector<double> points(3 * samples);
+    EXPECT_EQ(ent_scene_axis(scene, samples, points.data()), ENT_OK) << ent_last_error();
     double closest = 1e9;
     for (std::size_t i = 0; i < points.size(); i += 3) {
         // The shaft rises from the tip along +z (the identity orientation).
@@ -265,6 +326,74 @@ TEST(ToolHaptics, TheProxyNeverPassesThroughTheBowelAndItsForceStaysBounded) {
             EXPECT_GT(largest, 0.05 * std::min(max_force, 5.0)) << "the bowel resisted";
         }
     }
+}
+
+// The issue's sweep: a vertical tool (radius 2.5 mm, 0.3 m long) swept along +y through the
+// settled demo pile at x = 0, its tip 2 cm above the cavity's floor, from the cavity's wall
+// (y = -0.15 m, clear of the pile) to the other (+0.15 m), then held 50 ms. The closest
+// approach of the tool's surface in the scene to the bowel's axis (sampled every 2.5 mm:
+// within 0.1 mm of the true distance) and the largest rendered force.
+struct PileSweep {
+    double closest = 1e9;  // m
+    double largest = 0.0;  // N
+    bool stepped = true;   // every step succeeded
+};
+
+PileSweep sweep_through_pile(int32_t mode, double max_force, double speed) {
+    PileSweep out;
+    const double dt = 1e-3, r = 0.0025, length = 0.3, travel = 0.3;
+    ScenePtr scene = settled_pile();
+    if (!scene) return out;
+    const double from[3] = {0.0, -0.15, -0.13};
+    add_tool(scene.get(), from, r, max_force, mode);
+    const int steps = std::max(1, int(std::lround(travel / speed / dt)));
+    for (int i = 1; i <= steps + 50; ++i) {
+        const double p[3] = {from[0], from[1] + travel * std::min(i, steps) / steps, from[2]};
+        EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK) << ent_last_error();
+        if (ent_scene_step(scene.get(), dt) != ENT_OK) {
+            out.stepped = false;
+            break;
+        }
+        const ent_tool_feedback f = feedback(scene.get(), 0);
+        out.largest = std::max(out.largest, norm3(f.force_N));
+        out.closest = std::min(out.closest, closest_approach(scene.get(), f.proxy_position_m, length, r, 2400));
+    }
+    return out;
+}
+
+void print_sweep(double speed, double max_force, const char* mode, const PileSweep& s) {
+    std::cout << "| " << speed << " | " << max_force << " | " << mode << " | " << s.closest / kRadius
+              << (s.stepped ? "" : " (a step failed)") << " | " << s.largest << " |\n";
+}
+
+TEST(ToolHaptics, TheProxyNeverEntersTheSettledPileAtAnySpeed) {
+    std::cout << "| speed m/s | max_force N | mode | closest approach to the axis, R | largest force N |\n";
+    for (double max_force : {5.0, 50.0}) {
+        for (double speed : {0.1, 0.5, 2.0, 5.0}) {
+            const PileSweep proxy = sweep_through_pile(ENT_TOOL_MODE_PROXY, max_force, speed);
+            print_sweep(speed, max_force, "proxy", proxy);
+            // Issue 18: the tool's surface never closer to the axis than 0.8 R (into the tube
+            // less than 0.2 R), the force within its bound.
+            EXPECT_TRUE(proxy.stepped) << ent_last_error();
+            EXPECT_GE(proxy.closest, 0.8 * kRadius) << speed << " m/s, " << max_force << " N";
+            EXPECT_LE(proxy.largest, max_force * (1 + 1e-9)) << speed << " m/s, " << max_force << " N";
+            EXPECT_GT(proxy.largest, 0.05 * max_force) << "the pile resisted";
+        }
+        // The sweep finds what it measures: the capsule where the device puts it (direct
+        // mode, the behaviour before the proxy) goes through the tube.
+        const PileSweep direct = sweep_through_pile(ENT_TOOL_MODE_DIRECT, max_force, 5.0);
+        print_sweep(5.0, max_force, "direct", direct);
+        EXPECT_LT(direct.closest, 0.8 * kRadius) << max_force << " N";
+    }
+}
+
+// The rest of the table of docs/haptics.md (the direct tool at every speed), run by hand:
+//   enteron_capi_tests --gtest_also_run_disabled_tests --gtest_filter='ToolHaptics.*SettledPile*'
+TEST(ToolHaptics, DISABLED_SettledPileSweepInDirectMode) {
+    std::cout << "| speed m/s | max_force N | mode | closest approach to the axis, R | largest force N |\n";
+    for (double max_force : {5.0, 50.0})
+        for (double speed : {0.1, 0.5, 2.0, 5.0})
+            print_sweep(speed, max_force, "direct", sweep_through_pile(ENT_TOOL_MODE_DIRECT, max_force, speed));
 }
 
 TEST(ToolHaptics, DirectModeStillPassesThroughAtSpeed) {

@@ -174,11 +174,11 @@ void add_obstacle(Bytes& in, ent_scene* scene) {
 // The calls of moving anatomy, between steps. None moves the bowel by itself.
 void anatomy_call(Bytes& in, ent_scene* scene) {
     const uint8_t what = in.u8();
-    // Bits 0-3: the call; bits 4-5: obstacle 0-2 or none (-1); bit 7: an arbitrary id instead.
+    // what % 11: the call; bits 4-5: obstacle 0-2 or none (-1); bit 7: an arbitrary id instead.
     const int32_t obstacle = what & 0x80 ? static_cast<int32_t>(in.u32()) : int32_t((what >> 4) % 4) - 1;
     const std::vector<double> before = control_points(scene);
     ent_status status = ENT_OK;
-    switch (what % 10) {
+    switch (what % 11) {
         case 0: {
             double position[3], orientation[4] = {1.0, 0.0, 0.0, 0.0};
             for (double& p : position) p = in.number(0.01) - 0.01;
@@ -205,6 +205,7 @@ void anatomy_call(Bytes& in, ent_scene* scene) {
         case 5: status = ent_scene_pin_point(scene, in.u8() % 40, obstacle); break;
         case 6: status = ent_scene_unpin_point(scene, in.u8() % 40); break;
         case 7: status = ent_scene_attach_mesentery(scene, obstacle); break;
+        case 10: status = ent_scene_attach_clamped_end(scene, int32_t(in.u8() % 5), obstacle); break;
         case 8: {
             double position[3], orientation[4];
             status = ent_obstacle_pose(scene, obstacle, position, orientation);

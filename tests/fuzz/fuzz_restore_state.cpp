@@ -10,6 +10,7 @@
 #include <enteron/enteron.h>
 
 #include "fuzz_bytes.h"
+#include "saved_state_image.h"
 
 #include <cmath>
 #include <cstdint>
@@ -24,29 +25,6 @@ const char kScene[] =
     " \"gravity\": [0, 0, -9.81], \"damping\": {}, \"mesentery\": {}, \"self_collision\": {},"
     " \"environment\": [{\"type\": \"plane\", \"point\": [0, 0, -0.06], \"normal\": [0, 0, 1]}],"
     " \"tools\": [{\"radius\": 0.004, \"position\": [0, 0, 0.05]}]}";
-
-// The saved state's header (docs/scoring-and-state.md): 48 bytes, the checksum of the body
-// at byte 32. The checksum is FNV-1a over the body's 64-bit words, as the library makes it,
-// written out here so that the fuzzer can forge images whose damage lies past the header.
-constexpr size_t kHeaderSize = 48;
-constexpr size_t kChecksumAt = 32;
-
-uint64_t body_checksum(const unsigned char* data, size_t size) {
-    uint64_t hash = 0xcbf29ce484222325ull;
-    size_t i = 0;
-    for (; i + 8 <= size; i += 8) {
-        uint64_t word;
-        std::memcpy(&word, data + i, sizeof word);
-        hash ^= word;
-        hash *= 0x100000001b3ull;
-        hash ^= hash >> 29;
-    }
-    for (; i < size; ++i) {
-        hash ^= data[i];
-        hash *= 0x100000001b3ull;
-    }
-    return hash;
-}
 
 std::vector<unsigned char> saved_state(ent_scene* scene) {
     size_t size = 0;
@@ -91,10 +69,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             const uint32_t offset = bytes.u32();
             image[offset % image.size()] = bytes.u8();
         }
-        if (reseal) {
-            const uint64_t checksum = body_checksum(image.data() + kHeaderSize, image.size() - kHeaderSize);
-            std::memcpy(image.data() + kChecksumAt, &checksum, sizeof checksum);
-        }
+        // Only the checksum: a patched size field stays patched.
+        if (reseal) saved_state_image::seal_checksum(image.data(), image.size());
     }
 
     const std::vector<unsigned char> before = saved_state(fixture.scene);

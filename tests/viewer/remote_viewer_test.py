@@ -202,9 +202,12 @@ def main():
           (summary["states"], summary["rejected"], sent[0], summary["commands"], summary["moved_m"], share, changed,
            accepted[-1]))
 
-    # 2. The server's own mesh.
+    # 2. The server's own mesh; half way, the skin hidden (key K) and the collision spheres
+    # shown (key S).
     server, log = start_server(work, "server_mesh", ["--mesh-hz", "5", "--mesh-skin", "convolution"])
-    done = run_viewer(work, ["--seconds", "2", "--screenshot", "mesh.png"])
+    with open(os.path.join(work, "spheres.script"), "w") as f:
+        f.write("2.0 screenshot no_spheres.png\n2.1 key K\n2.1 key S\n")
+    done = run_viewer(work, ["--seconds", "3", "--script", "spheres.script", "--screenshot", "mesh.png"])
     stop_server(server, log)
     if done.returncode != 0:
         fail("the viewer (mesh) exited with status %d" % done.returncode)
@@ -213,7 +216,18 @@ def main():
         fail("no mesh arrived, or a viewer that only watched sent commands: %s" % summary)
     if "skin convolution" not in done.stdout:
         fail("the picture is not the server's convolution mesh")
-    check_bowel(os.path.join(work, "mesh.png"), "the server's mesh")
+    # A viewer that only watches commands nothing: the server says so in the tool's status bits.
+    if "tool 0 status: no command" not in done.stdout:
+        fail("the server's STATUS_NO_COMMAND for tool 0 is not shown")
+    # The spheres (translucent blue, the state's axis resampled at their count) are where
+    # the bowel was: its pixels turn blue (without them, the grey floor would show).
+    _, pink, _, _ = colour_classes(os.path.join(work, "no_spheres.png"))
+    _, _, blue, _ = colour_classes(os.path.join(work, "mesh.png"))
+    covered = blue[pink].mean()
+    print("viewer.remote_lcm: collision spheres cover %.2f of where the bowel was" % covered)
+    if covered < 0.3:
+        fail("no collision spheres drawn where the bowel is (%.2f of its pixels blue)" % covered)
+    check_bowel(os.path.join(work, "no_spheres.png"), "the server's mesh")
 
     # 3. Nobody there.
     done = run_viewer(work, ["--seconds", "0.5"])

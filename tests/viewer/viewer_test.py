@@ -19,6 +19,7 @@ from PIL import Image
 
 VIEWER = os.environ.get("ENTERON_VIEWER", "enteron-viewer")
 WIDTH, HEIGHT = 1280, 720
+ABDOMEN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples", "scenes", "abdomen.json")
 
 
 def colour_classes(path):
@@ -32,6 +33,17 @@ def colour_classes(path):
     blue = (b == high) & (saturation > 0.2) & (high > 0.2) & (b > r * 1.15)
     error_red = (r > 0.8) & (g < 0.55) & (b < 0.5)
     return rgb, pink, blue, error_red
+
+
+def organ_classes(path):
+    """The abdomen scene's organ colours (renderer.cpp, organ_mesh_material) as masks: the
+    liver's red-brown (red, and blue well under green where the bowel's pink has them
+    about equal), the stomach's bright pale orange (green near red, blue under green)."""
+    rgb = numpy.asarray(Image.open(path).convert("RGB"), dtype=numpy.float64) / 255.0
+    r, g, b = rgb[..., 0], rgb[..., 1], rgb[..., 2]
+    liver = (r > 0.2) & (g < 0.55 * r) & (b < 0.8 * g)
+    stomach = (r > 0.6) & (g > 0.7 * r) & (g < 0.92 * r) & (b < 0.88 * g)
+    return liver, stomach
 
 
 class ViewerTest(unittest.TestCase):
@@ -163,6 +175,27 @@ class ViewerTest(unittest.TestCase):
                                         self.path(video)], capture_output=True, text=True, check=True)
                 self.assertEqual(probe.stdout.strip().split(",")[:3], ["320", "180", "10"], probe.stdout)
 
+    def test_headless_abdomen_scene(self):
+        """The abdomen scene (organ meshes) headless, with its motion: the liver, the
+        stomach and the bowel are all in the picture, and the liver is drawn where it is
+        now: after the retractor lifted it 4 cm (1 to 1.5 s) its pixels are higher up."""
+        frames = self.path("frames")
+        status, out, err = self.run_viewer([ABDOMEN, "--headless", "--seconds", "2", "--fps", "5", "--size", "640x360",
+                                            "--ui", "none", "--frames", frames], window=False)
+        self.assertEqual(status, 0, err)
+        self.assertEqual(self.summary(out)["failures"], 0)
+        before, after = (os.path.join(frames, "frame_%05d.png" % k) for k in (4, 10))  # t = 0.8 s, 2.0 s
+        _, pink, _, _ = colour_classes(after)
+        self.assertGreater(pink.mean(), 0.02, "too little of the bowel's pink")
+        top = {}
+        for name, frame in (("before", before), ("after", after)):
+            liver, stomach = organ_classes(frame)
+            self.assertGreater(liver.sum(), 300, "no liver in the %s frame" % name)
+            self.assertGreater(stomach.sum(), 300, "no stomach in the %s frame" % name)
+            top[name] = numpy.percentile(numpy.nonzero(liver)[0], 2)  # its top edge (the bowel may hide its foot)
+        # 4 cm up is about 20 pixels at this distance and size; the image's rows grow downwards.
+        self.assertGreater(top["before"] - top["after"], 8.0, "the liver did not move up: top rows %s" % top)
+
     def test_bad_scene_headless(self):
         """A scene file the library refuses: the message naming the key, exit status 1,
         nothing written."""
@@ -173,6 +206,11 @@ class ViewerTest(unittest.TestCase):
         self.assertIn("intestine.radius must be > 0, got -1", err)
         self.assertIn("ENT_ERROR_INVALID_SCENE", err)
         self.assertFalse(os.path.exists(self.path("x.png")))
+        # A script that moves an obstacle the scene does not have (the abdomen's liver on
+        # the demo scene, whose one obstacle is the cavity): refused when the scene opens.
+        status, out, err = self.run_viewer(["--script", "abdomen", "--headless", "--seconds", "1"], window=False)
+        self.assertEqual(status, 1)
+        self.assertIn("the script moves obstacle 1, the scene has 1", err)
 
     def test_bad_scene_window(self):
         """In a window the same error is on the screen: the status line's red text along the
@@ -205,10 +243,12 @@ class ViewerTest(unittest.TestCase):
     def test_bad_command_line(self):
         """Mistakes on the command line or in a script: a message naming them, status 2."""
         script = self.write("bad_script.txt", "0.5 mouse 10 20\n")
+        obstacle_script = self.write("bad_obstacle.txt", "0.5 obstacle 1 0 0\n")
         for args, message in ((["--seconds", "x"], "--seconds wants a number"),
                               (["--headless"], "--headless needs --seconds"),
                               (["--video", "a.avi", "--headless", "--seconds", "1"], "--video wants a .mp4 or .gif"),
                               (["--script", script], "bad_script.txt:1: mouse wants X Y down|up"),
+                              (["--script", obstacle_script], "bad_obstacle.txt:1: obstacle wants an obstacle number"),
                               (["--lcm", "memq://", "scene.json"], "--lcm shows the server's scene"),
                               (["--channel-suffix", "_A"], "--channel-suffix goes with --lcm"),
                               (["--lcm", "memq://", "--script", "demo"], "mouse lines, not tool lines")):

@@ -515,7 +515,7 @@ class Scene(OwnedHandle):
 
     # ---- save and restore (driving calls) ----------------------------------------------------
     def save_state(self):
-        """The whole state of the scene as bytes (ent_scene_save_state; docs/save-restore.md):
+        """The whole state of the scene as bytes (ent_scene_save_state; docs/scoring-and-state.md):
         restore_state(state), into this scene or one made from the same description, continues
         bit for bit as this one would."""
         size = ctypes.c_size_t()

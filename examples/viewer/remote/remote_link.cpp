@@ -6,6 +6,7 @@
 #include <lcmtypes/enteron_scene_state_t.h>
 #include <lcmtypes/enteron_session_t.h>
 #include <lcmtypes/enteron_tool_command_t.h>
+#include <lcmtypes/enteron_tool_feedback_t.h>
 
 #include <Eigen/Geometry>
 
@@ -16,6 +17,24 @@
 #include <exception>
 
 namespace viewer {
+
+std::string describe_tool_status(std::int32_t status) {
+    static const std::pair<std::int32_t, const char*> names[] = {
+        {ENTERON_TOOL_FEEDBACK_T_STATUS_STALE, "stale"},
+        {ENTERON_TOOL_FEEDBACK_T_STATUS_NO_COMMAND, "no command"},
+        {ENTERON_TOOL_FEEDBACK_T_STATUS_FORCE_LIMITED, "force limited"},
+        {ENTERON_TOOL_FEEDBACK_T_STATUS_RATE_LIMITED, "rate limited"},
+        {ENTERON_TOOL_FEEDBACK_T_STATUS_UNSTABLE, "unstable"},
+        {ENTERON_TOOL_FEEDBACK_T_STATUS_FORCE_DISABLED, "force disabled"}};
+    std::string words;
+    for (const auto& [bit, name] : names) {
+        if ((status & bit) == 0) continue;
+        words += (words.empty() ? "" : ", ") + std::string(name);
+        status &= ~bit;
+    }
+    if (status != 0) words += (words.empty() ? "" : ", ") + std::string("bits ") + std::to_string(status);
+    return words;
+}
 
 namespace {
 

@@ -34,6 +34,10 @@ struct RemoteTool {
     std::int32_t status = 0;  // tool_feedback_t STATUS_* bits
 };
 
+// The STATUS_* bits set in status, in words, comma-separated ("" for none; an unknown bit
+// by its value).
+std::string describe_tool_status(std::int32_t status);
+
 // A scene_state_t that passed the checks.
 struct RemoteState {
     std::int64_t tick = 0;

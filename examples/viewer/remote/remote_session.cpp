@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "axis_samples.h"
+
 namespace viewer {
 
 namespace {
@@ -190,7 +192,9 @@ void RemoteSession::read(const FrameRequest& request, FrameState& frame) {
 
     frame.axis_xyz_m.clear();
     frame.control_points_xyz_m.clear();
-    frame.spheres_xyz_m.clear();  // the spheres' centres are not in the stream
+    // The spheres' centres are not in the stream: the axis resampled at their count.
+    frame.spheres_xyz_m.clear();
+    if (request.spheres) resample_evenly(state_.axis_m, layout_.collision_spheres, frame.spheres_xyz_m);
     if (request.axis) frame.axis_xyz_m = state_.axis_m;
     if (request.control_points) frame.control_points_xyz_m = state_.control_points_m;
 
@@ -206,6 +210,10 @@ void RemoteSession::read(const FrameRequest& request, FrameState& frame) {
     link.commands_sent = counters.commands_sent.load();
     link.last_rejection = last_rejection_;
     link.tool0_largest_move_m = tool0_largest_move_m_;
+    for (std::string& status : link.tool_status) status.clear();
+    for (const RemoteTool& tool : state_.tools)
+        if (tool.tool >= 0 && static_cast<std::uint32_t>(tool.tool) < kMaxTools)
+            link.tool_status[tool.tool] = describe_tool_status(tool.status);
     std::copy(outgoing_.commands.target[0].position_m, outgoing_.commands.target[0].position_m + 3, link.tool0_sent_m);
     if (!state_.tools.empty() && state_.tools[0].tool == 0)
         std::copy(state_.tools[0].commanded.position_m, state_.tools[0].commanded.position_m + 3, link.tool0_commanded_m);

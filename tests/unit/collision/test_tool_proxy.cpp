@@ -87,6 +87,50 @@ TEST(ToolProxy, PressedFarIntoTheBowelItStopsOnItsSurfaceWithinMaxForce) {
     }
 }
 
+TEST(ToolProxy, FromAColdStartFarInsideTheBowelItComesOutBalanced) {
+    // A tool added (or its proxy restored) deep inside the bowel: Newton starts far from the
+    // balance, among contacts pushing many times max_force, where the contacts' negative
+    // stiffness about a sphere's centre draws plain Newton to a balance inside the tube or
+    // stalls it on a kink. Wherever it starts and wherever the device is (held there), the
+    // first solve balances the forces or the next ticks' solves, each from where the last
+    // left the proxy (as the tools effect does), finish the job within kTicks.
+    constexpr int kTicks = 10;
+    ToolProxy proxy(std::pmr::new_delete_resource());
+    const double reach = kToolRadius + kBowelRadius;
+    int cases = 0, first_solve = 0, most_ticks = 0;
+    for (double max_force : {5.0, 50.0}) {
+        for (const Vec3& velocity : {Vec3::Zero().eval(), Vec3(0.02, 0.0, -0.01)}) {
+            const std::pmr::vector<ProxyCandidate> spheres = row(velocity);
+            for (double x : {0.0, 0.0011, 0.0031}) {
+                for (double y : {0.0, 0.002, 0.006, 0.012}) {
+                    for (double z : {reach - 0.002, reach - 0.006, 0.008, 0.003, 0.0, -0.004, -0.012}) {
+                        for (double device_z : {z, z - 0.05, z + 0.05}) {
+                            ProxyProblem p = problem(Vec3(x, y, device_z), max_force);
+                            p.start = Vec3(x, y, z);
+                            p.target_velocity = Vec3::Zero();
+                            ProxyResult r;
+                            int tick = 0;
+                            for (; tick < kTicks; ++tick) {
+                                r = proxy.solve(p, spheres);
+                                p.start = r.position;
+                                if (r.residual <= ToolProxy::kTolerance * max_force) break;
+                            }
+                            ++cases;
+                            first_solve += tick == 0;
+                            most_ticks = std::max(most_ticks, tick + 1);
+                            EXPECT_LE(r.residual, ToolProxy::kTolerance * max_force)
+                                << "start " << Vec3(x, y, z).transpose() << ", device z " << device_z << ", max_force "
+                                << max_force << ": " << r.iterations << " iterations";
+                        }
+                    }
+                }
+            }
+        }
+    }
+    std::cout << "[ proxy cold starts ] " << cases << " starts: " << first_solve << " balanced by the first solve, the rest within "
+              << most_ticks << " ticks\n";
+}
+
 TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
     ToolProxy proxy(std::pmr::new_delete_resource());
     struct Case {
