@@ -11,17 +11,30 @@
 
 namespace enteron::mechanics {
 
+// The work buffers of a linearised implicit substep, sized once (implicit Euler's, and
+// bdf2's, which takes its first-order substeps with implicit_euler_step).
+struct ImplicitWork {
+    ImplicitWork(const AxisModel& model, std::pmr::memory_resource* memory);
+    SystemMatrix system;
+    AxialBlocks axial;  // the stretch and axial damping blocks, added to system together
+    std::pmr::vector<double> rhs;                       // F, then h (F - h H v), then dv
+    std::pmr::vector<double> stiffness_times_velocity;  // H v
+};
+
+// One implicit Euler substep of h seconds (the formula above). False if the system could
+// not be solved (the state is then unspecified).
+bool implicit_euler_step(Dynamics& dynamics, State& state, double h, ImplicitWork& work);
+
 class ImplicitEuler final : public Integrator {
 public:
-    ImplicitEuler(const AxisModel& model, std::pmr::memory_resource* memory);
-    bool step(Dynamics& dynamics, State& state, double h) override;
+    ImplicitEuler(const AxisModel& model, std::pmr::memory_resource* memory) : work_(model, memory) {}
+    bool step(Dynamics& dynamics, State& state, double h) override {
+        return implicit_euler_step(dynamics, state, h, work_);
+    }
     double stability_interval() const override { return std::numeric_limits<double>::infinity(); }
 
 private:
-    SystemMatrix system_;
-    AxialBlocks axial_;  // the stretch and axial damping blocks, added to system_ together
-    std::pmr::vector<double> rhs_;                       // F, then h (F - h H v), then dv
-    std::pmr::vector<double> stiffness_times_velocity_;  // H v
+    ImplicitWork work_;
 };
 
 }  // namespace enteron::mechanics

@@ -73,12 +73,12 @@ std::string demo_bowel(const std::string& integrator, double timestep_s, double 
 // The 6 m bowel, no mesentery, dropped as a tall narrow helix (radius 4 cm, 24 turns, 60 cm
 // high) into an open-top cube of 12 cm: the floor and four walls as planes, so the bowel
 // piles above the rim as it must (its 2.9 L do not fit in the cube's 1.7 L).
-std::string dropped_bowel(const std::string& tools = "") {
+std::string dropped_bowel(const std::string& integrator, const std::string& tools = "") {
     return R"({
   "intestine": {"length": 6.0, "radius": 0.0125, "control_points": 240, "linear_density": 0.3,
                 "stretch_stiffness": 100, "bend_stiffness": 2.5e-3,
                 "shape": {"kind": "helix", "center": [0, 0, -0.0475], "helix_radius": 0.04, "helix_pitch": 0.025}},
-  "solver": {"integrator": "implicit_euler", "timestep": 0.001},
+  "solver": {"integrator": ")" + integrator + R"(", "timestep": 0.001},
   "gravity": [0, 0, -9.81],
   "damping": {},
   "environment": [
@@ -120,7 +120,7 @@ std::vector<double> resample(const std::vector<double>& polyline, uint32_t n, do
 // in 8 layers of 8 legs, 13.6 mm apart, every centre inside the cube by R. Its 2.9 L cannot
 // fit in the cube's 1.7 L, so neighbouring legs overlap by 11.4 mm (0.9 R) at the start and
 // must keep overlapping: the contacts and the walls hold a compressed pile.
-ent_scene* packed_in_closed_cube() {
+ent_scene* packed_in_closed_cube(int32_t integrator) {
     constexpr double half = 0.06, inner = half - kRadius;
     constexpr int legs = 8;
     constexpr double spacing = 2.0 * inner / (legs - 1);
@@ -134,7 +134,7 @@ ent_scene* packed_in_closed_cube() {
         }
     }
     const std::vector<double> points = resample(polyline, 240, 6.0);
-    ent_scene_desc desc = base_desc(ENT_INTEGRATOR_IMPLICIT_EULER, 240, 6.0);
+    ent_scene_desc desc = base_desc(integrator, 240, 6.0);
     desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
     desc.shape = ENT_SHAPE_POINTS;
     desc.shape_points_xyz_m = points.data();
@@ -234,9 +234,9 @@ std::vector<HardCase> make_cases() {
     // name, what, dt, penetration bound, settle, energy allowance, make, drive
     return {
         {"dense_pile", "6 m bowel dropped into an open-top 12 cm cube, self-colliding", 1e-3, kSettled, 0.0, kEnergy,
-         [] { return from_json(dropped_bowel()); }, nullptr},
+         [] { return from_json(dropped_bowel("implicit_euler")); }, nullptr},
         {"dense_pile_closed", "6 m bowel (2.9 L) packed into a closed 12 cm cube (1.7 L)", 1e-3, kCentresApart, 1.0,
-         kEnergy, [] { return packed_in_closed_cube(); }, nullptr},
+         kEnergy, [] { return packed_in_closed_cube(ENT_INTEGRATOR_IMPLICIT_EULER); }, nullptr},
         {"stiff_rk4", "hanging 6 m bowel, stretch stiffness 100x (1e4 N), rk4 at 1 ms", 1e-3, 0.0, 0.0, kEnergy,
          [] { return from_json(demo_bowel("rk4", 1e-3, 1e4, false)); }, nullptr},
         // Symplectic Euler's energy oscillates (boundedly) about the true one: 2.9 mJ measured.
@@ -272,7 +272,7 @@ std::vector<HardCase> make_cases() {
         // the cavity's and the folds' contacts to it too. Energy: the tools' work is in the
         // budget.
         {"fast_tool_sweep", "a tool sweeping at 10 m/s through the pile of dense_pile, back and forth", 1e-3,
-         kToolReach, 0.0, kEnergy, [] { return from_json(dropped_bowel(kSweepTool)); },
+         kToolReach, 0.0, kEnergy, [] { return from_json(dropped_bowel("implicit_euler", kSweepTool)); },
          [] {
              const double tip[3] = {-0.045, 0.0, -0.045};
              return make_sweep(10.0, -0.045, 0.045, tip);
@@ -283,10 +283,18 @@ std::vector<HardCase> make_cases() {
         {"teleport", "demo bowel, a tool put on a control point within one step every 0.5 s", 1e-3, kToolReach, 0.0,
          kEnergy, [] { return from_json(demo_bowel("implicit_euler", 1e-3, 100, true, kTool)); },
          [] { return make_teleport(0.5, kToolMaxForce); }},
-        // bdf2 (issue 21) where it holds implicit Euler's bounds. It does not in the contact
-        // cases (measured, docs/accuracy.md): dense_pile 6.251 mm penetration at t = 0.115 s
-        // (bound 6.25 mm), large_steps unstable at t = 0.1 s (+8 J in a 50 ms step, mostly
-        // self-contact), degenerate +2.61 J at t = 3 ms (allowance 2 J).
+        // bdf2 (issue 21): every case of implicit Euler's above, with its bounds. Before its
+        // order reduction (lib/mechanics/bdf2.h) it failed three: dense_pile 6.251 mm
+        // penetration at t = 0.115 s, large_steps unstable at t = 0.1 s (+8 J in a 50 ms
+        // step, mostly self-contact), degenerate +2.61 J at t = 3 ms (docs/accuracy.md#bdf2).
+        {"dense_pile_bdf2", "dense_pile with bdf2", 1e-3, kSettled, 0.0, kEnergy,
+         [] { return from_json(dropped_bowel("bdf2")); }, nullptr},
+        {"dense_pile_closed_bdf2", "dense_pile_closed with bdf2", 1e-3, kCentresApart, 1.0, kEnergy,
+         [] { return packed_in_closed_cube(ENT_INTEGRATOR_BDF2); }, nullptr},
+        {"large_steps_bdf2", "large_steps_implicit_euler with bdf2", 0.05, kLargeStep, 0.0, 0.6,
+         [] { return from_json(demo_bowel("bdf2", 0.05, 100, true)); }, nullptr},
+        {"degenerate_bdf2", "degenerate_implicit_euler with bdf2", 1e-3, kCentresApart, 0.5, 2.0,
+         []() -> S { return degenerate(ENT_INTEGRATOR_BDF2, true); }, nullptr},
         {"overstretched_bdf2", "overstretched_implicit_euler with bdf2", 1e-3, 0.0, 0.0, kEnergy,
          []() -> S { return overstretched(ENT_INTEGRATOR_BDF2); }, nullptr},
         {"collapsed_bdf2", "collapsed_implicit_euler with bdf2", 1e-3, 0.0, 0.0, kEnergy,
@@ -294,6 +302,15 @@ std::vector<HardCase> make_cases() {
         {"yank_bdf2", "yank with bdf2", 1e-3, kToolReach, 0.0, kEnergy,
          [] { return from_json(demo_bowel("bdf2", 1e-3, 100, true, kTool)); },
          [] { return make_yank(2.0, 1.0, 0.5, kToolMaxForce); }},
+        {"fast_tool_sweep_bdf2", "fast_tool_sweep with bdf2", 1e-3, kToolReach, 0.0, kEnergy,
+         [] { return from_json(dropped_bowel("bdf2", kSweepTool)); },
+         [] {
+             const double tip[3] = {-0.045, 0.0, -0.045};
+             return make_sweep(10.0, -0.045, 0.045, tip);
+         }},
+        {"teleport_bdf2", "teleport with bdf2", 1e-3, kToolReach, 0.0, kEnergy,
+         [] { return from_json(demo_bowel("bdf2", 1e-3, 100, true, kTool)); },
+         [] { return make_teleport(0.5, kToolMaxForce); }},
     };
 }
 
