@@ -168,8 +168,11 @@ void Dynamics::factor_clamped_mass() {
 bool Dynamics::prescribe(State& state, double dt) {
     if (!pinned_) return false;
     const bool moving = pinned_->prescribe(state, dt);
-    if (clamped_ && clamped_->prescribe(state, dt, pinned_->speed_limit())) factor_clamped_mass();
-    return moving;
+    // A turning clamp changes control point 1's velocity: the stability guard's reference
+    // must be taken again, as for a moving pin.
+    const bool turned = clamped_ && clamped_->prescribe(state, dt, pinned_->speed_limit());
+    if (turned) factor_clamped_mass();
+    return moving || turned;
 }
 
 void Dynamics::acceleration(const State& state, double* acceleration) {

@@ -88,7 +88,7 @@ public:
     // Before each attempt: the velocities of the points pinned to moving frames
     // (pinned_points.h), then the turn of the clamped ends attached to frames
     // (clamped_ends.h; the clamped mass matrix is factored again when one turned). True if
-    // one of those velocities is not zero.
+    // one of those velocities is not zero or a clamp changed one.
     bool prescribe(State& state, double dt);
     // The clamps, or null.
     ClampedEnds* clamps() { return clamped_.get(); }
