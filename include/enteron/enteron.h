@@ -699,8 +699,10 @@ ENT_API ent_status ent_scene_set_gravity(ent_scene* scene, const double gravity_
  * again moves it to the new frame. ENT_EFFECT_PINNED turns on with the first pin.
  * Thread: the driving thread, between steps; allocates, refactors the mass matrix (about
  * as long as one step).
- * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, control_point out of range);
- *         ENT_ERROR_NOT_FOUND (no such obstacle); ENT_ERROR_BUSY.
+ * A clamped end's end point (ent_scene_desc.clamped_ends) moves with its clamp only:
+ * attach it with ent_scene_attach_clamped_end.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, control_point out of range, a clamped
+ *         end's end point); ENT_ERROR_NOT_FOUND (no such obstacle); ENT_ERROR_BUSY.
  */
 ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point, int32_t obstacle);
 
@@ -708,8 +710,8 @@ ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point,
  * Lets a pinned control point go (a surgeon frees a loop), from the next step on.
  * Refactors the mass matrix (allocates; about as long as one step).
  * Thread: the driving thread, between steps.
- * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range); ENT_ERROR_NOT_FOUND (the
- *         point is not pinned); ENT_ERROR_BUSY.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range, a clamped end's end point,
+ *         which its clamp holds); ENT_ERROR_NOT_FOUND (the point is not pinned); ENT_ERROR_BUSY.
  */
 ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_point);
 
