@@ -334,13 +334,14 @@ TEST(ToolHaptics, TheProxyNeverPassesThroughTheBowelAndItsForceStaysBounded) {
 }
 
 // Where the proxy is not solved with the bowel (both ends clamped; bdf2's second-order
-// substeps) minus what the bowel received could exceed max_force (docs/haptics.md "The
-// wrench"): the reported force is clipped to it. The fast sweeps of the test above.
+// substeps) minus what the bowel received can exceed max_force (docs/haptics.md "The
+// wrench"): the reported force is clipped to it. The sweep of the test above, faster: with
+// bdf2 at 10 m/s minus what the bowel received reached 5.035 N against 5 N before the clip.
 TEST(ToolHaptics, TheReportedForceNeverExceedsMaxForceWithClampedEndsOrBdf2) {
     const double dt = 1e-3, r = 0.0025, max_force = 5.0;
     for (const auto& [integrator, clamped] : {std::pair{ENT_INTEGRATOR_BDF2, ENT_PIN_NONE},
                                               std::pair{ENT_INTEGRATOR_IMPLICIT_EULER, ENT_PIN_BOTH}}) {
-        for (double speed : {2.0, 5.0}) {
+        for (double speed : {2.0, 5.0, 10.0}) {
             SCOPED_TRACE(std::to_string(integrator) + " clamped " + std::to_string(clamped) + ", " +
                          std::to_string(speed) + " m/s");
             ScenePtr scene = bowel_on_floor(0.6, 25, dt, integrator, clamped);
