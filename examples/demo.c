@@ -382,10 +382,8 @@ int main(int argc, char** argv) {
         }
         if (motion->obstacle >= 0) {
             /* The retractor: the organ's pose at the end of this step. */
-            double offset[3], to[3];
-            path_at(motion->obstacle_keys, motion->obstacle_key_count, (double)step * STEP_S, offset);
-            for (i = 0; i < 3; ++i) to[i] = obstacle_start_m[i] + offset[i];
-            status = ent_obstacle_set_pose(scene, motion->obstacle, to, obstacle_orientation);
+            status = obstacle_follow_path(scene, motion->obstacle, obstacle_start_m, obstacle_orientation,
+                                          motion->obstacle_keys, motion->obstacle_key_count, (double)step * STEP_S);
             if (status != ENT_OK) {
                 ent_scene_destroy(scene);
                 return report_failure("ent_obstacle_set_pose", status);
