@@ -53,10 +53,8 @@ int main(int argc, char** argv) {
     for (int i = 1; i <= steps && code == 0; ++i) {
         const double t = i * STEP_S;
         /* The retractor and the grasper (abdomen_motion.h). */
-        double lift[3], tip[3];
-        path_at(abdomen_liver_keys, ABDOMEN_LIVER_KEY_COUNT, t, lift);
-        const double liver_to[3] = {liver_at[0] + lift[0], liver_at[1] + lift[1], liver_at[2] + lift[2]};
-        status = ent_obstacle_set_pose(scene, LIVER, liver_to, orientation);
+        double tip[3];
+        status = obstacle_follow_path(scene, LIVER, liver_at, orientation, abdomen_liver_keys, ABDOMEN_LIVER_KEY_COUNT, t);
         if (status != ENT_OK) return failed("ent_obstacle_set_pose", status);
         path_at(abdomen_tool_keys, ABDOMEN_TOOL_KEY_COUNT, t, tip);
         const double upright[4] = {1.0, 0.0, 0.0, 0.0};

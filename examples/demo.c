@@ -15,7 +15,7 @@
  * With --scene FILE it runs a scene file instead (its mesh files found next to it) with
  * that scene's motion (demo_scene.h): examples/scenes/abdomen.json, the bowel among organ
  * meshes, gets the retractor that lifts the liver and the grasper of abdomen_motion.h; any
- * other file gets the demo's tool path.
+ * other file gets the demo's tool path for its tool 0 (a scene without tools just runs).
  *
  * Usage: enteron_demo [--seconds S] [--out DIR] [--scene FILE]
  *   --seconds S  simulated time, s (default 5)
@@ -274,6 +274,7 @@ int main(int argc, char** argv) {
     const char* out_dir = "out";
     const char* scene_path = NULL;  /* NULL: the demo scene */
     const demo_motion* motion;
+    int32_t tools = 0; /* a scene file may have none: then no tool path and no force column */
     double obstacle_start_m[3] = {0.0, 0.0, 0.0}, obstacle_orientation[4] = {1.0, 0.0, 0.0, 0.0};
     ent_scene* scene = NULL;
     ent_status status;
@@ -322,6 +323,11 @@ int main(int argc, char** argv) {
         status = ent_scene_create_json_file(scene_path, NULL, &scene);
         if (status != ENT_OK) return report_failure("ent_scene_create_json_file", status);
     }
+    status = ent_scene_tool_count(scene, &tools);
+    if (status != ENT_OK) {
+        ent_scene_destroy(scene);
+        return report_failure("ent_scene_tool_count", status);
+    }
     motion = demo_motion_for_scene(scene_path);
     if (motion == NULL) motion = demo_motion_named("demo");
     if (motion->obstacle >= 0) {
@@ -369,17 +375,15 @@ int main(int argc, char** argv) {
         /* Where the device puts the tool at the end of this step; it moves there
          * continuously during the step. */
         path_at(motion->tool_keys, motion->tool_key_count, (double)step * STEP_S, tip);
-        status = ent_tool_set_pose(scene, 0, tip, upright);
+        status = tools > 0 ? ent_tool_set_pose(scene, 0, tip, upright) : ENT_OK;
         if (status != ENT_OK) {
             ent_scene_destroy(scene);
             return report_failure("ent_tool_set_pose", status);
         }
         if (motion->obstacle >= 0) {
             /* The retractor: the organ's pose at the end of this step. */
-            double offset[3], to[3];
-            path_at(motion->obstacle_keys, motion->obstacle_key_count, (double)step * STEP_S, offset);
-            for (i = 0; i < 3; ++i) to[i] = obstacle_start_m[i] + offset[i];
-            status = ent_obstacle_set_pose(scene, motion->obstacle, to, obstacle_orientation);
+            status = obstacle_follow_path(scene, motion->obstacle, obstacle_start_m, obstacle_orientation,
+                                          motion->obstacle_keys, motion->obstacle_key_count, (double)step * STEP_S);
             if (status != ENT_OK) {
                 ent_scene_destroy(scene);
                 return report_failure("ent_obstacle_set_pose", status);
@@ -395,7 +399,8 @@ int main(int argc, char** argv) {
             return 1;
         }
         /* The force the haptic device would render. */
-        status = ent_tool_wrench(scene, 0, force, torque);
+        memset(force, 0, sizeof force);
+        status = tools > 0 ? ent_tool_wrench(scene, 0, force, torque) : ENT_OK;
         if (status != ENT_OK) {
             ent_scene_destroy(scene);
             return report_failure("ent_tool_wrench", status);
@@ -412,7 +417,7 @@ int main(int argc, char** argv) {
             tool_force_N = 0.0;
         }
     }
-    printf("tool: largest force %.3f N (bound 5 N)\n", tool_force_max_N);
+    if (tools > 0) printf("tool: largest force %.3f N (bound 5 N)\n", tool_force_max_N);
     if (motion->obstacle >= 0) {
         /* Where the retractor left the organ, as a renderer sees it (the published pose). */
         double at[3], orientation[4];
@@ -429,7 +434,7 @@ int main(int argc, char** argv) {
         ent_tool_stats observer;
         memset(&observer, 0, sizeof observer);
         observer.struct_size = sizeof observer;
-        if (ent_tool_read_stats(scene, 0, &observer) == ENT_OK)
+        if (tools > 0 && ent_tool_read_stats(scene, 0, &observer) == ENT_OK)
             printf("tool: passivity: %.4f J put in, %.4f J given back, balance %.4f J\n", observer.energy_in_J,
                    observer.energy_out_J, observer.energy_in_J - observer.energy_out_J);
     }

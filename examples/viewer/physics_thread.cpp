@@ -162,10 +162,9 @@ void PhysicsThread::apply_obstacles(double time_after_s) {
     for (std::size_t i = 0; i < settings_.obstacle_paths.size(); ++i) {
         const ObstaclePath& path = settings_.obstacle_paths[i];
         const ObstacleStart& start = obstacle_starts_[i];
-        double offset[3], position[3];
-        path_at(path.keys.data(), path.keys.size() / 4, time_after_s, offset);
-        for (int c = 0; c < 3; ++c) position[c] = start.position_m[c] + offset[c];
-        const ent_status status = ent_obstacle_set_pose(settings_.scene, path.obstacle, position, start.orientation_wxyz);
+        const ent_status status = obstacle_follow_path(settings_.scene, path.obstacle, start.position_m,
+                                                       start.orientation_wxyz, path.keys.data(), path.keys.size() / 4,
+                                                       time_after_s);
         if (status != ENT_OK) fail("ent_obstacle_set_pose", status);
     }
 }

@@ -10,6 +10,7 @@ Search order for the library:
 import ctypes
 import ctypes.util
 import glob
+import operator
 import os
 
 from . import _structs as s
@@ -64,10 +65,28 @@ _scene_p = ctypes.c_void_p
 _double_p = ctypes.POINTER(ctypes.c_double)
 
 
+def _checked_integer(base, label, low, high):
+    """A ctypes argument type that refuses a Python integer out of base's range (ctypes
+    alone would silently keep its low bits: 2**32 + 1 would become 1)."""
+    class Checked(base):
+        @classmethod
+        def from_param(cls, value):
+            number = operator.index(value)
+            if not low <= number <= high:
+                raise OverflowError("%d is out of range for %s [%d, %d]" % (number, label, low, high))
+            return base(number)
+    Checked.__name__ = base.__name__
+    return Checked
+
+
+_CHECKED = {ctypes.c_int32: _checked_integer(ctypes.c_int32, "int32_t", -2**31, 2**31 - 1),
+            ctypes.c_uint32: _checked_integer(ctypes.c_uint32, "uint32_t", 0, 2**32 - 1)}
+
+
 def _declare(name, restype, *argtypes):
     function = getattr(lib, name)
     function.restype = restype
-    function.argtypes = list(argtypes)
+    function.argtypes = [_CHECKED.get(argtype, argtype) for argtype in argtypes]
 
 
 _declare("ent_version", ctypes.c_uint32)

@@ -2,6 +2,7 @@
 does, an obstacle moved between steps carries a pin with it, gravity and friction change
 between steps, obstacles are removed and counted, a scene file finds its mesh next to it,
 and bad input raises naming the input and changes nothing."""
+import ctypes
 import os
 import tempfile
 import unittest
@@ -180,6 +181,12 @@ class MovingAnatomy(unittest.TestCase):
             self.assertEqual(caught.exception.status, enteron.ERROR_NOT_FOUND)
             with self.assertRaises(ValueError):
                 scene.set_obstacle_pose(organ, (0, 0))
+            # An index beyond 32 bits is refused, not cut to its low bits (2**32 would be 0).
+            for call in (lambda: scene.pin_point(2**32), lambda: scene.attach_mesentery(2**32 + organ),
+                         lambda: scene.set_obstacle_pose(2**32 + organ, (0, 0, 1))):
+                with self.assertRaises(ctypes.ArgumentError) as caught:
+                    call()
+                self.assertIn("out of range", str(caught.exception))
             position, orientation = scene.obstacle_pose(organ)
             np.testing.assert_array_equal(position, [0, 0, 0])
             np.testing.assert_array_equal(orientation, [1, 0, 0, 0])
