@@ -699,8 +699,10 @@ ENT_API ent_status ent_scene_set_gravity(ent_scene* scene, const double gravity_
  * again moves it to the new frame. ENT_EFFECT_PINNED turns on with the first pin.
  * Thread: the driving thread, between steps; allocates, refactors the mass matrix (about
  * as long as one step).
- * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, control_point out of range);
- *         ENT_ERROR_NOT_FOUND (no such obstacle); ENT_ERROR_BUSY.
+ * A clamped end's end point (ent_scene_desc.clamped_ends) moves with its clamp only:
+ * attach it with ent_scene_attach_clamped_end.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, control_point out of range, a clamped
+ *         end's end point); ENT_ERROR_NOT_FOUND (no such obstacle); ENT_ERROR_BUSY.
  */
 ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point, int32_t obstacle);
 
@@ -708,8 +710,8 @@ ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point,
  * Lets a pinned control point go (a surgeon frees a loop), from the next step on.
  * Refactors the mass matrix (allocates; about as long as one step).
  * Thread: the driving thread, between steps.
- * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range); ENT_ERROR_NOT_FOUND (the
- *         point is not pinned); ENT_ERROR_BUSY.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, out of range, a clamped end's end point,
+ *         which its clamp holds); ENT_ERROR_NOT_FOUND (the point is not pinned); ENT_ERROR_BUSY.
  */
 ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_point);
 
@@ -831,7 +833,10 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 /**
  * The force (N) and the torque about the tip (N m) the bowel exerted on the tool in the
  * last accepted step: exactly minus what the bowel received over that step (the time
- * average of the forces the integrator applied), bounded by max_force_N. Proxy mode: the
+ * average of the forces the integrator applied), except where that force would exceed
+ * max_force_N (possible only with clamped ends or bdf2, where the proxy is not solved with
+ * the bowel: docs/haptics.md): the force is then clipped to max_force_N, its direction
+ * kept. The force never exceeds max_force_N. Proxy mode: the
  * virtual coupling's force, bounded. Direct mode: the sum of the tool's contacts and
  * grasp; when their magnitudes add up to more than max_force_N they are all scaled down by
  * one factor, on the bowel as on the tool. Zero before the first step.
@@ -880,7 +885,7 @@ ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t*
 typedef struct ent_tool_feedback {
     uint32_t struct_size;  /**< set by the caller to sizeof(ent_tool_feedback). */
     int32_t grasping;      /**< 1 while a grasp holds, else 0 (as ent_tool_state). */
-    double force_N[3];     /**< force of the bowel on the tool, N, bounded by max_force_N (as ent_tool_wrench). */
+    double force_N[3];     /**< force of the bowel on the tool, N, never above max_force_N (clipped to it: as ent_tool_wrench). */
     double torque_Nm[3];   /**< torque of the bowel on the tool about its tip, N m. */
     uint32_t contacts;     /**< collision spheres touching the tool in the step's last evaluation. */
     double time_s;         /**< simulated time of the published state this comes from. */

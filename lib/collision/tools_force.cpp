@@ -608,6 +608,12 @@ void ToolsForce::end_step(bool accepted) {
                 received.force = -tool.impulse / tool.duration;
                 received.torque = tool.angular_impulse / tool.duration;
             }
+            // A device's safety: never more than max_force. Only where the proxy is not solved
+            // with the bowel (clamped ends, bdf2's second-order substeps) can minus what the
+            // bowel received exceed it (docs/haptics.md "The wrench"). Clipped before the
+            // observer, so that its balance counts the work of the force rendered.
+            const double magnitude = received.force.norm();
+            if (magnitude > tool.settings.max_force) received.force *= tool.settings.max_force / magnitude;
             const Vec3 displacement = tool.target.position - tool.current.position;
             const Vec3 rotation = rotation_between(tool.current.orientation, tool.target.orientation);
             tool.wrench = tool.observer.observe(received, displacement, rotation, tool.settings.max_force,

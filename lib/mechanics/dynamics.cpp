@@ -163,13 +163,18 @@ void Dynamics::factor_clamped_mass() {
     clamped_->reduce(clamped_mass_factor_);
     if (!clamped_mass_factor_.factor())
         throw Error(ErrorCode::internal, "the clamped mass matrix is not positive definite");
+    clamped_mass_stale_ = false;
 }
 
 bool Dynamics::prescribe(State& state, double dt) {
     if (!pinned_) return false;
     const bool moving = pinned_->prescribe(state, dt);
-    if (clamped_ && clamped_->prescribe(state, dt, pinned_->speed_limit())) factor_clamped_mass();
-    return moving;
+    // A turning clamp changes control point 1's velocity: the stability guard's reference
+    // must be taken again, as for a moving pin. Only the explicit integrators use the
+    // clamped mass matrix (solve_mass): it is factored there, on first use.
+    const bool turned = clamped_ && clamped_->prescribe(state, dt, pinned_->speed_limit());
+    if (turned) clamped_mass_stale_ = true;
+    return moving || turned;
 }
 
 void Dynamics::acceleration(const State& state, double* acceleration) {
@@ -177,8 +182,9 @@ void Dynamics::acceleration(const State& state, double* acceleration) {
     solve_mass(acceleration);
 }
 
-void Dynamics::solve_mass(double* x) const {
+void Dynamics::solve_mass(double* x) {
     if (!clamped_) return mass_factor_.solve(x, 3, 3);
+    if (clamped_mass_stale_) factor_clamped_mass();
     clamped_->reduce_rhs(x, nullptr);
     clamped_mass_factor_.solve(x);
     clamped_->expand(x);

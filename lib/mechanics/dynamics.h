@@ -59,8 +59,9 @@ public:
     void acceleration(const State& state, double* acceleration);
     // out = M x for a 3n vector (the unconstrained mass matrix).
     void multiply_mass(const double* x, double* out) const { mass_products_.multiply(x, out); }
-    // x = M^-1 x for a 3n vector (with the clamps' constraints).
-    void solve_mass(double* x) const;
+    // x = M^-1 x for a 3n vector (with the clamps' constraints). Factors the clamped mass
+    // matrix again first if a clamp turned since (allocates nothing).
+    void solve_mass(double* x);
     // Solves system dv = rhs in place for the velocity change dv of the state `state`: the
     // implicit integrators' system, assembled by forces() with a linearisation. The pinned
     // rows of rhs are zeroed (dv = 0 there), the clamps' constraints hold for v + dv. Factors
@@ -87,8 +88,8 @@ public:
     void end_step(bool accepted);
     // Before each attempt: the velocities of the points pinned to moving frames
     // (pinned_points.h), then the turn of the clamped ends attached to frames
-    // (clamped_ends.h; the clamped mass matrix is factored again when one turned). True if
-    // one of those velocities is not zero.
+    // (clamped_ends.h; the clamped mass matrix is then stale, factored again by the next
+    // solve_mass). True if one of those velocities is not zero or a clamp changed one.
     bool prescribe(State& state, double dt);
     // The clamps, or null.
     ClampedEnds* clamps() { return clamped_.get(); }
@@ -151,6 +152,7 @@ private:
     PerCoordinateMatrix mass_products_;      // M again, for M v
     numerics::ScalarBandMatrix mass_factor_;   // M with pins, Cholesky factor
     SystemMatrix clamped_mass_factor_;         // with clamps: M over the 3n coordinates, pinned, clamped, factored
+    bool clamped_mass_stale_ = false;          // a clamp turned since clamped_mass_factor_ was factored
     SystemMatrix constant_system_;
     BorderedSystem border_;
     double constant_system_h_ = -1.0;

@@ -46,6 +46,9 @@ public:
     // `frame`, whose motion it then follows; its velocity becomes zero (it is between steps).
     // Pinning a pinned point again re-attaches it. Allocates.
     void pin(uint32_t point, std::size_t frame, State& state);
+    // Room for `more` attachments to frames: pinning that many points already pinned then
+    // allocates nothing and cannot fail (an all-or-nothing change of several pins).
+    void reserve_attachments(std::size_t more) { attached_.reserve(attached_.size() + more); }
     // Lets a point go; false if it was not pinned.
     bool unpin(uint32_t point);
     bool pinned(uint32_t point) const;

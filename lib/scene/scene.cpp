@@ -279,12 +279,24 @@ void Scene::pin_point_only(std::size_t point, std::optional<std::size_t> obstacl
     dynamics_.pins()->pin(static_cast<uint32_t>(point), frame, state_);
 }
 
+void Scene::refuse_clamped_end_point(std::size_t point, const char* change) {
+    const ClampedEnds* clamps = dynamics_.clamps();
+    for (const bool first : {true, false})
+        if (clamps != nullptr && clamps->clamped(first) && point == (first ? 0 : model_.control_points - 1))
+            throw Error(ErrorCode::invalid_argument,
+                        "control point " + std::to_string(point) + " is the scene's " + (first ? "first" : "last") +
+                            " clamped end (clamped_ends): " + change +
+                            " it alone would leave the clamp half attached; attach the clamped end instead");
+}
+
 void Scene::pin_point(std::size_t point, std::optional<std::size_t> obstacle) {
+    refuse_clamped_end_point(point, "pinning");
     pin_point_only(point, obstacle);
     changed_between_steps();
 }
 
 bool Scene::unpin_point(std::size_t point) {
+    refuse_clamped_end_point(point, "unpinning");
     PinnedPoints* pins = dynamics_.pins();
     if (pins == nullptr || !pins->unpin(static_cast<uint32_t>(point))) return false;
     changed_between_steps();
@@ -310,6 +322,9 @@ void Scene::attach_clamped_ends_only(int32_t ends, std::optional<std::size_t> ob
             throw Error(ErrorCode::not_found, std::string("the scene's ") + (first ? "first" : "last") +
                                                   " end is not clamped (clamped_ends)");
     const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : ClampedEnds::kWorld;
+    // All or nothing: a clamped end's point is always pinned, so with room for both
+    // attachments reserved first, neither end's change below can fail.
+    if (PinnedPoints* pins = dynamics_.pins()) pins->reserve_attachments(2);
     for (const bool first : {true, false}) {
         if ((ends & (first ? pin_first : pin_last)) == 0) continue;
         // The end point rides on the frame like a pin; the clamp turns its direction with it.

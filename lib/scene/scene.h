@@ -79,6 +79,7 @@ public:
     void set_gravity(const Vec3& gravity);
     // Between steps: hold a control point where it is, in the world or on an obstacle's
     // frame (then it moves with it); let it go. unpin returns false if it was not pinned.
+    // Both throw Error(invalid_argument) for a clamped end's end point (attach_clamped_ends).
     void pin_point(std::size_t point, std::optional<std::size_t> obstacle);
     bool unpin_point(std::size_t point);
     // Between steps: the mesentery's root follows an obstacle's frame (or stays in the world).
@@ -147,6 +148,9 @@ private:
     void pin_point_only(std::size_t point, std::optional<std::size_t> obstacle);
     void attach_mesentery_only(std::optional<std::size_t> obstacle);
     void attach_clamped_ends_only(int32_t ends, std::optional<std::size_t> obstacle);
+    // Throws Error(invalid_argument) if `point` is a clamped end's end point: pinned or let
+    // go alone, it would leave its clamp half attached.
+    void refuse_clamped_end_point(std::size_t point, const char* change);
     // Adds a tool, creating the tools effect with the first; no refinalize.
     std::size_t add_tool_effect_only(const collision::ToolConfig& tool);
     // Bounds, substep limit and energies after the set of effects changed.

@@ -1270,6 +1270,50 @@ TEST(BadInputs, EveryRowFailsCleanlyAndChangesNothing) {
     }
 }
 
+// A clamped end's end point is pinned by its clamp: pinning or unpinning it alone would
+// leave the clamp half attached. Refused, naming the clamp, nothing changed (the saved
+// state, pins and clamps among it, is the same bytes).
+TEST(BadInputs, AClampedEndPointIsNeitherPinnedNorUnpinnedAlone) {
+    ent_scene_desc desc = moving_desc(ENT_INTEGRATOR_IMPLICIT_EULER);
+    desc.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+    desc.clamped_ends = ENT_PIN_BOTH;
+    ScenePtr scene = create(desc);
+    ASSERT_TRUE(scene);
+    ent_obstacle_desc sphere;
+    ent_obstacle_desc_default(&sphere);
+    sphere.kind = ENT_OBSTACLE_SPHERE;
+    sphere.radius_m = 0.01;
+    sphere.center_m[2] = -1.0;
+    int32_t obstacle = -1;
+    ASSERT_EQ(ent_scene_add_obstacle(scene.get(), &sphere, &obstacle), ENT_OK) << ent_last_error();
+    ASSERT_TRUE(step_n(scene.get(), 1e-3, 5));
+    const auto saved = [&] {
+        size_t size = 0;
+        EXPECT_EQ(ent_scene_save_state(scene.get(), nullptr, 0, &size), ENT_OK) << ent_last_error();
+        std::vector<unsigned char> bytes(size);
+        EXPECT_EQ(ent_scene_save_state(scene.get(), bytes.data(), size, &size), ENT_OK) << ent_last_error();
+        return bytes;
+    };
+    const std::vector<unsigned char> before = saved();
+    const uint32_t last = desc.control_points - 1;
+    for (const uint32_t point : {0u, last}) {
+        SCOPED_TRACE(point);
+        const std::string named = "control point " + std::to_string(point);
+        for (const int32_t frame : {ENT_NO_OBSTACLE, obstacle}) {
+            EXPECT_EQ(ent_scene_pin_point(scene.get(), point, frame), ENT_ERROR_INVALID_ARGUMENT);
+            EXPECT_TRUE(contains(ent_last_error(), named) && contains(ent_last_error(), "clamped end"))
+                << ent_last_error();
+        }
+        EXPECT_EQ(ent_scene_unpin_point(scene.get(), point), ENT_ERROR_INVALID_ARGUMENT);
+        EXPECT_TRUE(contains(ent_last_error(), named) && contains(ent_last_error(), "clamped end")) << ent_last_error();
+    }
+    EXPECT_EQ(saved(), before);
+    // Attaching both clamped ends together still works, and a point between them pins.
+    EXPECT_EQ(ent_scene_attach_clamped_end(scene.get(), ENT_PIN_BOTH, obstacle), ENT_OK) << ent_last_error();
+    EXPECT_EQ(ent_scene_pin_point(scene.get(), 1, ENT_NO_OBSTACLE), ENT_OK) << ent_last_error();
+    EXPECT_TRUE(step_n(scene.get(), 1e-3, 5));
+}
+
 TEST(BadInputs, EveryExportedFunctionHasRows) {
     std::ifstream exports(ENTERON_EXPORTS_FILE);
     ASSERT_TRUE(exports) << "no export list at " << ENTERON_EXPORTS_FILE;
