@@ -558,6 +558,15 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
             validator.check_named(std::size_t{pin.point}, name + ".control_point")
                 .below(config.intestine.control_points, names[Field::control_points]);
             validator.check_named(pin.obstacle, name + ".obstacle").below(obstacles, "the number of obstacles");
+            // A clamped end's point moves with its clamp: pinned alone, the clamp would be
+            // half attached (the end point on the organ, its direction in the world).
+            for (const bool first : {true, false})
+                if ((config.pinned->clamped & (first ? pin_first : pin_last)) != 0 &&
+                    pin.point == (first ? 0 : config.intestine.control_points - 1))
+                    validator.fail(name + ".control_point",
+                                   "is " + std::to_string(pin.point) + ", the point of the clamped " +
+                                       (first ? "first" : "last") +
+                                       " end (pinned.clamped): attach the clamped end with pinned.clamped_attached");
         }
     if (config.mesentery && config.mesentery->obstacle)
         validator.check_named(*config.mesentery->obstacle, "mesentery.obstacle")

@@ -603,6 +603,13 @@ TEST(Anatomy, AttachingAClampedEndRefusesBadInput) {
     missing.replace(missing.find(R"("first": 0)"), 10, R"("first": 3)");
     EXPECT_EQ(ent_scene_create_json(missing.data(), missing.size(), &bad), ENT_ERROR_INVALID_SCENE);
     EXPECT_NE(std::string(ent_last_error()).find("pinned.clamped_attached.first"), std::string::npos) << ent_last_error();
+    // A clamped end's point pinned alone to an organ would leave the clamp half attached.
+    const std::string end_point_pinned = R"({"intestine": {"control_points": 16}, "pinned": {"clamped": "last",
+        "attached": [{"control_point": 15, "obstacle": 0}]},
+        "environment": [{"type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1]}]})";
+    EXPECT_EQ(ent_scene_create_json(end_point_pinned.data(), end_point_pinned.size(), &bad), ENT_ERROR_INVALID_SCENE);
+    EXPECT_NE(std::string(ent_last_error()).find("pinned.attached[0].control_point"), std::string::npos)
+        << ent_last_error();
     const std::string not_an_object = R"({"intestine": {"control_points": 16}, "pinned": {"clamped": "first",
         "clamped_attached": 0}})";
     EXPECT_EQ(ent_scene_create_json(not_an_object.data(), not_an_object.size(), &bad), ENT_ERROR_INVALID_SCENE);
