@@ -32,6 +32,7 @@ import os
 import sys
 import tempfile
 import time
+import warnings
 import zipfile
 
 _PACKAGE_DIRECTORY = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # .../enteron
@@ -104,6 +105,8 @@ class Engine:
         if scheduler is None and workers == 0:
             self.description = "this process"
             return
+        # Tornado 6.2 (Debian 12) warns about an event-loop call that Dask 2022.12 makes: not ours to fix.
+        warnings.filterwarnings("ignore", category=DeprecationWarning, module="tornado")
         try:
             import distributed
         except ImportError:
@@ -120,10 +123,13 @@ class Engine:
             library = "upload" if library == "auto" else library
             if dashboard:
                 self._say("Dask's dashboard (the scheduler's): %s" % self.client.dashboard_link)
+        if library == "inherit" and self.cluster is None:
+            raise ValueError("library='inherit' applies to the embedded LocalCluster only")
         if library == "upload":
             self._upload_package()
-        elif library == "inherit" and self.cluster is None:
-            raise ValueError("library='inherit' applies to the embedded LocalCluster only")
+        if library in ("upload", "installed"):
+            from .simulate import library_sha256
+            self._check_workers(library_sha256())
         self.library = library
         self.description = self._describe()
 
@@ -154,12 +160,19 @@ class Engine:
     def _upload_package(self):
         """Sends this package (a zip) and the library this process loaded to every worker,
         present and future, as Dask worker plugins; the zip's _install.py points the package
-        at the library beside it in the worker's directory."""
+        at the library beside it in the worker's directory. Not when every worker already
+        runs this library: a plugin registered again rewrites its files, and rewriting a
+        loaded library in place crashes the process that maps it."""
         import enteron
         from distributed.diagnostics.plugin import UploadFile
 
         from .simulate import library_sha256
         digest = library_sha256()
+        try:
+            if set(self.client.run(library_sha256).values()) == {digest}:
+                return  # they have it (an earlier upload, which also reaches workers that join later)
+        except Exception:  # a worker that cannot import enteron: the upload is what it needs
+            pass
         library_name = "libenteron-%s.so" % digest[:16]
         package_name = "enteron-%s.zip" % digest[:16]
         with tempfile.TemporaryDirectory(prefix="enteron-upload-") as directory:
@@ -183,7 +196,6 @@ class Engine:
                 except Exception as error:
                     raise EngineError("cannot send %s to the Dask workers: %s (they need Python 3 with numpy; "
                                       "library='installed' uses their own enteron)" % (os.path.basename(path), error)) from None
-        self._check_workers(digest)
 
     def _check_workers(self, digest):
         from .simulate import library_sha256
@@ -193,8 +205,9 @@ class Engine:
             raise EngineError("a Dask worker cannot import enteron: %s" % error) from None
         for worker, worker_digest in sorted(found.items()):
             if worker_digest != digest:
-                raise EngineError("Dask worker %s loaded another libenteron (sha256 %s, this process: %s): results "
-                                  "would not be bit-identical; use library='upload'" % (worker, worker_digest, digest))
+                raise EngineError("Dask worker %s runs another libenteron (sha256 %s, this process: %s): results "
+                                  "would not be bit-identical; restart the workers that had imported another enteron, "
+                                  "or use library='upload'" % (worker, worker_digest, digest))
 
     def _describe(self):
         workers = len(self.client.scheduler_info().get("workers", {}))

@@ -45,7 +45,9 @@ class CalibrationError(ValueError):
 class Parameter:
     """One constant to fit: a number of the scene named by a JSON path, its bounds, and the
     scale the search moves on ("log" for positive bounds spanning more than a decade, by
-    default; "linear" otherwise). start: the scene's own value (clamped into the bounds)."""
+    default; "linear" otherwise). start: where the search starts, the scene's own value or
+    the parameter's "start" (which also adds the key to a scene that lacks it), clamped
+    into the bounds."""
 
     def __init__(self, path, lower, upper, scale, start, name):
         self.path = path
@@ -205,10 +207,12 @@ def _measurement(name, spec, where):
 
 
 def _parameter(index, spec, scene, where):
-    _only_keys(spec, ("path", "bounds", "scale", "name"), where)
+    _only_keys(spec, ("path", "bounds", "scale", "name", "start"), where)
     path = spec.get("path")
     try:
         parts = json_path.parse(path)
+        if "start" in spec:  # the scene may lack the key: it is added (docs/calibration.md)
+            json_path.add_number(scene, parts, _number(spec["start"], where + ".start"))
         start = json_path.get(scene, parts)
     except json_path.PathError as error:
         _refuse(where + ".path", "%r does not name a number of the scene: %s" % (path, error))
@@ -289,7 +293,7 @@ def _check_motions_do_not_overlap(script, where):
         actor = ("tool", action["tool"]) if "tool" in action else ("obstacle", action["obstacle"])
         if actor in ends and action["at"] < ends[actor][0] - 1e-12:
             end, other = ends[actor]
-            _refuse("%s.script[%d]" % (where, index), "starts at %g s while script[%d] still moves %s %d (until %g s)"
+            _refuse("%s: script[%d]" % (where, index), "starts at %g s while script[%d] still moves %s %d (until %g s)"
                     % (action["at"], other, actor[0], actor[1], end))
         ends[actor] = (action["at"] + action["duration"], index)
 
@@ -322,7 +326,7 @@ def from_dict(document, source_file="<experiment>"):
     if "scene" in document:
         scene = document["scene"]
         if not isinstance(scene, dict):
-            _refuse(where + ".scene", "must be a JSON object (a scene description), got %r" % (scene,))
+            _refuse(where + ": scene", "must be a JSON object (a scene description), got %r" % (scene,))
         scene = copy.deepcopy(scene)
     elif "scene_file" in document:
         scene_path = os.path.join(base, document["scene_file"])
@@ -330,66 +334,66 @@ def from_dict(document, source_file="<experiment>"):
             with open(scene_path, encoding="utf-8") as file:
                 scene = json.load(file)
         except (OSError, json.JSONDecodeError) as error:
-            _refuse(where + ".scene_file", "cannot read %s: %s" % (scene_path, error))
+            _refuse(where + ": scene_file", "cannot read %s: %s" % (scene_path, error))
         _absolute_mesh_files(scene, os.path.dirname(scene_path))
     else:
         from . import journal as journal_module
-        journal = journal_module.load(os.path.join(base, document["journal"]), where + ".journal")
-        scene = journal.scene
+        journal = journal_module.load(os.path.join(base, document["journal"]), where + ": journal")
+        scene = copy.deepcopy(journal.scene)
     if not isinstance(scene, dict):
-        _refuse(where + ".scene", "must be a JSON object")
+        _refuse(where + ": scene", "must be a JSON object")
 
     if journal is not None:
         for key in ("step", "script"):
             if key in document:
-                _refuse(where + "." + key, "does not apply to a journal: its ticks give the steps and the tools' poses")
+                _refuse(where + ": " + key, "does not apply to a journal: its ticks give the steps and the tools' poses")
         step = journal.step_s
     else:
-        step = _number(document.get("step", DEFAULT_STEP_S), where + ".step", 0.0, 1.0, low_open=True)
+        step = _number(document.get("step", DEFAULT_STEP_S), where + ": step", 0.0, 1.0, low_open=True)
     duration = document.get("duration")
     if duration is not None:
-        duration = _number(duration, where + ".duration", 0.0, low_open=True)
+        duration = _number(duration, where + ": duration", 0.0, low_open=True)
         if journal is not None and duration > journal.duration_s + 1e-9:
-            _refuse(where + ".duration", "is %g s but the journal holds %g s" % (duration, journal.duration_s))
+            _refuse(where + ": duration", "is %g s but the journal holds %g s" % (duration, journal.duration_s))
 
     measurements_spec = document.get("measurements")
     if not isinstance(measurements_spec, dict) or not measurements_spec:
-        _refuse(where + ".measurements", "must be an object naming at least one measurement")
-    measurements = {name: _measurement(name, spec, "%s.measurements.%s" % (where, name))
+        _refuse(where + ": measurements", "must be an object naming at least one measurement")
+    measurements = {name: _measurement(name, spec, "%s: measurements.%s" % (where, name))
                     for name, spec in measurements_spec.items()}
 
     tools = len(scene.get("tools", []) or [])
     obstacles = len(scene.get("environment", []) or [])
     for measurement in measurements.values():
         if measurement.kind == "tool_force" and measurement.keys["tool"] >= tools:
-            _refuse("%s.measurements.%s.tool" % (where, measurement.name),
+            _refuse("%s: measurements.%s.tool" % (where, measurement.name),
                     "the scene has %d tool(s): no tool %d" % (tools, measurement.keys["tool"]))
     script_spec = document.get("script", [])
     if not isinstance(script_spec, list):
-        _refuse(where + ".script", "must be an array of actions, got %r" % (script_spec,))
-    script = [_action(i, spec, tools, obstacles, "%s.script[%d]" % (where, i)) for i, spec in enumerate(script_spec)]
+        _refuse(where + ": script", "must be an array of actions, got %r" % (script_spec,))
+    script = [_action(i, spec, tools, obstacles, "%s: script[%d]" % (where, i)) for i, spec in enumerate(script_spec)]
     _check_motions_do_not_overlap(script, where)
 
     parameters_spec = document.get("parameters")
     if not isinstance(parameters_spec, list) or not parameters_spec:
-        _refuse(where + ".parameters", "must be an array of at least one {\"path\", \"bounds\"}")
-    parameters = [_parameter(i, spec, scene, "%s.parameters[%d]" % (where, i)) for i, spec in enumerate(parameters_spec)]
+        _refuse(where + ": parameters", "must be an array of at least one {\"path\", \"bounds\"}")
+    parameters = [_parameter(i, spec, scene, "%s: parameters[%d]" % (where, i)) for i, spec in enumerate(parameters_spec)]
     paths = [p.parts for p in parameters]
     for i, parts in enumerate(paths):
         if parts in paths[:i]:
-            _refuse("%s.parameters[%d].path" % (where, i), "names %s a second time" % json_path.spell(parts))
+            _refuse("%s: parameters[%d].path" % (where, i), "names %s a second time" % json_path.spell(parts))
 
     fit_spec = document.get("fit", {})
-    _only_keys(fit_spec, tuple(_FIT_KEYS), where + ".fit")
+    _only_keys(fit_spec, tuple(_FIT_KEYS), where + ": fit")
     fit_options = dict(FIT_DEFAULTS)
     for key, value in fit_spec.items():
         kind = _FIT_KEYS[key]
         if kind is bool and not isinstance(value, bool):
-            _refuse("%s.fit.%s" % (where, key), "must be true or false, got %r" % (value,))
+            _refuse("%s: fit.%s" % (where, key), "must be true or false, got %r" % (value,))
         if kind is int and (isinstance(value, bool) or not isinstance(value, int) or value < 0):
-            _refuse("%s.fit.%s" % (where, key), "must be an integer >= 0, got %r" % (value,))
+            _refuse("%s: fit.%s" % (where, key), "must be an integer >= 0, got %r" % (value,))
         if kind is float:
-            value = _number(value, "%s.fit.%s" % (where, key), 0.0, low_open=True)
+            value = _number(value, "%s: fit.%s" % (where, key), 0.0, low_open=True)
         fit_options[key] = value
 
     name = document.get("name", os.path.splitext(where)[0])

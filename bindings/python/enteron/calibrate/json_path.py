@@ -84,6 +84,18 @@ def set_number(document, parts, value):
     node[parts[-1]] = float(value)
 
 
+def add_number(document, parts, value):
+    """Sets the number at parts, adding its last key if the object above it lacks it (the
+    object itself must exist: adding it could turn an effect on); PathError otherwise."""
+    node = document
+    for i, part in enumerate(parts[:-1]):
+        node = _step(node, part, parts[:i])
+    if isinstance(node, dict) and isinstance(parts[-1], str) and parts[-1] not in node:
+        node[parts[-1]] = float(value)
+        return
+    set_number(document, parts, value)
+
+
 def with_numbers(document, parts_list, values):
     """A deep copy of document with the number at each parts set to the matching value."""
     document = copy.deepcopy(document)
