@@ -38,6 +38,8 @@ def parser():
         epilog="docs/calibration.md has the file formats and the method.")
     p.add_argument("experiment", help="experiment file (JSON), or a shipped one: " + ", ".join(EXPERIMENTS))
     p.add_argument("data", help="data file (CSV: measurement,t_s,value[,sigma])")
+    p.add_argument("--journal", metavar="FILE", help="the LCM journal to replay (an experiment with \"journal\", "
+                   "e.g. lcm_journal): replaces the experiment's")
     where = p.add_argument_group("where the simulations run")
     where.add_argument("--scheduler", metavar="tcp://HOST:PORT",
                        help="an existing Dask scheduler (default: an embedded LocalCluster on this machine)")
@@ -74,7 +76,7 @@ def main(argv=None):
         path = args.experiment
         if not os.path.exists(path) and path in EXPERIMENTS:
             path = experiment_path(path)
-        experiment = load_experiment(path)
+        experiment = load_experiment(path, journal=args.journal)
         data = load_data(args.data, experiment)
         for name, value in (("--workers", args.workers), ("--max-evaluations", args.max_evaluations),
                             ("--population", args.population)):

@@ -298,8 +298,8 @@ def _check_motions_do_not_overlap(script, where):
         ends[actor] = (action["at"] + action["duration"], index)
 
 
-def load(path):
-    """Reads and checks an experiment file (JSON)."""
+def load(path, journal=None):
+    """Reads and checks an experiment file (JSON); journal, if given, replaces its "journal"."""
     try:
         with open(path, encoding="utf-8") as file:
             text = file.read()
@@ -310,6 +310,10 @@ def load(path):
     except json.JSONDecodeError as error:
         raise CalibrationError("%s: not JSON: %s (line %d, column %d)"
                                % (path, error.msg, error.lineno, error.colno)) from None
+    if journal is not None:
+        if not isinstance(document, dict) or "journal" not in document:
+            raise CalibrationError("%s: --journal applies to an experiment with a \"journal\"" % path)
+        document["journal"] = os.path.abspath(journal)
     return from_dict(document, source_file=os.path.abspath(path))
 
 

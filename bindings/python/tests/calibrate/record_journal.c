@@ -4,13 +4,15 @@
  * journal experiment of enteron.calibrate (bindings/python/tests/calibrate/test_journal.py): an LCM bridge
  * on a scene file (lcm_url "": commands handed over with ent_lcm_bridge_feed_command),
  * ticked by hand on its own clock, one tool command per tick, as a haptic device would
- * send them. The tool (tool 0 of the scene) goes from where the scene puts it down beside
- * the bowel, then pushes across it and holds:
+ * send them. The tool (tool 0 of the scene) moves in y only, from where the scene puts it:
  *
- *   t in [0, 0.2) s    waits where the scene puts it
- *   t in [0.2, 0.5) s  goes to (0, 0.04, 0.0125): beside the bowel, its tip on the axis' height
- *   t in [0.5, 0.9) s  pushes across to (0, -0.01, 0.0125), 1 cm past the bowel's rest line
+ *   t in [0, 0.2) s    waits (the first tick has no command)
+ *   t in [0.2, 0.5) s  goes to y = 4 cm
+ *   t in [0.5, 0.9) s  goes across to y = -1 cm
  *   then               holds there
+ *
+ * With bindings/python/tests/calibrate/pushed_bowel.json (a bowel held at both ends along
+ * y = 0, the tool's shaft across its height) it pushes the bowel's middle aside by 2.25 cm.
  *
  *   enteron_record_journal SCENE.json OUT.journal SECONDS
  *
@@ -44,22 +46,20 @@ static char* read_file(const char* path, size_t* size) {
 
 /* Where the tool's tip is commanded at t (s): the path of the comment above, smoothstep between keys. */
 static void tool_path(double t, const double start[3], double out[3]) {
-    static const double beside[3] = {0.0, 0.04, 0.0125}, across[3] = {0.0, -0.01, 0.0125};
-    const double* from = start;
-    const double* to = beside;
-    double a;
-    int c;
+    double from = start[1], to = 0.04, a;
     if (t < 0.2) {
         a = 0.0;
     } else if (t < 0.5) {
         a = (t - 0.2) / 0.3;
     } else {
-        from = beside;
-        to = across;
+        from = 0.04;
+        to = -0.01;
         a = t < 0.9 ? (t - 0.5) / 0.4 : 1.0;
     }
     a = a * a * (3.0 - 2.0 * a);
-    for (c = 0; c < 3; ++c) out[c] = from[c] + a * (to[c] - from[c]);
+    out[0] = start[0];
+    out[1] = from + a * (to - from);
+    out[2] = start[2];
 }
 
 int main(int argc, char** argv) {
@@ -91,16 +91,18 @@ int main(int argc, char** argv) {
         free(scene);
         return 1;
     }
-    /* The path starts where the scene puts the tool. */
+    /* The path starts where the scene puts the tool: where the first tick, without a
+     * command, leaves it. */
     memset(&feedback, 0, sizeof feedback);
     feedback.struct_size = sizeof feedback;
-    if (ent_tool_read_feedback(ent_lcm_bridge_scene(bridge), 0, &feedback) != ENT_OK) {
+    if (ent_lcm_bridge_tick(bridge, ms) != ENT_OK ||
+        ent_tool_read_feedback(ent_lcm_bridge_scene(bridge), 0, &feedback) != ENT_OK) {
         fprintf(stderr, "record_journal: the scene has no tool 0: %s\n", ent_last_error());
         ent_lcm_bridge_destroy(bridge);
         free(scene);
         return 1;
     }
-    for (tick = 1; tick <= ticks; ++tick) {
+    for (tick = 2; tick <= ticks; ++tick) {
         enteron_tool_command_t command;
         uint8_t bytes[512];
         int encoded;
