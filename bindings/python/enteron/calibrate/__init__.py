@@ -30,7 +30,7 @@ from .simulate import Plan, SimulationFailed
 
 #: The experiments that ship with the package (EXPERIMENTS: their names).
 EXPERIMENTS_DIRECTORY = os.path.join(os.path.dirname(os.path.abspath(__file__)), "experiments")
-EXPERIMENTS = ("cantilever", "three_point_bending", "hanging_sag", "drop_on_table", "lcm_journal")
+EXPERIMENTS = ("cantilever", "three_point_bending", "hanging_sag", "drop_on_table", "lcm_journal", "tensile_test")
 
 
 def experiment_path(name):

@@ -6,7 +6,7 @@
     python3 -m enteron.calibrate EXPERIMENT.json DATA.csv [options]
 
 EXPERIMENT may also be the name of a shipped experiment (cantilever, three_point_bending,
-hanging_sag, drop_on_table, lcm_journal). Prints the constants with their standard
+hanging_sag, drop_on_table, lcm_journal, tensile_test). Prints the constants with their standard
 deviations and the residual; --out writes everything as JSON, --scene-out the fitted scene.
 Exit status: 0 fitted; 2 a bad experiment, data file or option (the message names it);
 1 the fit or the engine failed.

@@ -27,6 +27,7 @@ dashboard when dashboard=True (it needs bokeh >= 2.4.2, < 3, which Debian 12 doe
 package: without it Dask serves a page that says so, and the bar is what there is).
 Everything listens on 127.0.0.1 only, unless scheduler= names another address.
 """
+import hashlib
 import logging
 import os
 import sys
@@ -218,6 +219,21 @@ class Engine:
         self.stream.write("engine: %s\n" % text)
         self.stream.flush()
 
+    def program(self, path):
+        """An executable the workers can run with run_program (bench/study's enteron_study): on
+        this machine's workers, path itself; for library="upload", sent to every worker (a
+        Dask worker plugin, like the library, which it finds beside it)."""
+        program = Program(path)
+        if self.client is not None and self.library == "upload":
+            from distributed.diagnostics.plugin import UploadFile
+            program.uploaded_as = "%s-%s" % (os.path.basename(program.path), program.sha256[:16])
+            with tempfile.TemporaryDirectory(prefix="enteron-upload-") as directory:
+                copy = os.path.join(directory, program.uploaded_as)
+                with open(program.path, "rb") as source, open(copy, "wb") as target:
+                    target.write(source.read())
+                self.client.register_worker_plugin(UploadFile(copy), name="enteron-program-" + program.sha256[:16])
+        return program
+
     # ---- running ----------------------------------------------------------------------------
     @property
     def worker_count(self):
@@ -291,3 +307,41 @@ def _has_bokeh():
     except ImportError:
         return False
 
+
+
+class Program:
+    """An executable for the workers (Engine.program): its path here, its sha256 (part of
+    any cache key made from its output), and the name it was uploaded as, if it was."""
+
+    def __init__(self, path):
+        self.path = os.path.abspath(path)
+        with open(self.path, "rb") as file:
+            self.sha256 = hashlib.sha256(file.read()).hexdigest()
+        self.uploaded_as = None
+
+
+def run_program(program, arguments):
+    """Worker side: runs program with arguments (a list of str) and returns its standard
+    output (bytes); RuntimeError with the end of its standard error if it fails. An
+    uploaded program runs from the worker's directory, with the library uploaded beside it
+    found as libenteron.so.0 (LD_LIBRARY_PATH)."""
+    import subprocess
+    path, environment = program.path, None
+    if program.uploaded_as is not None:
+        from distributed import get_worker
+
+        from .simulate import library_sha256
+        directory = get_worker().local_directory
+        path = os.path.join(directory, program.uploaded_as)
+        os.chmod(path, 0o755)
+        libraries = os.path.join(directory, "enteron-lib-" + library_sha256()[:16])
+        os.makedirs(libraries, exist_ok=True)
+        link = os.path.join(libraries, "libenteron.so.0")
+        if not os.path.exists(link):
+            os.symlink(os.path.join(directory, "libenteron-%s.so" % library_sha256()[:16]), link)
+        environment = dict(os.environ, LD_LIBRARY_PATH=libraries)
+    done = subprocess.run([path] + list(arguments), capture_output=True, env=environment, stdin=subprocess.DEVNULL)
+    if done.returncode != 0:
+        raise RuntimeError("%s %s failed (status %d): %s" % (os.path.basename(path), " ".join(arguments),
+                                                             done.returncode, done.stderr.decode(errors="replace")[-2000:]))
+    return done.stdout

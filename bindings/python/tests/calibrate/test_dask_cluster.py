@@ -5,7 +5,8 @@ loopback), with a clean environment (no PYTHONPATH, no ENTERON_LIBRARY: the engi
 them this package and the library, as it would to another machine). The fit run through
 them gives the result of the fit in this process bit for bit; a second fit, during which
 one worker is killed (SIGKILL) while it computes, still finishes, with the same result.
-The figures (tasks, workers, time, the killed worker) are printed. About 30 s."""
+The figures (tasks, workers, time, the killed worker) are printed. bench/study's program,
+sent to the workers the same way, gives the records it gives here. About 30 s."""
 import os
 import re
 import shutil
@@ -131,6 +132,27 @@ class DaskCluster(unittest.TestCase):
         self.assertEqual(victim.returncode, -signal.SIGKILL)
         self.assertEqual((workers_before, workers_after), (2, 1))
         self.assertEqual(support.result_bits(result), support.result_bits(self.local))
+
+
+    def test_4_a_program_sent_to_the_workers_gives_the_same_bytes(self):
+        # bench/study's enteron_study, uploaded with the library: its runs (the distributed
+        # study's error part) give the records this machine gives.
+        program_path = os.environ.get("ENTERON_STUDY", "")
+        if not os.path.exists(program_path):
+            self.skipTest("ENTERON_STUDY (bench/study's enteron_study) is not built")
+        from enteron.calibrate.engine import Program, run_program
+        tasks = [["--tiny", "--run", name] for name in ("mechanics swing rk4 15 0.001", "mechanics drop bdf2 30 0.0001")]
+        local = [run_program(Program(program_path), task) for task in tasks]
+        with calibrate.Engine(scheduler=self.address, progress=False) as engine:
+            program = engine.program(program_path)
+            self.assertIsNotNone(program.uploaded_as)
+            remote = engine.map(run_program, program, tasks)
+
+        def without_wall_time(record):  # the one timing a record holds: how long the run took
+            return [line for line in record.splitlines() if not line.startswith(b"wall_s ")]
+
+        self.assertEqual([without_wall_time(r) for r in remote], [without_wall_time(r) for r in local])
+        self.assertIn(b"axes ", local[0])
 
 
 if __name__ == "__main__":
