@@ -98,7 +98,9 @@ class Measurement:
 
 class Experiment:
     """A loaded, checked experiment. scene: the JSON document (a dict) with the parameters at
-    their start values; schedule(): the steps and what happens before each."""
+    their start values; parameters, measurements ({name: Measurement}); step_s, duration_s;
+    script: the checked actions; journal: a journal.Journal or None; fit_options; and the
+    file's description and source (where its data come from)."""
 
     def __init__(self, name, source_file, scene, parameters, measurements, step_s, duration_s, script, journal,
                  fit_options, description="", data_source=""):
@@ -206,7 +208,7 @@ def _measurement(name, spec, where):
     return Measurement(name, kind, "m", sigma, samples=samples)
 
 
-def _parameter(index, spec, scene, where):
+def _parameter(spec, scene, where):
     _only_keys(spec, ("path", "bounds", "scale", "name", "start"), where)
     path = spec.get("path")
     try:
@@ -232,7 +234,7 @@ def _parameter(index, spec, scene, where):
     return Parameter(path, lower, upper, scale, min(max(start, lower), upper), name)
 
 
-def _action(index, spec, tools, obstacles, where):
+def _action(spec, tools, obstacles, where):
     """One script action, checked, as a dict with "at" and one of: tool/obstacle + move_to
     (+ duration, orientation), tool + grasp, obstacle + velocity (+ angular_velocity),
     gravity."""
@@ -375,13 +377,13 @@ def from_dict(document, source_file="<experiment>"):
     script_spec = document.get("script", [])
     if not isinstance(script_spec, list):
         _refuse(where + ": script", "must be an array of actions, got %r" % (script_spec,))
-    script = [_action(i, spec, tools, obstacles, "%s: script[%d]" % (where, i)) for i, spec in enumerate(script_spec)]
+    script = [_action(spec, tools, obstacles, "%s: script[%d]" % (where, i)) for i, spec in enumerate(script_spec)]
     _check_motions_do_not_overlap(script, where)
 
     parameters_spec = document.get("parameters")
     if not isinstance(parameters_spec, list) or not parameters_spec:
         _refuse(where + ": parameters", "must be an array of at least one {\"path\", \"bounds\"}")
-    parameters = [_parameter(i, spec, scene, "%s: parameters[%d]" % (where, i)) for i, spec in enumerate(parameters_spec)]
+    parameters = [_parameter(spec, scene, "%s: parameters[%d]" % (where, i)) for i, spec in enumerate(parameters_spec)]
     paths = [p.parts for p in parameters]
     for i, parts in enumerate(paths):
         if parts in paths[:i]:
