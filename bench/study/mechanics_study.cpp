@@ -120,6 +120,28 @@ public:
         }
     }
 
+    static std::string run_name(const Setting& s) {
+        return format("mechanics %s %s %u %s", scene_name(s.scene), integrator_name(s.integrator), s.control_points,
+                      exact(s.timestep).c_str());
+    }
+
+    // --run NAME: false if NAME is not a mechanics run.
+    bool print_record(const std::string& name) {
+        Setting setting{};
+        if (!parse_run_name(name, setting)) return false;
+        const Run run = simulate(setting, false);
+        RunRecord record;
+        std::vector<double> axes;
+        for (const std::vector<double>& axis : run.axes) axes.insert(axes.end(), axis.begin(), axis.end());
+        record.put("axes", axes);
+        record.put("substep_s", run.substep_s);
+        record.put("rollbacks", static_cast<double>(run.rollbacks));
+        record.put("status", run.status);
+        record.put("wall_s", run.wall_s);
+        std::fputs(record.serialize().c_str(), stdout);
+        return true;
+    }
+
 private:
     struct ReferenceSetting {
         uint32_t points;
@@ -171,30 +193,6 @@ private:
         return cache_.emplace(setting, std::move(run)).first->second;
     }
 
-public:
-    static std::string run_name(const Setting& s) {
-        return format("mechanics %s %s %u %s", scene_name(s.scene), integrator_name(s.integrator), s.control_points,
-                      exact(s.timestep).c_str());
-    }
-
-    // --run NAME: false if NAME is not a mechanics run.
-    bool print_record(const std::string& name) {
-        Setting setting{};
-        if (!parse_run_name(name, setting)) return false;
-        const Run run = simulate(setting, false);
-        RunRecord record;
-        std::vector<double> axes;
-        for (const std::vector<double>& axis : run.axes) axes.insert(axes.end(), axis.begin(), axis.end());
-        record.put("axes", axes);
-        record.put("substep_s", run.substep_s);
-        record.put("rollbacks", static_cast<double>(run.rollbacks));
-        record.put("status", run.status);
-        record.put("wall_s", run.wall_s);
-        std::fputs(record.serialize().c_str(), stdout);
-        return true;
-    }
-
-private:
     static bool parse_run_name(const std::string& name, Setting& out) {
         const std::vector<std::string> words = name_words(name);
         if (words.size() != 5 || words[0] != "mechanics") return false;

@@ -103,6 +103,7 @@ class Engine:
         self.cluster = None
         self._shared = {}
         self.tasks = 0
+        self.library = None  # how the workers get the library (see the module's comment); None: no workers
         if scheduler is None and workers == 0:
             self.description = "this process"
             return
