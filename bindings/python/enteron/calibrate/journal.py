@@ -64,12 +64,12 @@ class Journal:
 def load(path, where):
     """Reads a journal; CalibrationError (naming where and the tick) for a file that is not a
     complete, successful session."""
-    log = _log_reader()
     try:
         with open(path, "rb") as file:
             sha256 = hashlib.sha256(file.read()).hexdigest()
     except OSError as error:
         raise CalibrationError("%s: cannot read the journal %s: %s" % (where, path, error.strerror or error)) from None
+    log = _log_reader()
     scene, steps, calls = None, [], {}
     try:
         for event, message in log.messages(path):

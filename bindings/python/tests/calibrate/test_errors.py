@@ -177,6 +177,22 @@ class BadInput(unittest.TestCase):
         with self.assertRaisesRegex(calibrate.CalibrationError, "no shipped experiment 'cantilevre'"):
             calibrate.experiment_path("cantilevre")
 
+    def test_every_shipped_experiment_loads_and_simulates(self):
+        import math
+        for name in calibrate.EXPERIMENTS:
+            with self.subTest(name):
+                if name == "lcm_journal":  # its journal is the user's recording (test_journal.py makes one)
+                    with self.assertRaisesRegex(calibrate.CalibrationError, "lcm_journal.json: journal: cannot read "
+                                                                            "the journal .*session.journal"):
+                        calibrate.load_experiment(calibrate.experiment_path(name))
+                    continue
+                experiment = calibrate.load_experiment(calibrate.experiment_path(name))
+                end = experiment.duration_s
+                requests = [(measurement, round(end * k / 4, 9)) for measurement in experiment.measurements
+                            for k in range(1, 5)]
+                predictions = calibrate.Plan(experiment, requests).predict([p.start for p in experiment.parameters])
+                self.assertTrue(all(math.isfinite(v) for v in predictions), predictions)
+
     def test_a_simulation_that_fails_during_the_fit_is_ranked_last_not_fatal(self):
         # symplectic Euler held to 6 substeps per 1 ms step: its stability limit needs more
         # above a stretch stiffness of about 300 N. Those simulations fail with the library's
