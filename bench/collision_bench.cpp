@@ -3,7 +3,7 @@
 // environment (the inside of a 30 cm box), self-collision (spheres of radius R every R/2
 // along the axis) and a tool pressed into the pile and sweeping it, per integrator. Through the C API only. The scene is the demo's
 // (examples/demo.c) with N control points: a helix dropped near the floor of the box,
-// held by its mesentery, settled for settle_s with implicit Euler. Every timed scene
+// held by its mesentery, settled for 2 s with implicit Euler (pile_with_tool.h). Every timed scene
 // starts at rest from that settled pile (its control points as the initial shape, so the
 // mesentery's springs take their lengths there): the explicit integrators need hundreds
 // of substeps per step once self-contact is on, and settling each of them would take
@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "bowel_scene.h"
+#include "pile_with_tool.h"
 #include "step_timing.h"
 
 #ifdef ENTERON_HAVE_MUJOCO
@@ -44,8 +45,6 @@ namespace {
 using namespace enteron::bench;
 
 constexpr double step_s = kStepS;
-constexpr double settle_s = 2.0;
-constexpr double box_half_extent_m = 0.15;
 
 // Steps timed per integrator: a simulated second for implicit Euler, less for the explicit
 // integrators, whose steps cost hundreds of substeps with self-contact.
@@ -54,87 +53,11 @@ int timed_steps(int32_t integrator) {
 }
 
 // N = 240 is the issue's target; the smaller ones show how the gap to MuJoCo grows with N.
-constexpr uint32_t control_point_counts[] = {60, 120, 240};
-
-// The demo's bowel (examples/demo.c): every effect; the box comes with cavity_desc().
-// Collision spheres every R / 2 (the default spacing 0).
-ent_scene_desc collision_bowel_desc(int32_t integrator, uint32_t control_points) {
-    return bowel_desc(integrator, control_points,
-                      ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
-                          ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) |
-                          ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY) | ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION),
-                      -0.13, 0.025);
-}
-
-ent_obstacle_desc cavity_desc() {
-    ent_obstacle_desc box;
-    ent_obstacle_desc_default(&box);
-    box.kind = ENT_OBSTACLE_BOX_INSIDE;
-    for (int c = 0; c < 3; ++c) {
-        box.center_m[c] = 0.0;
-        box.half_extents_m[c] = box_half_extent_m;
-    }
-    return box;
-}
-
-// Our bowel in the cavity; settle_steps steps taken. Returns nullptr (and the message) on
-// failure. `points`, if not empty, is the initial shape (N x 3, m).
-ent_scene* bowel_in_cavity(int32_t integrator, uint32_t control_points, const std::vector<double>& points,
-                           int settle_steps, std::string* error) {
-    ent_scene_desc desc = collision_bowel_desc(integrator, control_points);
-    if (!points.empty()) {
-        desc.shape = ENT_SHAPE_POINTS;
-        desc.shape_points_xyz_m = points.data();
-    }
-    ent_scene* scene = nullptr;
-    ent_status status = ent_scene_create(&desc, &scene);
-    if (status != ENT_OK) {
-        *error = last_error("ent_scene_create", status);
-        return nullptr;
-    }
-    const ent_obstacle_desc box = cavity_desc();
-    status = ent_scene_add_obstacle(scene, &box, nullptr);
-    if (status != ENT_OK) {
-        *error = last_error("ent_scene_add_obstacle", status);
-        ent_scene_destroy(scene);
-        return nullptr;
-    }
-    for (int i = 0; i < settle_steps; ++i) {
-        status = ent_scene_step(scene, step_s);
-        if (status != ENT_OK) {
-            *error = last_error("ent_scene_step (settling)", status);
-            ent_scene_destroy(scene);
-            return nullptr;
-        }
-    }
-    return scene;
-}
-
-// The control points of the bowel settled with implicit Euler, once per N (shared by every
-// benchmark of that N). Empty, with the message in *error, on failure.
-const std::vector<double>& settled_pile(uint32_t control_points, std::string* error) {
-    static std::vector<std::pair<uint32_t, std::vector<double>>> piles;
-    for (const auto& [n, points] : piles)
-        if (n == control_points) return points;
-    std::vector<double> points;
-    const int settle_steps = static_cast<int>(std::lround(settle_s / step_s));
-    ent_scene* scene = bowel_in_cavity(ENT_INTEGRATOR_IMPLICIT_EULER, control_points, {}, settle_steps, error);
-    if (scene != nullptr) {
-        points.resize(3 * static_cast<std::size_t>(control_points));
-        uint32_t count = 0;
-        const ent_status status = ent_scene_control_points(scene, control_points, points.data(), &count);
-        if (status != ENT_OK) {
-            *error = last_error("ent_scene_control_points", status);
-            points.clear();
-        }
-        ent_scene_destroy(scene);
-    }
-    if (points.empty()) {
-        static const std::vector<double> none;
-        return none;
-    }
-    piles.emplace_back(control_points, std::move(points));
-    return piles.back().second;
+// N = 960 (the implicit integrators only: an explicit step there takes seconds) is the
+// finest bowel a haptic tick should hold (issue 31).
+constexpr uint32_t control_point_counts[] = {60, 120, 240, 960};
+bool timed_at(int32_t integrator, uint32_t control_points) {
+    return control_points < 960 || integrator == ENT_INTEGRATOR_IMPLICIT_EULER || integrator == ENT_INTEGRATOR_BDF2;
 }
 
 void set_timing_counters(benchmark::State& state, std::vector<double>& samples_us) {
@@ -162,31 +85,6 @@ bool axis_finite(const ent_scene* scene, uint32_t control_points) {
     return std::all_of(points.begin(), points.end(), [](double x) { return std::isfinite(x); });
 }
 
-// The tool in contact: a grasper (the default tool, 5 mm shaft) coming down vertically onto
-// the highest control point of the pile and holding its tip tool_press_m into the bowel
-// above that point as the point moves, while sliding tool_sweep_m back and forth along x
-// at tool_sweep_hz (friction drags the surface), its pose set before every step from the
-// last published state, as a haptic loop would.
-constexpr double tool_press_m = 0.005;
-constexpr double tool_sweep_m = 0.01;
-constexpr double tool_sweep_hz = 1.0;
-constexpr double kPi = 3.14159265358979323846;
-
-std::size_t highest_point(const std::vector<double>& points) {
-    std::size_t top = 0;
-    for (std::size_t i = 0; 3 * i < points.size(); ++i)
-        if (points[3 * i + 2] > points[3 * top + 2]) top = i;
-    return top;
-}
-
-// The tip over control point `held` of `points` at time_s.
-void tool_position_at(const std::vector<double>& points, std::size_t held, double reach_m, double time_s,
-                      double position_m[3]) {
-    position_m[0] = points[3 * held] + tool_sweep_m * std::sin(2.0 * kPi * tool_sweep_hz * time_s);
-    position_m[1] = points[3 * held + 1];
-    position_m[2] = points[3 * held + 2] + reach_m;
-}
-
 void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t control_points) {
     std::string error;
     const std::vector<double>& pile = settled_pile(control_points, &error);
@@ -201,10 +99,8 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
     }
     ent_tool_desc tool;
     ent_tool_desc_default(&tool);
-    const std::size_t held = highest_point(pile);
-    // Tip above the axis point by the two radii less the press depth.
-    const double reach_m = collision_bowel_desc(integrator, control_points).radius_m + tool.radius_m - tool_press_m;
-    tool_position_at(pile, held, reach_m, 0.0, tool.position_m);  // the shaft rises from the tip along +z
+    const PileTool pile_tool(pile, pile_bowel_desc(integrator, control_points).radius_m, tool.radius_m);
+    pile_tool.position_at(pile, 0.0, tool.position_m);
     std::vector<double> points = pile;
     int32_t tool_id = -1;
     ent_status added = ent_tool_add(scene, &tool, &tool_id);
@@ -235,7 +131,7 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
         ent_scene_control_points(scene, control_points, points.data(), &count);
         double position[3];
         const double upright[4] = {1.0, 0.0, 0.0, 0.0};
-        tool_position_at(points, held, reach_m, tool_time_s, position);
+        pile_tool.position_at(points, tool_time_s, position);
         ent_status status = ent_tool_set_pose(scene, tool_id, position, upright);
         if (status == ENT_OK)
             status = timed_iteration(state, samples_us, [&] { return ent_scene_step(scene, step_s); });
@@ -261,7 +157,7 @@ void collision_benchmark(benchmark::State& state, int32_t integrator, uint32_t c
     ent_stats after;
     if (!failed && !samples_us.empty() && read_stats(scene, &after)) {
         const double steps = static_cast<double>(samples_us.size());
-        const ent_scene_desc desc = collision_bowel_desc(integrator, control_points);
+        const ent_scene_desc desc = pile_bowel_desc(integrator, control_points);
         const double spacing = desc.collision_sphere_spacing_m > 0.0 ? desc.collision_sphere_spacing_m
                                                                      : 0.5 * desc.radius_m;
         set_timing_counters(state, samples_us);
@@ -309,12 +205,12 @@ void mujoco_benchmark(benchmark::State& state, uint32_t control_points) {
         state.SkipWithError(error.c_str());
         return;
     }
-    const ent_scene_desc scene_desc = collision_bowel_desc(ENT_INTEGRATOR_IMPLICIT_EULER, control_points);
+    const ent_scene_desc scene_desc = pile_bowel_desc(ENT_INTEGRATOR_IMPLICIT_EULER, control_points);
     enteron::peers::MujocoRopeDesc desc = enteron::peers::mujoco_rope_desc_from(scene_desc);
     desc.box = true;
     for (int c = 0; c < 3; ++c) {
         desc.box_center_m[c] = 0.0;
-        desc.box_half_extents_m[c] = box_half_extent_m;
+        desc.box_half_extents_m[c] = kCavityHalfExtentM;
     }
     // Room for a dense pile: every capsule touching a few others and the walls (the settled
     // pile makes under two contacts per capsule; a full buffer is counted as an overflow).
@@ -366,6 +262,7 @@ int main(int argc, char** argv) {
     }
     for (const uint32_t n : control_point_counts) {
         for (const Integrator& integrator : kIntegrators) {
+            if (!timed_at(integrator.id, n)) continue;
             const std::string name = std::string("collision/") + integrator.name + "/" + std::to_string(n);
             benchmark::RegisterBenchmark(name.c_str(), collision_benchmark, integrator.id, n)
                 ->UseManualTime()
@@ -373,6 +270,7 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMicrosecond);
         }
 #ifdef ENTERON_HAVE_MUJOCO
+        if (n >= 960) continue;  // its dense chain takes seconds a step there
         const std::string name = "collision/mujoco_rope/" + std::to_string(n);
         benchmark::RegisterBenchmark(name.c_str(), mujoco_benchmark, n)
             ->UseManualTime()

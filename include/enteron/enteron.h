@@ -428,7 +428,19 @@ ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double
 ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t capacity,
                                             double* points_xyz_m, uint32_t* out_count);
 
-/** Counters and energies of the last published state. */
+/**
+ * Counters and energies of the last published state.
+ *
+ * The fields from last_step_attempts on tell what a slow step did, so that a simulator can
+ * see in the field what `enteron_tail_bench` shows on a bench (docs/performance.md, "The
+ * tail"): read them after a step whose last_step_ns was long. A step's wall time grows with
+ * its attempts (each rejected attempt is redone with twice the substeps), its substeps, its
+ * contacts and its tool proxies' iterations; a step that did no more work than its
+ * neighbours but took longer was held up by the machine (preempted, a page fault): the
+ * library makes no system call in a step, so it cannot see those itself. These fields
+ * describe this scene's run, not its state: ent_scene_save_state does not save them and
+ * ent_scene_restore_state leaves them as they were.
+ */
 typedef struct ent_stats {
     uint32_t struct_size;          /**< set by the caller to sizeof(ent_stats). */
     uint32_t control_points;       /**< number of control points. */
@@ -441,11 +453,22 @@ typedef struct ent_stats {
     uint32_t contacts;             /**< contacts in the last substep. */
     double max_penetration_m;      /**< deepest contact in the last substep. */
     uint64_t last_step_ns;         /**< wall time of the last ent_scene_step. */
+    /* Appended later: an older struct ends at last_step_ns (see ent_scene_stats). */
+    uint32_t last_step_attempts;   /**< attempts of the last ent_scene_step: 1, or 1 + the subdivisions the guard made (max_subdivisions + 1 for a step that failed); 0 before the first step. */
+    uint32_t last_step_substeps;   /**< substeps the last step integrated, its rejected attempts' included. */
+    uint32_t last_step_proxy_iterations;  /**< the most Newton iterations one tool proxy's solve took in the last step (at most 64; 0 without a proxy in contact or moving). */
+    uint32_t last_step_proxy_evaluations; /**< the proxies' force balances evaluated in the last step, all tools and solves (each iteration, each halving of its line search): their work. */
+    uint64_t max_step_ns;          /**< wall time of the longest ent_scene_step so far. */
+    uint64_t late_steps;           /**< steps (failed ones too) whose wall time exceeded the dt_s they simulated: slower than real time. */
+    uint64_t subdivided_steps;     /**< successful steps that took more than one attempt. */
+    uint64_t proxy_unbalanced_solves; /**< tool proxy solves that ran out of iterations before their forces balanced (the proxy then rests where the last iteration left it). */
+    uint64_t full_contact_searches;   /**< self-contact searches that listed the near pairs of every collision sphere (at the first step, and when a quarter of the spheres moved R/6 since their last search); the other steps search only the spheres that moved. */
 } ent_stats;
 
 /**
  * Copies the stats of the last published state into *out. Set out->struct_size first;
- * fields beyond an older, smaller struct_size are not written. Safe from any thread.
+ * fields beyond an older, smaller struct_size are not written (older headers end it at
+ * last_step_ns, or before it). Safe from any thread.
  */
 ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out);
 

@@ -167,8 +167,11 @@ ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
         require(out, "out");
         // The sizes of ent_stats in released headers; fields past an older size are not
         // written. 0.0 preview: without last_step_ns (a simulated release, see
-        // complete_desc in scene_desc.cpp and tests/abi/); 0.1: the current header.
-        enteron::capi::check_struct_size(out->struct_size, {offsetof(ent_stats, last_step_ns), sizeof(ent_stats)},
+        // complete_desc in scene_desc.cpp and tests/abi/); 0.1: up to last_step_ns; then the
+        // current header, with what a slow step did.
+        enteron::capi::check_struct_size(out->struct_size,
+                                         {offsetof(ent_stats, last_step_ns), offsetof(ent_stats, last_step_attempts),
+                                          sizeof(ent_stats)},
                                          "ent_stats");
         const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
         const enteron::scene::SceneStats& stats = snapshot->stats;
@@ -184,6 +187,15 @@ ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
         full.contacts = stats.contacts;
         full.max_penetration_m = stats.max_penetration;
         full.last_step_ns = stats.last_step_ns;
+        full.last_step_attempts = stats.last_step_attempts;
+        full.last_step_substeps = stats.last_step_substeps;
+        full.last_step_proxy_iterations = stats.work.proxy_iterations;
+        full.last_step_proxy_evaluations = stats.work.proxy_evaluations;
+        full.max_step_ns = stats.max_step_ns;
+        full.late_steps = stats.late_steps;
+        full.subdivided_steps = stats.subdivided_steps;
+        full.proxy_unbalanced_solves = stats.work.proxy_unbalanced;
+        full.full_contact_searches = stats.work.full_contact_searches;
         std::memcpy(out, &full, out->struct_size);
     });
 }

@@ -41,6 +41,8 @@ public:
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
+    // Its searches of every sphere so far (the slow path of find_near_pairs).
+    void add_work(mechanics::StepWork& work) const override { work.full_contact_searches += searches_; }
     // The near pairs, the grid's filing and the centres they were found at: the
     // continuation of a restored scene finds its pairs in the same order, and so sums the
     // same forces in the same order. Also the contacts of the last evaluation (published).

@@ -113,6 +113,7 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
     }
     result.position = p;
     result.velocity = vp;
+    result.evaluations += 1;
     bound_ = bound;
     raw_ = raw;
     jacobian = (problem.coupling_stiffness + problem.coupling_damping * rate) * bound + given_rate;
@@ -179,6 +180,7 @@ ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector
         residual = trial_residual;
     }
     result.iterations = iteration;
+    result.balanced = result.residual <= tolerance;
     // d(-F_c)/dx at rest: F_c moves with x directly (v_x held) and through p, which follows
     // dp/dx = J^-1 dF_c/dx so that the balance holds.
     const Mat3 direct = problem.coupling_stiffness * bound_;

@@ -81,7 +81,9 @@ struct ProxyResult {
     bool grasp_taut = false;
     Mat3 device_stiffness = Mat3::Zero();  // d(-F_c)/dx with v_x held, N/m
     int iterations = 0;
+    int evaluations = 0;    // of the balance: one per iteration, one per line-search halving, and the start
     double residual = 0.0;  // |F_c - sum of the forces given to the bowel|, N
+    bool balanced = false;  // residual within kTolerance max_force (else the iterations ran out)
 };
 
 class ToolProxy {

@@ -344,12 +344,14 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
         problem.grasp.damping = tool.settings.grasp_damping;
     }
     ProxyResult result = proxy_.solve(problem, candidates_);
+    count_proxy_work(result);
     // Holding would take more than max_force: the grasp slips (released when the step is
     // accepted) and the proxy rests without it.
     if (holding && result.grasp_taut && result.saturated) {
         tool.slipped = true;
         problem.grasp.holding = false;
         result = proxy_.solve(problem, candidates_);
+        count_proxy_work(result);
     }
     tool.evaluated_proxy = result.position;
     tool.evaluated_proxy_velocity = result.velocity;
@@ -541,6 +543,18 @@ void ToolsForce::add_contacts(mechanics::ContactSummary& summary) const {
     summary.max_penetration = std::max(summary.max_penetration, last_.max_penetration);
 }
 
+void ToolsForce::count_proxy_work(const ProxyResult& result) {
+    step_proxy_iterations_ = std::max(step_proxy_iterations_, static_cast<uint32_t>(result.iterations));
+    step_proxy_evaluations_ += static_cast<uint32_t>(result.evaluations);
+    proxy_unbalanced_ += result.balanced ? 0 : 1;
+}
+
+void ToolsForce::add_work(mechanics::StepWork& work) const {
+    work.proxy_iterations = std::max(work.proxy_iterations, step_proxy_iterations_);
+    work.proxy_evaluations += step_proxy_evaluations_;
+    work.proxy_unbalanced += proxy_unbalanced_;
+}
+
 double ToolsForce::external_work_bound() const {
     if (!(step_dt_ > 0.0)) return 0.0;
     double work = 0.0;
@@ -580,6 +594,7 @@ bool ToolsForce::begin_step(const mechanics::State& state, double dt) {
     }
     step_start_ = state.time;
     step_dt_ = dt;
+    step_proxy_iterations_ = step_proxy_evaluations_ = 0;
     return grasp_changed;
 }
 

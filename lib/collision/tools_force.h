@@ -68,6 +68,9 @@ public:
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override;
+    // The proxies' Newton iterations and balance evaluations in the current step, and their
+    // unbalanced solves so far.
+    void add_work(mechanics::StepWork& work) const override;
     double external_work_bound() const override;
 
     // Takes each tool's commands (a grasp picks the axis point nearest the tip, within
@@ -213,6 +216,12 @@ private:
     const mechanics::BorderedSystem* border_ = nullptr;  // of the last evaluation, if implicit
     double step_start_ = 0.0;
     double step_dt_ = 0.0;  // 0 between steps
+    // The proxies' work in the current step (every attempt), for StepWork; counted by
+    // count_proxy_work, cleared by begin_step.
+    uint32_t step_proxy_iterations_ = 0;   // the most of one solve
+    uint32_t step_proxy_evaluations_ = 0;  // of all solves
+    uint64_t proxy_unbalanced_ = 0;        // solves that ran out of iterations, so far
+    void count_proxy_work(const ProxyResult& result);
     mechanics::ContactSummary last_;
     ContactLog log_;
 };

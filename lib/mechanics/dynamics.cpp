@@ -283,6 +283,12 @@ ContactSummary Dynamics::contacts() const {
     return summary;
 }
 
+StepWork Dynamics::work() const {
+    StepWork work;
+    for (const Owned<Effect>& effect : effects_) effect->add_work(work);
+    return work;
+}
+
 double Dynamics::external_work_bound() const {
     double work = 0.0;
     for (const Owned<Effect>& effect : effects_) work += effect->external_work_bound();

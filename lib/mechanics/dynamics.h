@@ -96,6 +96,8 @@ public:
 
     // Contacts of the effects' last evaluations.
     ContactSummary contacts() const;
+    // What the effects counted of the last step's work and of their slow paths (StepWork).
+    StepWork work() const;
 
     // Save and restore (base/state_io.h): the effect counters in a section of their own,
     // then each effect's section (Effect::save_state), the pins' last. restore_state reads

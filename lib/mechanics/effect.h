@@ -13,6 +13,7 @@
 
 #include "mechanics/effect_id.h"
 #include "mechanics/state.h"
+#include "mechanics/step_work.h"
 #include "mechanics/system_matrix.h"
 #include "spline/gram_matrix.h"
 
@@ -82,6 +83,8 @@ public:
 
     // Adds the contacts of the last evaluation (effects that make contacts only).
     virtual void add_contacts(ContactSummary& /*summary*/) const {}
+    // Adds what this effect counts of a step's work (StepWork; effects with slow paths only).
+    virtual void add_work(StepWork& /*work*/) const {}
 
     // An upper bound of the work (J) this effect may do on the bowel during the current
     // step from outside the system (a tool driven by the caller); the guard allows that

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "base/error.h"
@@ -410,6 +411,7 @@ void Scene::step(double dt) {
         throw Error(ErrorCode::invalid_argument, message);
     }
     const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
+    const uint64_t substeps_before = stats_.substeps;
 
     backup_.assign(state_);
     frames_.begin_step(state_.time, dt);
@@ -425,7 +427,8 @@ void Scene::step(double dt) {
             dynamics_.end_step(true);
             frames_.end_step(true);
             stats_.steps += 1;
-            stats_.last_step_ns = elapsed_ns(start);
+            stats_.subdivided_steps += attempt > 0 ? 1 : 0;
+            count_step(attempt + 1, stats_.substeps - substeps_before, dt, start);
             publish();
             return;
         }
@@ -441,9 +444,18 @@ void Scene::step(double dt) {
     integrator_->restore_history();
     dynamics_.end_step(false);
     frames_.end_step(false);
-    stats_.last_step_ns = elapsed_ns(start);
+    count_step(solver_.max_subdivisions + 1, stats_.substeps - substeps_before, dt, start);
     publish();  // the same state, with the counters of the failed attempts
     throw Error(ErrorCode::unstable, message);
+}
+
+void Scene::count_step(std::size_t attempts, uint64_t substeps, double dt,
+                       std::chrono::steady_clock::time_point start) {
+    stats_.last_step_ns = elapsed_ns(start);
+    stats_.last_step_attempts = static_cast<uint32_t>(attempts);
+    stats_.last_step_substeps = static_cast<uint32_t>(std::min<uint64_t>(substeps, std::numeric_limits<uint32_t>::max()));
+    stats_.max_step_ns = std::max(stats_.max_step_ns, stats_.last_step_ns);
+    stats_.late_steps += static_cast<double>(stats_.last_step_ns) > dt * 1e9 ? 1 : 0;
 }
 
 bool Scene::try_step(double dt, std::size_t substeps) {
@@ -523,6 +535,7 @@ void Scene::publish() {
     stats_.max_penetration = contacts.max_penetration;
     stats_.kinetic_energy = guard_.reference().kinetic;
     stats_.potential_energy = guard_.reference().potential;
+    stats_.work = dynamics_.work();
     slot->stats = stats_;
     for (std::size_t e = 0; e < kEffectCount; ++e) {
         const EffectId id = static_cast<EffectId>(e);

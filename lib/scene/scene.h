@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <memory_resource>
 #include <optional>
 #include <string>
@@ -123,6 +124,9 @@ public:
 private:
     // One attempt at dt in `substeps` equal substeps; false if the guard rejects it.
     bool try_step(double dt, std::size_t substeps);
+    // The counters of a step that took `attempts` attempts and `substeps` substeps in all
+    // to simulate dt seconds, from `start` until now (ent_stats).
+    void count_step(std::size_t attempts, uint64_t substeps, double dt, std::chrono::steady_clock::time_point start);
     // The message of a step the guard could not save (before the state is restored).
     std::string unstable_message(double dt, std::size_t substeps);
     // Collision sphere spacing at rest, m.

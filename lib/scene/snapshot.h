@@ -24,6 +24,7 @@
 #include "collision/tool.h"
 #include "mechanics/effect_id.h"
 #include "mechanics/rigid_frames.h"
+#include "mechanics/step_work.h"
 #include "spline/catmull_rom.h"
 
 namespace enteron::scene {
@@ -39,6 +40,14 @@ struct SceneStats {
     double max_penetration = 0.0;  // m
     uint64_t last_step_ns = 0;
     double rest_length = 0.0;  // m, of the axis (constant)
+    // What the last step did (every attempt) and the slow paths so far (ent_stats): the
+    // scene's run, not its state (a restore leaves them).
+    uint32_t last_step_attempts = 0;
+    uint32_t last_step_substeps = 0;
+    uint64_t max_step_ns = 0;
+    uint64_t late_steps = 0;        // wall time over the dt they simulated
+    uint64_t subdivided_steps = 0;  // accepted after more than one attempt
+    mechanics::StepWork work;       // the effects' counts (effect.h)
 };
 
 // The contacts of the last evaluation, as the scene published them.
