@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "base/hot_kernel.h"
+#include "numerics/lanes.h"
 
 namespace enteron::collision {
 
@@ -35,7 +36,7 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
     velocities_.assign(3 * spheres_.size(), 0.0);
 }
 
-const double* CollisionSpheres::velocities(const double* v) {
+ENTERON_HOT_KERNEL const double* CollisionSpheres::velocities(const double* v) {
     const std::size_t bytes = velocities_for_.size() * sizeof(double);
     if (velocities_placement_ == placement_ && std::memcmp(velocities_for_.data(), v, bytes) == 0)
         return velocities_.data();
@@ -102,7 +103,13 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
         const spline::SegmentWeights& w1 = weights[interval + 1];
         Sphere& sphere = spheres[j];
         sphere.weights.first = w0.first;
-        for (int c = 0; c < 4; ++c) sphere.weights.w[c] = (1.0 - t) * w0.w[c] + t * w1.w[c];
+        // w = (1 - t) w0 + t w1, the four weights in lanes (numerics/lanes.h: the same bits).
+        const numerics::Quad keep = {1.0 - t, 1.0 - t, 1.0 - t, 1.0 - t}, take = {t, t, t, t};
+        numerics::Quad a, b;
+        std::memcpy(&a, w0.w.data(), sizeof a);
+        std::memcpy(&b, w1.w.data(), sizeof b);
+        const numerics::Quad w = keep * a + take * b;
+        std::memcpy(sphere.weights.w.data(), &w, sizeof w);
         sphere.center = (1.0 - t) * point_at(points, interval) + t * point_at(points, interval + 1);
         sphere.arc_length = target;
     }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "base/hot_kernel.h"
 #include "mechanics/system_matrix.h"
 
 namespace enteron::collision {
@@ -82,7 +83,7 @@ std::size_t EnvironmentForce::live_count() const {
     return count;
 }
 
-void EnvironmentForce::find_contacts(const mechanics::State& state, double t) const {
+ENTERON_HOT_KERNEL void EnvironmentForce::find_contacts(const mechanics::State& state, double t) const {
     spheres_.update(state.q.data());
     const bool moving = frames_.any_moving();
     if (contacts_for_ == spheres_.placement() && (!moving || contacts_time_ == t)) return;

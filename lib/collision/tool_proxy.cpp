@@ -33,8 +33,14 @@ constexpr int kMaxHalvings = 10;
 double free_fraction(const ProxyProblem& problem, const std::pmr::vector<ProxyCandidate>& candidates, const Vec3& p,
                      const Vec3& step) {
     const Shaft shaft(p, p + problem.shaft, problem.reach);
+    // Within the step (t <= 1) the shaft comes no closer to a centre than the centre's
+    // distance to the box around it less the step's length: a centre outside the box
+    // widened by the step (and a hundredth of the reach, for rounding) cannot be met, and
+    // first_touch is not asked about it.
+    const Shaft swept(p, p + problem.shaft, 1.01 * problem.reach + step.norm());
     double first = 1.0;
     for (const ProxyCandidate& candidate : candidates) {
+        if (!swept.in_box(candidate.center)) continue;
         double s, distance2;
         Vec3 d;
         if (shaft.touches(candidate.center, &s, &d, &distance2)) continue;

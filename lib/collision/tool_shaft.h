@@ -35,10 +35,13 @@ struct Shaft {
     // true if the sphere reaches into the tool (false, the rest unset, when p is outside
     // the box).
     bool touches(const Vec3& p, double* s, Vec3* d, double* distance2) const {
-        if (((p.array() < low.array()) || (p.array() > high.array())).any()) return false;
+        if (!in_box(p)) return false;
         closest(p, s, d, distance2);
         return *distance2 < reach * reach;
     }
+
+    // Whether p lies in the box around the shaft (else it is farther than reach from it).
+    bool in_box(const Vec3& p) const { return !((p.array() < low.array()) || (p.array() > high.array())).any(); }
 
     // The same without the box: s, d and |d|^2 for any centre.
     void closest(const Vec3& p, double* s, Vec3* d, double* distance2) const {

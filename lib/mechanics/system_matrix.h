@@ -65,16 +65,10 @@ inline void add_point_force(const spline::SegmentWeights& weights, const Vec3& f
 }
 
 // add_point_force for two spline points on the same four control points (the two Gauss
-// nodes of a segment): each coordinate of `out` is read and written once.
-inline void add_point_force_pair(const spline::SegmentWeights& weights0, const Vec3& f0,
-                                 const spline::SegmentWeights& weights1, const Vec3& f1, double* out) {
-    const double w0[4] = {weights0.w[0], weights0.w[1], weights0.w[2], weights0.w[3]};
-    const double w1[4] = {weights1.w[0], weights1.w[1], weights1.w[2], weights1.w[3]};
-    const double g0[3] = {f0[0], f0[1], f0[2]}, g1[3] = {f1[0], f1[1], f1[2]};
-    double* o = out + 3 * weights0.first;
-    for (int k = 0; k < 4; ++k)
-        for (int c = 0; c < 3; ++c) o[3 * k + c] += w0[k] * g0[c] + w1[k] * g1[c];
-}
+// nodes of a segment): out[3 (first + k) + c] += w0_k f0_c + w1_k f1_c, each coordinate of
+// `out` read and written once, the twelve in lanes (a hot kernel: AVX where there is).
+void add_point_force_pair(const spline::SegmentWeights& weights0, const Vec3& f0,
+                          const spline::SegmentWeights& weights1, const Vec3& f1, double* out);
 
 }  // namespace enteron::mechanics
 

@@ -16,13 +16,9 @@
 #include <vector>
 
 #include "base/hot_kernel.h"
+#include "numerics/lanes.h"
 
 namespace enteron::numerics {
-
-// Two doubles that the compiler keeps in one SIMD register where there is one (GCC/Clang
-// vector extension; elsewhere it lowers to scalar code).
-typedef double Pair __attribute__((vector_size(2 * sizeof(double))));
-typedef double Quad __attribute__((vector_size(4 * sizeof(double))));
 
 template <int P>
 class BandedSpdMatrix {
