@@ -105,26 +105,17 @@ void sample_target(const ent_exposure_desc& desc, ExposureHandle& h) {
     h.element_first.push_back(h.weights.size());
 }
 
+// Counts before arrays: a count claim far beyond the arrays is refused before they are read.
 void check_desc(const ent_exposure_desc& desc) {
     require(desc.points_xyz_m, "desc.points_xyz_m");
     Checked<uint32_t>(desc.point_count, "desc.point_count", ErrorCode::invalid_argument).at_least(1).at_most(kMostPoints);
-    for (std::size_t i = 0; i < 3 * std::size_t{desc.point_count}; ++i)
-        if (!std::isfinite(desc.points_xyz_m[i]))
-            throw Error(ErrorCode::invalid_argument,
-                        "desc.points_xyz_m[" + std::to_string(i / 3) + "] must be finite");
     if (desc.triangles == nullptr && desc.triangle_count > 0)
         throw Error(ErrorCode::invalid_argument,
                     "desc.triangles is NULL with a triangle_count of " + std::to_string(desc.triangle_count));
-    if (desc.triangles != nullptr) {
+    if (desc.triangles != nullptr)
         Checked<uint32_t>(desc.triangle_count, "desc.triangle_count", ErrorCode::invalid_argument)
             .at_least(1)
             .at_most(kMostTriangles);
-        for (std::size_t k = 0; k < 3 * std::size_t{desc.triangle_count}; ++k)
-            if (desc.triangles[k] >= desc.point_count)
-                throw Error(ErrorCode::invalid_argument, "desc.triangles[" + std::to_string(k / 3) + "] has index " +
-                                                             std::to_string(desc.triangles[k]) + ", past the " +
-                                                             std::to_string(desc.point_count) + " points");
-    }
     Checked<uint32_t>(desc.samples_per_edge, "desc.samples_per_edge", ErrorCode::invalid_argument).at_least(1).at_most(32);
     const uint64_t samples = desc.triangles != nullptr
                                  ? uint64_t{desc.triangle_count} * desc.samples_per_edge * desc.samples_per_edge
@@ -135,6 +126,16 @@ void check_desc(const ent_exposure_desc& desc) {
     Checked<uint32_t>(desc.axis_chords_per_segment, "desc.axis_chords_per_segment", ErrorCode::invalid_argument)
         .at_least(1)
         .at_most(64);
+    for (std::size_t i = 0; i < 3 * std::size_t{desc.point_count}; ++i)
+        if (!std::isfinite(desc.points_xyz_m[i]))
+            throw Error(ErrorCode::invalid_argument,
+                        "desc.points_xyz_m[" + std::to_string(i / 3) + "] must be finite");
+    if (desc.triangles != nullptr)
+        for (std::size_t k = 0; k < 3 * std::size_t{desc.triangle_count}; ++k)
+            if (desc.triangles[k] >= desc.point_count)
+                throw Error(ErrorCode::invalid_argument, "desc.triangles[" + std::to_string(k / 3) + "] has index " +
+                                                             std::to_string(desc.triangles[k]) + ", past the " +
+                                                             std::to_string(desc.point_count) + " points");
     if (desc.weights != nullptr) {
         const std::size_t count = desc.triangles != nullptr ? desc.triangle_count : desc.point_count;
         for (std::size_t i = 0; i < count; ++i)
