@@ -21,7 +21,7 @@ double distance_squared_to_segment(const Vec3& x, const Vec3& a, const Vec3& b) 
 
 }  // namespace
 
-void TubeOcclusion::add_tube(int32_t tube, const double* radii, std::size_t samples) {
+void TubeOcclusion::add_tube(int32_t tube, const double* radii, std::size_t samples, std::size_t chords_per_run) {
     if (samples < 2) throw Error(ErrorCode::internal, "a tube needs two axis samples");
     const std::size_t first = positions_.size();
     tubes_.push_back({tube, first, samples});
@@ -30,13 +30,18 @@ void TubeOcclusion::add_tube(int32_t tube, const double* radii, std::size_t samp
     u_.resize(first + samples, 0.0);
     chord_hides_.resize(first + samples, 0);
     chord_span_.resize(first + samples, -1);
-    for (std::size_t chord = 0; chord + 1 < samples; chord += kRunChords)
-        runs_.push_back({first + chord, std::min(kRunChords, samples - 1 - chord), tubes_.size() - 1});
+    chords_per_run = std::max<std::size_t>(chords_per_run, 1);
+    for (std::size_t chord = 0; chord + 1 < samples; chord += chords_per_run)
+        runs_.push_back({first + chord, std::min(chords_per_run, samples - 1 - chord), tubes_.size() - 1});
     // At most one span per two chords (a span and a gap), plus one per tube.
     spans_.reserve(positions_.size() / 2 + tubes_.size());
 }
 
-void TubeOcclusion::reserve_sight_lines(std::size_t sight_lines) { line_hidden_.resize(sight_lines, 0); }
+void TubeOcclusion::reserve_sight_lines(std::size_t sight_lines) {
+    line_hidden_.resize(sight_lines, 0);
+    line_runs_.resize(sight_lines, 0);
+    line_run_chords_.resize(sight_lines * kRunsPerLine, 0);
+}
 
 void TubeOcclusion::prepare() {
     for (Tube& tube : tubes_) {
@@ -84,33 +89,45 @@ OcclusionTotals TubeOcclusion::measure(const Vec3& eye, const double* targets_xy
     if (count > line_hidden_.size()) throw Error(ErrorCode::internal, "more sight lines than reserved");
     std::fill(chord_hides_.begin(), chord_hides_.end(), 0);
     OcclusionTotals totals;
-    // Pass 1: which sight lines are hidden, and which chords hide.
+    // Pass 1: which sight lines are hidden, which chords hide, and the runs each line crosses.
     for (std::size_t line = 0; line < count; ++line) {
-        bool hidden = false;
+        std::size_t runs = 0, last_chord = 0;
+        uint32_t* run_chords = &line_run_chords_[line * kRunsPerLine];
         for_each_hiding_chord(eye, point_at(targets_xyz, line), [&](std::size_t chord) {
             chord_hides_[chord] = 1;
-            hidden = true;
+            if (runs == 0 || chord != last_chord + 1) {
+                if (runs < kRunsPerLine) run_chords[runs] = static_cast<uint32_t>(chord);
+                runs = std::min(runs + 1, kRunsPerLine + 1);
+            }
+            last_chord = chord;
         });
-        line_hidden_[line] = hidden ? 1 : 0;
+        line_runs_[line] = static_cast<uint8_t>(runs);
+        line_hidden_[line] = runs > 0 ? 1 : 0;
         totals.total_weight += weights[line];
-        if (hidden) {
+        if (runs > 0) {
             totals.hidden_lines += 1;
         } else {
             totals.visible_weight += weights[line];
         }
     }
     make_spans();
-    // Pass 3: each hidden sight line adds its weight once to every span it crosses (the
-    // chords come in increasing order, and so do their spans).
+    // Pass 3: each hidden sight line adds its weight once to every span it crosses (its runs
+    // come in increasing chord order, and so do their spans; consecutive hiding chords are
+    // always in one span).
     for (std::size_t line = 0; line < count; ++line) {
         if (line_hidden_[line] == 0) continue;
         int32_t last = -1;
-        for_each_hiding_chord(eye, point_at(targets_xyz, line), [&](std::size_t chord) {
+        auto add = [&](std::size_t chord) {
             const int32_t span = chord_span_[chord];
             if (span == last) return;
             spans_[static_cast<std::size_t>(span)].hidden_weight += weights[line];
             last = span;
-        });
+        };
+        if (line_runs_[line] <= kRunsPerLine) {
+            for (std::size_t r = 0; r < line_runs_[line]; ++r) add(line_run_chords_[line * kRunsPerLine + r]);
+        } else {
+            for_each_hiding_chord(eye, point_at(targets_xyz, line), add);
+        }
     }
     return totals;
 }

@@ -17,9 +17,11 @@
 // it passes through.
 //
 // A measure makes three passes: (1) every sight line against the chords near it: hidden or
-// not, and which chords hide something; (2) runs of hiding chords become spans, those less
-// than one local diameter apart along the bowel merged (one loop is one span); (3) the
-// hidden sight lines once more, each adding its weight once to every span it crosses.
+// not, which chords hide something, and the first chord of each run of consecutive chords
+// the line crosses (up to kRunsPerLine of them); (2) runs of hiding chords become spans,
+// those less than one local diameter apart along the bowel merged (one loop is one span);
+// (3) each hidden sight line adds its weight once to every span its runs lie in (a line
+// that crossed more runs than it kept is traced again).
 // Every buffer is sized by reserve(): a measure allocates nothing.
 #pragma once
 
@@ -47,11 +49,12 @@ struct OcclusionTotals {
 
 class TubeOcclusion {
 public:
-    static constexpr std::size_t kRunChords = 8;
+    static constexpr std::size_t kRunsPerLine = 8;
 
-    // Adds a tube of `samples` (>= 2) axis samples, their radii given (m). Allocates; the
-    // positions are set before each measure through positions().
-    void add_tube(int32_t tube, const double* radii, std::size_t samples);
+    // Adds a tube of `samples` (>= 2) axis samples, their radii given (m), its chords tested
+    // in runs of `chords_per_run` behind one bounding sphere. Allocates; the positions are set
+    // before each measure through positions().
+    void add_tube(int32_t tube, const double* radii, std::size_t samples, std::size_t chords_per_run);
     // Makes room for measures of up to `sight_lines` sight lines: none allocates after.
     void reserve_sight_lines(std::size_t sight_lines);
 
@@ -103,6 +106,8 @@ private:
     std::vector<int32_t> chord_span_;
     // Per sight line:
     std::vector<uint8_t> line_hidden_;
+    std::vector<uint8_t> line_runs_;           // runs of hiding chords kept; kRunsPerLine + 1: more
+    std::vector<uint32_t> line_run_chords_;    // kRunsPerLine per line: the first chord of each run
     std::vector<OccludingSpan> spans_;  // reserved to the most spans the chords allow
 };
 

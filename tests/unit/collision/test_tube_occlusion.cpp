@@ -18,7 +18,7 @@ TubeOcclusion straight(std::size_t samples, double length, double h, double r0, 
     std::vector<double> radii(samples);
     for (std::size_t i = 0; i < samples; ++i) radii[i] = r0 + (r1 - r0) * double(i) / double(samples - 1);
     TubeOcclusion tubes;
-    tubes.add_tube(0, radii.data(), samples);
+    tubes.add_tube(0, radii.data(), samples, 8);
     double* p = tubes.positions(0);
     for (std::size_t i = 0; i < samples; ++i) {
         p[3 * i] = -0.5 * length + length * double(i) / double(samples - 1);
