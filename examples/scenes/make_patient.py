@@ -46,7 +46,7 @@ CAVITY_TOP = 0.13        # m: the anterior wall above the origin (insufflated; d
 CAVITY_CRANIAL = 0.25    # the diaphragm's domes above the umbilicus
 CAVITY_CAUDAL = -0.17    # the pelvic floor below it
 CAVITY_HALF_WIDTH = 0.15  # flank to flank / 2 at the umbilicus
-PELVIS_HALF_WIDTH = 0.075  # the pelvic inlet's transverse diameter / 2
+PELVIS_HALF_WIDTH = 0.065  # the pelvic inlet's transverse diameter / 2
 GUTTER_DEPTH = 0.035     # the paravertebral gutters below the midline's vertebral bodies
 SPINE_HALF_WIDTH = 0.045  # the vertebral bodies and psoas as a bump this wide (1/e)
 
