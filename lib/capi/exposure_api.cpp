@@ -12,6 +12,7 @@
 
 #include "base/geometry.h"
 #include "capi/call_guard.h"
+#include "capi/driving_call.h"
 #include "capi/scene_handle.h"
 #include "capi/struct_size.h"
 #include "collision/tube_occlusion.h"
@@ -171,23 +172,6 @@ void sample_axis(const double* control_points, ExposureHandle& h) {
     }
 }
 
-// Holds the exposure's measuring flag for one query; a second query gets BUSY.
-class MeasuringCall {
-public:
-    explicit MeasuringCall(ExposureHandle& h) : h_(h) {
-        bool idle = false;
-        if (!h_.measuring.compare_exchange_strong(idle, true, std::memory_order_acquire))
-            throw Error(ErrorCode::busy, "ent_scene_exposure: this exposure is measuring on another thread "
-                                         "(use one exposure per thread)");
-    }
-    ~MeasuringCall() { h_.measuring.store(false, std::memory_order_release); }
-    MeasuringCall(const MeasuringCall&) = delete;
-    MeasuringCall& operator=(const MeasuringCall&) = delete;
-
-private:
-    ExposureHandle& h_;
-};
-
 }  // namespace
 
 extern "C" {
@@ -259,7 +243,11 @@ ENT_API ent_status ent_scene_exposure(const ent_scene* scene, ent_exposure* expo
                         "out.spans_u is NULL with a span_capacity of " + std::to_string(out->span_capacity));
         if (h.scene != &*scene_handle.scene || h.control_points != scene_handle.published->control_points())
             throw Error(ErrorCode::invalid_argument, "exposure was made for another scene (ent_exposure_create)");
-        const MeasuringCall measuring(h);
+        // One query at a time per exposure: its buffers are the query's work space.
+        const enteron::capi::ExclusiveCall measuring(h.measuring, [] {
+            return std::string("ent_scene_exposure: this exposure is measuring on another thread "
+                               "(use one exposure per thread)");
+        });
         double time_s = 0.0;
         uint64_t steps = 0;
         {

@@ -57,7 +57,8 @@ Patch disk(double cx, double cy, double rho) {
 }
 
 ExposurePtr make_exposure(const ent_scene* scene, const std::vector<double>& points,
-                          const std::vector<uint32_t>& triangles, uint32_t samples_per_edge = 8) {
+                          const std::vector<uint32_t>& triangles, uint32_t samples_per_edge = 8,
+                          const double* weights = nullptr, int32_t obstacle = ENT_NO_OBSTACLE) {
     ent_exposure_desc desc;
     ent_exposure_desc_default(&desc);
     desc.points_xyz_m = points.data();
@@ -65,6 +66,8 @@ ExposurePtr make_exposure(const ent_scene* scene, const std::vector<double>& poi
     desc.triangles = triangles.empty() ? nullptr : triangles.data();
     desc.triangle_count = uint32_t(triangles.size() / 3);
     desc.samples_per_edge = samples_per_edge;
+    desc.weights = weights;
+    desc.obstacle = obstacle;
     ent_exposure* e = nullptr;
     EXPECT_EQ(ent_exposure_create(scene, &desc, &e), ENT_OK) << ent_last_error();
     return ExposurePtr(e);
@@ -207,14 +210,7 @@ TEST(Exposure, WeightsCountAndAWeightlessPointCountsForNothing) {
     // One point under the tube (hidden), two beyond the band (seen), weights 3, 1, 0.
     const std::vector<double> points = {0.0, 0.0, 0.0, 0.0, 0.05, 0.0, 0.0, -0.05, 0.0};
     const double weights[3] = {3.0, 1.0, 0.0};
-    ent_exposure_desc desc;
-    ent_exposure_desc_default(&desc);
-    desc.points_xyz_m = points.data();
-    desc.point_count = 3;
-    desc.weights = weights;
-    ent_exposure* raw = nullptr;
-    ASSERT_EQ(ent_exposure_create(scene.get(), &desc, &raw), ENT_OK) << ent_last_error();
-    ExposurePtr e(raw);
+    ExposurePtr e = make_exposure(scene.get(), points, {}, 1, weights);
     const Measured m = measure(scene.get(), e.get(), 3, kEye);
     EXPECT_DOUBLE_EQ(m.result.visible_fraction, 0.25);
     EXPECT_EQ(m.result.hidden_samples, 1u);
@@ -230,14 +226,7 @@ TEST(Exposure, ATargetOnAnObstacleMovesWithIt) {
     ASSERT_EQ(ent_scene_add_obstacle(scene.get(), &plane, &obstacle), ENT_OK) << ent_last_error();
     // One point at the obstacle's origin: under the tube (hidden).
     const std::vector<double> points = {0.0, 0.0, 0.0};
-    ent_exposure_desc desc;
-    ent_exposure_desc_default(&desc);
-    desc.points_xyz_m = points.data();
-    desc.point_count = 1;
-    desc.obstacle = obstacle;
-    ent_exposure* raw = nullptr;
-    ASSERT_EQ(ent_exposure_create(scene.get(), &desc, &raw), ENT_OK) << ent_last_error();
-    ExposurePtr e(raw);
+    ExposurePtr e = make_exposure(scene.get(), points, {}, 1, nullptr, obstacle);
     EXPECT_EQ(measure(scene.get(), e.get(), 1, kEye).result.visible_fraction, 0.0);
     // The obstacle (and the point on it) moves 8 cm sideways: out of the shadow.
     const double moved[3] = {0.0, 0.08, 0.0}, identity[4] = {1.0, 0.0, 0.0, 0.0};
