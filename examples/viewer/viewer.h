@@ -33,6 +33,8 @@ struct ViewerSettings {
     // scene_motion_tool (headless; in a window the mouse is the tool).
     bool scene_motion = false;
     bool scene_motion_tool = false;
+    // Look through the laparoscope from the start (key V switches).
+    bool laparoscope = false;
 };
 
 class Viewer {
@@ -82,6 +84,9 @@ private:
     void reset();
     void set_skin(const ent_skin_desc& desc);
     void frame_camera();
+    // The laparoscope through the umbilical port (the cavity's top above its centre),
+    // looking at the bowel (docs/viewer.md).
+    void look_through_scope();
     void build_panels();
     void build_hud();
     void build_status_line(bool always);

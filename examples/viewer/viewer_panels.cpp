@@ -360,6 +360,7 @@ void Viewer::build_help() {
         {"middle or Shift+right drag", "pan"},
         {"Ctrl+wheel", "zoom"},
         {"Home", "frame the scene"},
+        {"V", "look through the 30-degree laparoscope (right drag: pivot it, Shift+right: turn its optics, Ctrl+wheel: slide it)"},
         {"Space", "pause / run"},
         {"Right", "one step"},
         {"Backspace", "reset"},

@@ -5,8 +5,8 @@
  * calls the C functions, so a program built against this header depends only on the C ABI
  * (the same shared library, the same compatibility rules). docs/cpp.md is its manual.
  *
- * - RAII handles: enteron::Scene and enteron::Skin own their C object and destroy it;
- *   enteron::Tool names a tool of a scene. All three are move-only.
+ * - RAII handles: enteron::Scene, enteron::Skin and enteron::Exposure own their C object
+ *   and destroy it; enteron::Tool names a tool of a scene. All four are move-only.
  * - Errors: every failing C call throws enteron::Error, which carries the ent_status and
  *   the message of ent_last_error() (what failed and why). A step the guard cannot save
  *   throws Error with status() == ENT_ERROR_UNSTABLE, the scene unchanged.
@@ -102,6 +102,11 @@ struct ObstacleDesc : ent_obstacle_desc {
 /** ent_skin_desc with the library's defaults. */
 struct SkinDesc : ent_skin_desc {
     SkinDesc() noexcept : ent_skin_desc() { ent_skin_desc_default(this); }
+};
+
+/** ent_exposure_desc with the library's defaults. */
+struct ExposureDesc : ent_exposure_desc {
+    ExposureDesc() noexcept : ent_exposure_desc() { ent_exposure_desc_default(this); }
 };
 
 /** A C output struct with struct_size set (ent_stats, ent_tool_feedback, ...). */
@@ -359,6 +364,85 @@ public:
 
 private:
     ent_skin* skin_ = nullptr;
+};
+
+/** What Exposure::measure found: the C result, and the spans and elements it wrote. */
+struct ExposureReport {
+    ent_exposure_result result{};          /**< visible_fraction, span_count, samples, time_s, ... */
+    std::vector<double> spans_u;           /**< [first u, last u] of each span written (2 per span) */
+    std::vector<double> span_hidden_fractions;  /**< the fraction of the target each span hides */
+    std::vector<int32_t> span_intestines;  /**< the tube of each span */
+    std::vector<double> element_visible;   /**< the fraction seen of each point or triangle */
+    double visible_fraction() const noexcept { return result.visible_fraction; }
+    std::size_t spans() const noexcept { return span_intestines.size(); }
+};
+
+/**
+ * A target prepared for ent_scene_exposure (ent_exposure_create): move-only, destroyed with
+ * its handle; it may outlive the scene (measuring then needs a live scene). measure() fills
+ * a report the object keeps, sized at construction: measuring allocates nothing. One
+ * thread at a time per Exposure (a second measure on another thread throws ENT_ERROR_BUSY).
+ */
+class Exposure {
+public:
+    Exposure(const Scene& scene, const ent_exposure_desc& desc, uint32_t span_capacity = 16)
+        : scene_(scene.get()), span_capacity_(span_capacity) {
+        detail::check(ent_exposure_create(scene_, &desc, &exposure_));
+        const std::size_t elements = desc.triangles != nullptr ? desc.triangle_count : desc.point_count;
+        report_.spans_u.reserve(2 * std::size_t{span_capacity});
+        report_.span_hidden_fractions.reserve(span_capacity);
+        report_.span_intestines.reserve(span_capacity);
+        report_.element_visible.assign(elements, 0.0);
+    }
+    Exposure(Exposure&& other) noexcept
+        : scene_(other.scene_), exposure_(std::exchange(other.exposure_, nullptr)),
+          span_capacity_(other.span_capacity_), report_(std::move(other.report_)) {}
+    Exposure& operator=(Exposure&& other) noexcept {
+        if (this != &other) {
+            ent_exposure_destroy(exposure_);
+            scene_ = other.scene_;
+            exposure_ = std::exchange(other.exposure_, nullptr);
+            span_capacity_ = other.span_capacity_;
+            report_ = std::move(other.report_);
+        }
+        return *this;
+    }
+    Exposure(const Exposure&) = delete;
+    Exposure& operator=(const Exposure&) = delete;
+    ~Exposure() { ent_exposure_destroy(exposure_); }
+
+    ent_exposure* get() const noexcept { return exposure_; }
+
+    /** How much of the target the bowel leaves in sight from `viewpoint_m` (x y z, m), on the
+     *  scene's last published state; valid until the next measure. */
+    const ExposureReport& measure(const double viewpoint_m[3]) {
+        report_.spans_u.resize(2 * std::size_t{span_capacity_});
+        report_.span_hidden_fractions.resize(span_capacity_);
+        report_.span_intestines.resize(span_capacity_);
+        ent_exposure_result& r = report_.result;
+        r = sized<ent_exposure_result>();
+        r.span_capacity = span_capacity_;
+        r.spans_u = report_.spans_u.data();
+        r.span_hidden_fractions = report_.span_hidden_fractions.data();
+        r.span_intestines = report_.span_intestines.data();
+        r.element_visible = report_.element_visible.data();
+        detail::check(ent_scene_exposure(scene_, exposure_, viewpoint_m, &r));
+        const std::size_t written = std::min(r.span_count, span_capacity_);
+        report_.spans_u.resize(2 * written);
+        report_.span_hidden_fractions.resize(written);
+        report_.span_intestines.resize(written);
+        r.spans_u = nullptr;
+        r.span_hidden_fractions = nullptr;
+        r.span_intestines = nullptr;
+        r.element_visible = nullptr;
+        return report_;
+    }
+
+private:
+    const ent_scene* scene_ = nullptr;
+    ent_exposure* exposure_ = nullptr;
+    uint32_t span_capacity_ = 16;
+    ExposureReport report_;
 };
 
 #ifdef EIGEN_WORLD_VERSION

@@ -180,3 +180,34 @@ TEST(CppLayer, SkinsGiveSpansOverTheMesh) {
 }
 
 }  // namespace
+
+TEST(CppLayer, AnExposureMeasuresWhatTheCApiMeasures) {
+    enteron::Scene scene = small_scene();
+    const auto axis = scene.axis(3);
+    // One point right under the middle of the axis, one far beside it.
+    const double points[6] = {axis[3], axis[4], axis[5] - 0.2, axis[3] + 0.5, axis[4] + 0.5, axis[5] - 0.2};
+    enteron::ExposureDesc desc;
+    desc.points_xyz_m = points;
+    desc.point_count = 2;
+    enteron::Exposure exposure(scene, desc, 4);
+    const double eye[3] = {axis[3], axis[4], axis[5] + 0.3};
+    const enteron::ExposureReport& report = exposure.measure(eye);
+    EXPECT_DOUBLE_EQ(report.visible_fraction(), 0.5);
+    ASSERT_EQ(report.element_visible.size(), 2u);
+    EXPECT_EQ(report.element_visible[0], 0.0);
+    EXPECT_EQ(report.element_visible[1], 1.0);
+    EXPECT_EQ(report.spans(), 1u);
+    EXPECT_EQ(report.spans_u.size(), 2u);
+    EXPECT_LE(report.spans_u[0], 0.5);
+    EXPECT_GE(report.spans_u[1], 0.5);
+    enteron::Exposure moved = std::move(exposure);
+    EXPECT_EQ(moved.measure(eye).result.samples, 2u);
+    const double nan_eye[3] = {0.0, std::nan(""), 0.0};
+    try {
+        moved.measure(nan_eye);
+        FAIL() << "a NaN viewpoint was accepted";
+    } catch (const enteron::Error& error) {
+        EXPECT_EQ(error.status(), ENT_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(error.what()).find("viewpoint_m[1]"), std::string::npos) << error.what();
+    }
+}

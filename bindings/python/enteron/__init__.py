@@ -37,6 +37,7 @@ from .scene import (CONTACT_DTYPE, CONTACT_OBSTACLE, CONTACT_SELF, CONTACT_TOOL,
                     OBSTACLE_PLANE, OBSTACLE_SPHERE,
                     PIN_BOTH, PIN_FIRST, PIN_LAST, PIN_NONE, SHAPE_HELIX, SHAPE_LINE, SHAPE_POINTS, SHAPE_SERPENTINE,
                     EffectStats, Scene, SceneDesc, Stats, effect_name)
+from .exposure import Exposure, ExposureResult
 from .skin import SKIN_CONVOLUTION, SKIN_POINT_SKELETON, SKIN_TUBE, Mesh, Skin, SkinMetrics
 from .tool import TOOL_MODE_DIRECT, TOOL_MODE_PROXY, Tool, ToolContacts, ToolFeedback, ToolStats, Wrench
 

@@ -141,6 +141,11 @@ _declare("ent_tool_stiffness", _status, _scene_p, ctypes.c_int32, ctypes.POINTER
 _declare("ent_tool_read_stats", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_tool_stats))
 _declare("ent_tool_remove", _status, _scene_p, ctypes.c_int32)
 _declare("ent_scene_tool_count", _status, _scene_p, ctypes.POINTER(ctypes.c_int32))
+_exposure_p = ctypes.c_void_p
+_declare("ent_exposure_desc_init", _status, ctypes.POINTER(s.ent_exposure_desc), ctypes.c_uint32)
+_declare("ent_exposure_create", _status, _scene_p, ctypes.POINTER(s.ent_exposure_desc), ctypes.POINTER(_exposure_p))
+_declare("ent_exposure_destroy", None, _exposure_p)
+_declare("ent_scene_exposure", _status, _scene_p, _exposure_p, _double_p, ctypes.POINTER(s.ent_exposure_result))
 _skin_p = ctypes.c_void_p
 _declare("ent_skin_desc_init", _status, ctypes.POINTER(s.ent_skin_desc), ctypes.c_uint32)
 _declare("ent_skin_create", _status, _scene_p, ctypes.POINTER(s.ent_skin_desc), ctypes.POINTER(_skin_p))
