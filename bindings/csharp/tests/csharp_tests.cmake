@@ -9,7 +9,7 @@
 set(_enteron_minimal_exe "${ENTERON_CSHARP_DIR}/Minimal.exe")
 enteron_csharp_assembly(TARGET enteron_csharp_minimal OUTPUT "${_enteron_minimal_exe}" EXECUTABLE
   SOURCES "${PROJECT_SOURCE_DIR}/examples/csharp/Minimal.cs" REFERENCES "${ENTERON_CSHARP_ASSEMBLY}")
-if(TARGET enteron_minimal)
+if(ENTERON_BUILD_EXAMPLES)  # enteron_minimal is defined later (examples/), read at generation
   add_test(NAME csharp.example_minimal
     COMMAND ${CMAKE_COMMAND} -DC_PROGRAM=$<TARGET_FILE:enteron_minimal> -DMONO=${ENTERON_MONO}
             -DCSHARP_PROGRAM=${_enteron_minimal_exe} -P ${CMAKE_CURRENT_LIST_DIR}/same_line.cmake)
