@@ -34,11 +34,27 @@ namespace Enteron
         /// <summary>No obstacle: the world (PinPoint, AttachMesentery, AttachClampedEnd).</summary>
         public const int NoObstacle = -1;
 
-        internal readonly SceneHandle Handle;
+        private readonly SceneHandle _handle;
+        private volatile bool _disposed;
 
         private Scene(SceneHandle handle)
         {
-            Handle = handle;
+            _handle = handle;
+        }
+
+        /// <summary>
+        /// The handle for a call; throws ObjectDisposedException once Dispose was called.
+        /// The SafeHandle alone makes a call after its destroy impossible; this check also
+        /// refuses new calls at once while others are in flight, so that the destroy is not
+        /// put off for as long as two threads keep overlapping calls.
+        /// </summary>
+        internal SceneHandle Handle
+        {
+            get
+            {
+                if (_disposed) throw new ObjectDisposedException("Enteron.Scene", "the scene was disposed");
+                return _handle;
+            }
         }
 
         // ---- creation ---------------------------------------------------------------------
@@ -158,13 +174,14 @@ namespace Enteron
         /// </summary>
         public void Dispose()
         {
-            Handle.Dispose();
+            _disposed = true;
+            _handle.Dispose();
         }
 
         /// <summary>True once <see cref="Dispose"/> was called.</summary>
         public bool IsDisposed
         {
-            get { return Handle.IsClosed; }
+            get { return _disposed; }
         }
 
         // ---- driving ----------------------------------------------------------------------

@@ -28,6 +28,7 @@ namespace Enteron
     public sealed unsafe class Skin : IDisposable
     {
         private readonly SkinHandle _handle;
+        private volatile bool _disposed;
         private int _inUse;  // 1 while a call runs: the C skin must not be used by two threads at once
 
         /// <summary>A skin of the scene (ent_skin_create); its mesh is empty until the first <see cref="Update"/>.</summary>
@@ -55,13 +56,24 @@ namespace Enteron
         /// <summary>Destroys the skin (ent_skin_destroy) once no call on it runs; any thread, more than once.</summary>
         public void Dispose()
         {
+            _disposed = true;
             _handle.Dispose();
         }
 
         /// <summary>True once <see cref="Dispose"/> was called.</summary>
         public bool IsDisposed
         {
-            get { return _handle.IsClosed; }
+            get { return _disposed; }
+        }
+
+        /// <summary>The handle for a call; throws ObjectDisposedException once Dispose was called (see Scene.Handle).</summary>
+        private SkinHandle Handle
+        {
+            get
+            {
+                if (_disposed) throw new ObjectDisposedException("Enteron.Skin", "the skin was disposed");
+                return _handle;
+            }
         }
 
         /// <summary>
@@ -73,7 +85,7 @@ namespace Enteron
             Enter("Update");
             try
             {
-                EnteronException.Check(NativeMethods.ent_skin_update(_handle), "ent_skin_update");
+                EnteronException.Check(NativeMethods.ent_skin_update(Handle), "ent_skin_update");
             }
             finally
             {
@@ -181,7 +193,7 @@ namespace Enteron
             {
                 var metrics = new SkinMetrics();
                 metrics.struct_size = StructSize<SkinMetrics>.Value;
-                EnteronException.Check(NativeMethods.ent_skin_metrics(_handle, ref metrics), "ent_skin_metrics");
+                EnteronException.Check(NativeMethods.ent_skin_metrics(Handle, ref metrics), "ent_skin_metrics");
                 return metrics;
             }
             finally
@@ -214,7 +226,7 @@ namespace Enteron
             Enter(operation);
             try
             {
-                using (var lease = new HandleLease(_handle))
+                using (var lease = new HandleLease(Handle))
                 {
                     var view = new MeshView();
                     view.struct_size = StructSize<MeshView>.Value;

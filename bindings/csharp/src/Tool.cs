@@ -18,12 +18,9 @@ namespace Enteron
     /// </summary>
     public sealed unsafe class Tool
     {
-        private readonly SceneHandle _scene;
-
         internal Tool(Scene scene, int id)
         {
             Scene = scene;
-            _scene = scene.Handle;
             Id = id;
         }
 
@@ -41,20 +38,20 @@ namespace Enteron
         /// <exception cref="EnteronException">InvalidArgument (non-finite, zero quaternion), NotFound.</exception>
         public void SetPose(Vec3 position_m, Quat orientation)
         {
-            EnteronException.Check(NativeMethods.ent_tool_set_pose(_scene, Id, &position_m, &orientation),
+            EnteronException.Check(NativeMethods.ent_tool_set_pose(Scene.Handle, Id, &position_m, &orientation),
                                    "ent_tool_set_pose");
         }
 
         /// <summary>Grasps the bowel at the start of the next step: the nearest point within reach, if any (ent_tool_grasp).</summary>
         public void Grasp()
         {
-            EnteronException.Check(NativeMethods.ent_tool_grasp(_scene, Id), "ent_tool_grasp");
+            EnteronException.Check(NativeMethods.ent_tool_grasp(Scene.Handle, Id), "ent_tool_grasp");
         }
 
         /// <summary>Releases what the tool holds at the start of the next step (ent_tool_release).</summary>
         public void Release()
         {
-            EnteronException.Check(NativeMethods.ent_tool_release(_scene, Id), "ent_tool_release");
+            EnteronException.Check(NativeMethods.ent_tool_release(Scene.Handle, Id), "ent_tool_release");
         }
 
         /// <summary>Whether a grasp holds in the last published step (ent_tool_state).</summary>
@@ -63,7 +60,7 @@ namespace Enteron
             get
             {
                 int grasping;
-                EnteronException.Check(NativeMethods.ent_tool_state(_scene, Id, out grasping), "ent_tool_state");
+                EnteronException.Check(NativeMethods.ent_tool_state(Scene.Handle, Id, out grasping), "ent_tool_state");
                 return grasping != 0;
             }
         }
@@ -80,14 +77,14 @@ namespace Enteron
         public void ReadFeedback(ref ToolFeedback feedback)
         {
             feedback.struct_size = StructSize<ToolFeedback>.Value;
-            EnteronException.Check(NativeMethods.ent_tool_read_feedback(_scene, Id, ref feedback), "ent_tool_read_feedback");
+            EnteronException.Check(NativeMethods.ent_tool_read_feedback(Scene.Handle, Id, ref feedback), "ent_tool_read_feedback");
         }
 
         /// <summary>The force (N) and torque about the tip (N m) of the bowel on the tool in the last step (ent_tool_wrench).</summary>
         public void GetWrench(out Vec3 force_N, out Vec3 torque_Nm)
         {
             Vec3 force, torque;
-            EnteronException.Check(NativeMethods.ent_tool_wrench(_scene, Id, &force, &torque), "ent_tool_wrench");
+            EnteronException.Check(NativeMethods.ent_tool_wrench(Scene.Handle, Id, &force, &torque), "ent_tool_wrench");
             force_N = force;
             torque_Nm = torque;
         }
@@ -99,7 +96,7 @@ namespace Enteron
         public Matrix3 Stiffness()
         {
             Matrix3 stiffness;
-            EnteronException.Check(NativeMethods.ent_tool_stiffness(_scene, Id, &stiffness), "ent_tool_stiffness");
+            EnteronException.Check(NativeMethods.ent_tool_stiffness(Scene.Handle, Id, &stiffness), "ent_tool_stiffness");
             return stiffness;
         }
 
@@ -108,7 +105,7 @@ namespace Enteron
         {
             var stats = new ToolStats();
             stats.struct_size = StructSize<ToolStats>.Value;
-            EnteronException.Check(NativeMethods.ent_tool_read_stats(_scene, Id, ref stats), "ent_tool_read_stats");
+            EnteronException.Check(NativeMethods.ent_tool_read_stats(Scene.Handle, Id, ref stats), "ent_tool_read_stats");
             return stats;
         }
 
@@ -126,7 +123,7 @@ namespace Enteron
             {
                 contacts.range_capacity = ranges == null ? 0u : (uint)(rangesU.Length / 2);
                 contacts.ranges_u = (IntPtr)ranges;
-                EnteronException.Check(NativeMethods.ent_tool_read_contacts(_scene, Id, ref contacts),
+                EnteronException.Check(NativeMethods.ent_tool_read_contacts(Scene.Handle, Id, ref contacts),
                                        "ent_tool_read_contacts");
             }
             contacts.ranges_u = IntPtr.Zero;  // the array is unpinned now
@@ -139,7 +136,7 @@ namespace Enteron
         /// </summary>
         public void Remove()
         {
-            EnteronException.Check(NativeMethods.ent_tool_remove(_scene, Id), "ent_tool_remove");
+            EnteronException.Check(NativeMethods.ent_tool_remove(Scene.Handle, Id), "ent_tool_remove");
         }
     }
 }
