@@ -9,12 +9,15 @@ using System.Runtime.InteropServices;
 
 namespace Enteron
 {
-    /// <summary>An ent_scene*.</summary>
-    internal sealed class SceneHandle : SafeHandle
+    /// <summary>
+    /// A handle of the C API with the scene's callbacks it keeps alive (a scene's own, or the
+    /// one its skin shares: C may call them until the last of them is destroyed).
+    /// </summary>
+    internal abstract class EnteronHandle : SafeHandle
     {
-        internal CallbackState Callbacks;  // released with the scene (skins hold their own reference)
+        internal CallbackState Callbacks;
 
-        internal SceneHandle() : base(IntPtr.Zero, true)
+        protected EnteronHandle() : base(IntPtr.Zero, true)
         {
         }
 
@@ -23,11 +26,23 @@ namespace Enteron
             get { return handle == IntPtr.Zero; }
         }
 
+        /// <summary>The C destroy function of this kind of handle.</summary>
+        protected abstract void Destroy(IntPtr pointer);
+
         protected override bool ReleaseHandle()
         {
-            NativeMethods.ent_scene_destroy(handle);
+            Destroy(handle);
             if (Callbacks != null) Callbacks.Release();
             return true;
+        }
+    }
+
+    /// <summary>An ent_scene*.</summary>
+    internal sealed class SceneHandle : EnteronHandle
+    {
+        protected override void Destroy(IntPtr pointer)
+        {
+            NativeMethods.ent_scene_destroy(pointer);
         }
     }
 
@@ -35,24 +50,11 @@ namespace Enteron
     /// An ent_skin*. A skin shares its scene's published snapshots in C, so it keeps
     /// working after its scene is disposed; it holds only the scene's callbacks alive.
     /// </summary>
-    internal sealed class SkinHandle : SafeHandle
+    internal sealed class SkinHandle : EnteronHandle
     {
-        internal CallbackState Callbacks;
-
-        internal SkinHandle() : base(IntPtr.Zero, true)
+        protected override void Destroy(IntPtr pointer)
         {
-        }
-
-        public override bool IsInvalid
-        {
-            get { return handle == IntPtr.Zero; }
-        }
-
-        protected override bool ReleaseHandle()
-        {
-            NativeMethods.ent_skin_destroy(handle);
-            if (Callbacks != null) Callbacks.Release();
-            return true;
+            NativeMethods.ent_skin_destroy(pointer);
         }
     }
 
