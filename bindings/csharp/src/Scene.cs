@@ -14,7 +14,7 @@ namespace Enteron
     ///     scene.Axis(axis);
     /// }
     /// </code>
-    /// Threads, as in C (include/enteron/enteron.h; docs/csharp.md):
+    /// Threads, as in C (include/enteron/enteron.h; bindings/csharp/README.md):
     /// - Driving calls, one at a time per scene: <see cref="Step"/>, AddObstacle, AddTool,
     ///   RemoveTool, SaveState, RestoreState and the changes between steps (SetObstaclePose,
     ///   ...). A driving call while another runs on another thread throws an
