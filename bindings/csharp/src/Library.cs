@@ -59,10 +59,23 @@ namespace Enteron
         /// loaded library's major version differs from <see cref="SupportedMajor"/>. Every
         /// scene factory calls it; the answer is kept after the first success.
         /// </summary>
+        /// <exception cref="DllNotFoundException">libenteron cannot be loaded; the message says where it is looked for.</exception>
         public static void EnsureCompatible()
         {
             if (_compatible) return;
-            uint major = Version >> 16;
+            uint version;
+            try
+            {
+                version = Version;
+            }
+            catch (DllNotFoundException error)
+            {
+                throw new DllNotFoundException(
+                    "Enteron.dll cannot load libenteron (DllImport \"enteron\": on Linux libenteron.so.0, named in " +
+                    "Enteron.dll.config beside Enteron.dll): install it (Debian: libenteron0), add its directory to " +
+                    "LD_LIBRARY_PATH, or, in Unity, put it among the package's plugins (" + error.Message + ")", error);
+            }
+            uint major = version >> 16;
             if (major != SupportedMajor)
                 throw new EnteronException(Status.Version, "ent_version", string.Format(
                     "libenteron {0} is loaded; this binding (Enteron.dll) needs major version {1}",

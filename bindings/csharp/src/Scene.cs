@@ -159,6 +159,7 @@ namespace Enteron
             if (status != Status.Ok)
             {
                 string message = Library.LastError;  // first, before anything else can fail on this thread
+                handle.Dispose();  // holds no scene: nothing to destroy, no finalizer to run
                 if (callbacks != null) callbacks.Release();
                 throw new EnteronException(status, function, message);
             }

@@ -46,6 +46,7 @@ namespace Enteron
                 if (status != Status.Ok)
                 {
                     string message = Library.LastError;
+                    _handle.Dispose();
                     if (callbacks != null) callbacks.Release();
                     throw new EnteronException(status, "ent_skin_create", message);
                 }
