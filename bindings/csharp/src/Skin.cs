@@ -38,11 +38,12 @@ namespace Enteron
             Arguments.NotNull(scene, "scene");
             // The skin holds the scene's callbacks too (C may call them until the last skin
             // goes); taken under a lease, so that the scene cannot drop its own meanwhile.
-            using (var lease = new HandleLease(scene.Handle))
+            SceneHandle sceneHandle = scene.Handle;
+            using (var lease = new HandleLease(sceneHandle))
             {
-                CallbackState callbacks = scene.Handle.Callbacks;
+                CallbackState callbacks = sceneHandle.Callbacks;
                 if (callbacks != null) callbacks.AddReference();
-                Status status = NativeMethods.ent_skin_create(scene.Handle, ref desc, out _handle);
+                Status status = NativeMethods.ent_skin_create(sceneHandle, ref desc, out _handle);
                 if (status != Status.Ok)
                 {
                     string message = Library.LastError;
