@@ -74,7 +74,7 @@ check_variant() {
     printf '\n== variant %s (ENTERON_ABI_VARIANT=%s)\n' "$name" "$number"
     "$cmake_cmd" -S "$copy" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
         -DENTERON_BUILD_TESTS=OFF -DENTERON_BUILD_EXAMPLES=OFF -DENTERON_BUILD_BENCH=OFF \
-        -DENTERON_PYTHON_BINDING=OFF -DENTERON_WITH_LCM=OFF \
+        -DENTERON_PYTHON_BINDING=OFF -DENTERON_CSHARP_BINDING=OFF -DENTERON_WITH_LCM=OFF \
         -DENTERON_ABI_VARIANT="$number" "${ninja[@]}" >"$work_dir/configure-$name.log" 2>&1 ||
         { cat "$work_dir/configure-$name.log"; fail "configuring the copy for $name failed"; }
     "$cmake_cmd" --build "$build" --target enteron --parallel "$jobs" >"$work_dir/build-$name.log" 2>&1 ||
