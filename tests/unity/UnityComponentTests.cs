@@ -5,6 +5,7 @@
 // without Unity (bindings/unity/Documentation~/enteron.md, "What was verified").
 using System;
 using System.Diagnostics;
+using System.Linq;
 using System.Threading;
 using Enteron.Tests;
 using NUnit.Framework;
@@ -238,6 +239,121 @@ namespace Enteron.Unity.Tests
             device.Join();
             Assert.IsNull(failed);
             Assert.AreEqual(EnteronSpace.ToEnteron(target), last.commanded_position_m, "a step took the device's pose");
+        }
+
+        // tests/capi/test_exposure.cpp's tube (TestSupport.cs, Occlusion): 2 m along x with its
+        // axis 5 cm above the floor's plane, at rest; a plane obstacle (an organ) 10 cm below.
+        private const string StraightTube =
+            "{\"intestine\": {\"length\": 2.0, \"control_points\": 81, \"radius\": 0.0125," +
+            " \"shape\": {\"kind\": \"line\", \"center\": [-1.0, 0, 0.05]}}," +
+            " \"environment\": [{\"type\": \"plane\", \"point\": [0, 0, -0.1]}]}";
+
+        /// <summary>A child of the scene's object with a MeshFilter holding these triangles (x y z in Enteron's frame, converted).</summary>
+        private static GameObject Target(EnteronScene scene, string name, double[] xyz, uint[] triangles)
+        {
+            var vertices = new Vector3[xyz.Length / 3];
+            for (int v = 0; v < vertices.Length; ++v)
+                vertices[v] = EnteronSpace.ToUnity(new Vec3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
+            var indices = new int[triangles.Length];
+            for (int i = 0; i < indices.Length; ++i) indices[i] = (int)triangles[i];
+            var mesh = new Mesh();
+            mesh.SetVertices(vertices, 0, vertices.Length);
+            mesh.SetIndices(indices, 0, indices.Length, MeshTopology.Triangles, 0, true, 0);
+            var target = new GameObject(name);
+            target.transform.SetParent(scene.transform, false);
+            target.AddComponent<MeshFilter>().sharedMesh = mesh;
+            return target;
+        }
+
+        private static Transform Camera(EnteronScene scene, Vector3 position)
+        {
+            var camera = new GameObject("laparoscope");
+            camera.transform.SetParent(scene.transform, false);
+            camera.transform.localPosition = position;
+            return camera.transform;
+        }
+
+        [Test]
+        public void AnExposureMeasuresATargetFromTheCameraEveryFrame()
+        {
+            // A disk on the edge of the band the tube hides from 30 cm above: half of it seen.
+            // Its mesh is centred on its object, which stands on the band's edge (Unity's z is
+            // Enteron's y): the target is placed where its object is.
+            EnteronScene scene = NewScene(StraightTube, EnteronScene.Stepping.Manual);
+            double[] xyz;
+            uint[] fan;
+            Occlusion.Disk(0.0, 0.0, 0.01, out xyz, out fan);
+            GameObject disk = Target(scene, "disk", xyz, fan);
+            disk.transform.localPosition = new Vector3(0f, 0f, (float)Occlusion.BandHalfWidth());
+            Transform camera = Camera(scene, new Vector3(0f, (float)Occlusion.EyeHeight, 0f));
+            EnteronExposure exposure = disk.AddComponent<EnteronExposure>();
+            exposure.viewpoint = camera;
+            exposure.samplesPerEdge = 8;
+            Player.Frame(1f / 60f);
+            Assert.IsNotNull(exposure.Exposure, string.Join("\n", Player.Logged.ToArray()));
+            Assert.AreEqual(0.5, exposure.VisibleFraction, 0.01, "tests/capi/test_exposure.cpp's half-covered disk");
+            Assert.AreEqual(64u * 64u, exposure.Result.samples);
+            Assert.AreEqual(1u, exposure.Result.span_count, "the tube above the disk");
+            Assert.Less(exposure.SpansU[0], 0.5);
+            Assert.Greater(exposure.SpansU[1], 0.5);
+            Assert.AreEqual(1.0 - exposure.Result.visible_fraction, exposure.SpanHiddenFractions[0], 1e-12);
+            Assert.AreEqual(64, exposure.TriangleVisible.Length);
+            Assert.AreEqual(exposure.Result.visible_fraction, exposure.TriangleVisible.Average(), 1e-6,
+                            "triangles equal but for the floats of Unity's vertices: the mean of their fractions seen");
+
+            camera.localPosition = new Vector3(0f, (float)Occlusion.EyeHeight, 0.5f);  // 50 cm aside: over the tube's side
+            Player.Frame(1f / 60f);
+            Assert.AreEqual(1f, exposure.VisibleFraction, "every sight line passes beside the tube");
+            Assert.AreEqual(0u, exposure.Result.span_count);
+
+            Exposure handle = exposure.Exposure;
+            UnityEngine.Object.Destroy(disk);
+            Assert.IsTrue(handle.IsDisposed, "disposed with its component");
+        }
+
+        [Test]
+        public void AnExposureOnAnOrganFollowsItAndStopsWhenItIsRemoved()
+        {
+            // A small triangle at the organ's origin, under the tube: hidden; the organ moves 8 cm
+            // sideways and takes the target out of the shadow; removed, the component says so.
+            EnteronScene scene = NewScene(StraightTube, EnteronScene.Stepping.Manual);
+            GameObject patch = Target(scene, "patch", new double[] { -0.001, -0.001, 0, 0.001, -0.001, 0, 0, 0.001, 0 },
+                                      new uint[] { 0, 1, 2 });
+            patch.transform.localPosition = new Vector3(0.3f, 0f, 0.3f);  // ignored: the mesh is in the organ's frame
+            EnteronExposure exposure = patch.AddComponent<EnteronExposure>();
+            exposure.obstacle = 0;
+            exposure.viewpoint = Camera(scene, new Vector3(0f, (float)Occlusion.EyeHeight, 0f));
+            Player.Frame(1f / 60f);
+            Assert.AreEqual(0f, exposure.VisibleFraction, "under the tube");
+
+            scene.Drive(s => s.SetObstaclePose(0, new Vec3(0, 0.08, 0), Quat.Identity));
+            scene.StepOnce();
+            Player.Frame(1f / 60f);
+            Assert.AreEqual(1f, exposure.VisibleFraction, "the organ took it out of the shadow");
+            Assert.AreEqual(1UL, exposure.Result.steps);
+
+            scene.Drive(s => s.RemoveObstacle(0));
+            scene.StepOnce();
+            Player.Frame(1f / 60f);
+            Assert.IsFalse(exposure.enabled, "a target on a removed organ cannot be measured");
+            Assert.IsTrue(Player.Logged.Any(line => line.Contains("obstacle 0 (the target's frame)")),
+                          string.Join("\n", Player.Logged.ToArray()));
+        }
+
+        [Test]
+        public void AnExposureWithoutAViewpointOrATargetSaysSo()
+        {
+            EnteronScene scene = NewScene(StraightTube, EnteronScene.Stepping.Manual);
+            EnteronExposure noTarget = new GameObject("no target").AddComponent<EnteronExposure>();
+            noTarget.scene = scene;
+            noTarget.viewpoint = scene.transform;
+            EnteronExposure noViewpoint = Target(scene, "no viewpoint", new double[] { 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0 },
+                                                 new uint[] { 0, 1, 2 }).AddComponent<EnteronExposure>();
+            Player.Frame(1f / 60f);
+            Assert.IsFalse(noTarget.enabled);
+            Assert.IsFalse(noViewpoint.enabled);
+            Assert.IsTrue(Player.Logged.Any(line => line.Contains("no target mesh")));
+            Assert.IsTrue(Player.Logged.Any(line => line.Contains("no viewpoint")));
         }
 
         [Test]

@@ -218,6 +218,11 @@ namespace UnityEngine
             return _children.FirstOrDefault(child => child.gameObject.name == childName);
         }
 
+        public Vector3 TransformPoint(Vector3 point)
+        {
+            return rotation * point + position;
+        }
+
         public Vector3 InverseTransformPoint(Vector3 point)
         {
             return Quaternion.Inverse(rotation) * (point - position);

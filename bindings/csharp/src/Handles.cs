@@ -59,6 +59,19 @@ namespace Enteron
     }
 
     /// <summary>
+    /// An ent_exposure*: a target prepared for one scene. It holds nothing of the scene (C
+    /// keeps no reference to it), so it needs no callbacks; its queries pass both handles,
+    /// so neither the scene nor the exposure is destroyed under a query.
+    /// </summary>
+    internal sealed class ExposureHandle : EnteronHandle
+    {
+        protected override void Destroy(IntPtr pointer)
+        {
+            NativeMethods.ent_exposure_destroy(pointer);
+        }
+    }
+
+    /// <summary>
     /// A reference on a handle for longer than one call (a skin's mesh view is read after
     /// ent_skin_mesh returns): <c>using (var lease = new HandleLease(handle)) { ... lease.Pointer ... }</c>.
     /// A struct: taking one allocates nothing.

@@ -7,9 +7,10 @@
 // functions the built library exports).
 //
 // Conventions:
-// - Handles are SafeHandles (SceneHandle, SkinHandle): the marshaller adds a reference for
-//   the duration of each call, so a Dispose on another thread waits for the call to return
-//   before the C destroy runs, and a call after Dispose throws ObjectDisposedException.
+// - Handles are SafeHandles (SceneHandle, SkinHandle, ExposureHandle): the marshaller adds
+//   a reference for the duration of each call, so a Dispose on another thread waits for the
+//   call to return before the C destroy runs, and a call after Dispose throws
+//   ObjectDisposedException.
 // - Arrays of the C signatures (double[3], double[4], double[9]) are pointers to the
 //   blittable Vec3, Quat and Matrix3; output structs are passed by ref (pinned, not
 //   copied). Nothing here allocates on the managed heap except the handle objects that
@@ -187,6 +188,21 @@ namespace Enteron
 
         [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern Status ent_tool_read_contacts(SceneHandle scene, int tool, ref ToolContacts contacts);
+
+        // ---- exposure ------------------------------------------------------------------------------
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_exposure_desc_init(ref ExposureDesc desc, uint structSize);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_exposure_create(SceneHandle scene, ref ExposureDesc desc,
+                                                          out ExposureHandle exposure);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern void ent_exposure_destroy(IntPtr exposure);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_scene_exposure(SceneHandle scene, ExposureHandle exposure, Vec3* viewpoint,
+                                                         ref ExposureResult result);
 
         // ---- skins -------------------------------------------------------------------------------
         [DllImport(Library, CallingConvention = Cdecl)]

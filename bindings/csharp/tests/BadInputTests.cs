@@ -86,6 +86,31 @@ namespace Enteron.Tests
                 desc.method = (SkinMethod)7;
                 new Skin(s, desc);
             }),
+            R("exposure without points", Status.InvalidArgument, "desc.points_xyz_m", s =>
+              new Exposure(s, ExposureDesc.Default(), new double[0])),
+            R("exposure description without struct_size", Status.Version, "ent_exposure_desc.struct_size", s =>
+              new Exposure(s, new ExposureDesc(), new double[] { 0, 0, 0 })),
+            R("exposure index past the points", Status.InvalidArgument, "desc.triangles[0] has index 5", s =>
+              new Exposure(s, ExposureDesc.Default(), new double[] { 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0 }, new uint[] { 0, 1, 5 })),
+            R("negative exposure weight", Status.InvalidArgument, "desc.weights[1]", s =>
+              new Exposure(s, ExposureDesc.Default(), new double[] { 0, 0, 0, 0.01, 0, 0 }, null, new[] { 1.0, -1.0 })),
+            R("zero samples per edge", Status.InvalidArgument, "desc.samples_per_edge", s =>
+            {
+                ExposureDesc desc = ExposureDesc.Default();
+                desc.samples_per_edge = 0;
+                new Exposure(s, desc, new double[] { 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0 }, new uint[] { 0, 1, 2 });
+            }),
+            R("exposure on an unknown obstacle", Status.NotFound, "obstacle 5", s =>
+            {
+                ExposureDesc desc = ExposureDesc.Default();
+                desc.obstacle = 5;
+                new Exposure(s, desc, new double[] { 0, 0, 0 });
+            }),
+            R("non-finite viewpoint", Status.InvalidArgument, "viewpoint_m[2]", s =>
+            {
+                using (var exposure = new Exposure(s, ExposureDesc.Default(), new double[] { 0, 0, 0 }))
+                    exposure.Measure(new Vec3(0, 0, double.NaN));
+            }),
         };
 
         [Test]
@@ -157,6 +182,30 @@ namespace Enteron.Tests
                     new Callbacks { Log = (level, message) => { }, NativeUserData = (IntPtr)1 }));
                 double[] ranges = null;
                 Assert.DoesNotThrow(() => scene.GetTool(0).ReadContacts(ranges));
+
+                var patch = new double[] { 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0 };
+                var triangle = new uint[] { 0, 1, 2 };
+                Assert.Throws<ArgumentException>(() => new Exposure(scene, ExposureDesc.Default(), new double[4]),
+                                                 "points come in triples");
+                Assert.Throws<ArgumentException>(() => new Exposure(scene, ExposureDesc.Default(), patch, new uint[] { 0, 1 }),
+                                                 "triangles come in triples");
+                Assert.Throws<ArgumentException>(() => new Exposure(scene, ExposureDesc.Default(), patch, triangle, new double[3]),
+                                                 "one weight per triangle: C would read past two");
+                Assert.Throws<ArgumentNullException>(() => new Exposure(scene, ExposureDesc.Default(), null));
+                Assert.Throws<ArgumentNullException>(() => new Exposure(null, ExposureDesc.Default(), patch));
+                var exposure = new Exposure(scene, ExposureDesc.Default(), patch);
+                Assert.Throws<ArgumentException>(() => exposure.Measure(Vec3.Zero, null, null, null, new double[2]),
+                                                 "three points need three fractions seen");
+                Assert.Throws<ArgumentException>(() => exposure.Measure(Vec3.Zero, new double[8], new double[3]),
+                                                 "four spans need four hidden fractions");
+                Assert.Throws<ArgumentException>(() => exposure.Measure(Vec3.Zero, new double[8], null, new int[3]),
+                                                 "four spans need four tubes");
+                Assert.Throws<ArgumentException>(() => exposure.Measure(Vec3.Zero, null, new double[4]),
+                                                 "the spans' capacity is spansU's");
+                Assert.DoesNotThrow(() => exposure.Measure(Vec3.Zero, new double[8], new double[4], new int[4], new double[3]));
+                Assert.DoesNotThrow(() => exposure.Measure(Vec3.Zero, new double[0], new double[0], null, null));
+                exposure.Dispose();
+                Assert.Throws<ObjectDisposedException>(() => exposure.Measure(Vec3.Zero));
             }
         }
 

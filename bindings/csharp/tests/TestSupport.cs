@@ -41,6 +41,67 @@ namespace Enteron.Tests
         }
     }
 
+    /// <summary>
+    /// The analytic case of tests/capi/test_exposure.cpp: a straight tube of radius R along x
+    /// with its axis at height h above the plane z = 0, seen from an eye at height H above the
+    /// axis. A point of the plane is hidden when its sight line passes within R of the axis:
+    /// |y| (H - h) / sqrt(y^2 + H^2) &lt; R, the band |y| &lt; w = R H / sqrt((H - h)^2 - R^2).
+    /// </summary>
+    internal static class Occlusion
+    {
+        internal const double EyeHeight = 0.30;   // H, m
+        internal const double AxisHeight = 0.05;  // h, m
+        internal const double TubeLength = 2.0;   // m, centred on x = 0
+
+        internal static readonly Vec3 Eye = new Vec3(0, 0, EyeHeight);
+
+        /// <summary>w: the half width of the band the tube hides.</summary>
+        internal static double BandHalfWidth()
+        {
+            const double R = TestScenes.Radius, H = EyeHeight, h = AxisHeight;
+            return R * H / Math.Sqrt((H - h) * (H - h) - R * R);
+        }
+
+        /// <summary>Whether the tube hides the point (x, y, 0) of the plane from the eye.</summary>
+        internal static bool Hidden(double y)
+        {
+            return Math.Abs(y) * (EyeHeight - AxisHeight) / Math.Sqrt(y * y + EyeHeight * EyeHeight) < TestScenes.Radius;
+        }
+
+        /// <summary>The straight tube, 81 control points, at rest with only stretch and bend (or the effects given).</summary>
+        internal static Scene StraightTube(Effects effects = Effects.Stretch | Effects.Bend)
+        {
+            SceneDesc desc = SceneDesc.Default();
+            desc.effects = effects;
+            desc.shape = Shape.Line;
+            desc.length_m = TubeLength;
+            desc.control_points = 81;
+            desc.radius_m = TestScenes.Radius;
+            desc.shape_center_m = new Vec3(-TubeLength / 2, 0, AxisHeight);  // a line's start
+            desc.shape_direction = new Vec3(1, 0, 0);
+            return Scene.FromDescription(desc);
+        }
+
+        /// <summary>A regular 64-gon of radius rho around (cx, cy) in the plane z = 0, a fan of 64 triangles.</summary>
+        internal static void Disk(double cx, double cy, double rho, out double[] pointsXyz, out uint[] triangles)
+        {
+            const int sides = 64;
+            pointsXyz = new double[3 * (sides + 1)];
+            triangles = new uint[3 * sides];
+            pointsXyz[0] = cx;
+            pointsXyz[1] = cy;
+            for (int k = 0; k < sides; ++k)
+            {
+                double a = 2.0 * Math.PI * (k + 0.5) / sides;  // symmetric about the x and y axes
+                pointsXyz[3 * (k + 1)] = cx + rho * Math.Cos(a);
+                pointsXyz[3 * (k + 1) + 1] = cy + rho * Math.Sin(a);
+                triangles[3 * k] = 0;
+                triangles[3 * k + 1] = (uint)(1 + k);
+                triangles[3 * k + 2] = (uint)(1 + (k + 1) % sides);
+            }
+        }
+    }
+
     internal static class TestPaths
     {
         /// <summary>An environment variable that ctest sets (bindings/csharp/tests/csharp_tests.cmake).</summary>

@@ -170,6 +170,112 @@ namespace Enteron.Tests
         }
 
         [Test]
+        public void ADisposeRacingAnExposureQueryNeverCrashes()
+        {
+            // Even rounds dispose the scene under the query, odd ones the exposure; a query
+            // of 4096 sight lines takes long enough for most disposes to land during one.
+            double[] points;
+            uint[] triangles;
+            Occlusion.Disk(0.0, Occlusion.BandHalfWidth(), 0.01, out points, out triangles);
+            ExposureDesc desc = ExposureDesc.Default();
+            desc.samples_per_edge = 8;
+            var random = new Random(29);
+            int roundsWithAQuery = 0;
+            for (int round = 0; round < 100; ++round)
+            {
+                Scene scene = Occlusion.StraightTube();
+                var exposure = new Exposure(scene, desc, points, triangles);
+                var measuring = new Worker("measuring", w =>
+                {
+                    var spans = new double[16];
+                    var seen = new double[exposure.ElementCount];
+                    for (;;)
+                    {
+                        double visible = exposure.Measure(Occlusion.Eye, spans, null, null, seen).visible_fraction;
+                        if (Math.Abs(visible - 0.5) > 0.01) throw new InvalidOperationException("visible " + visible);
+                        ++w.Iterations;
+                    }
+                });
+                Thread.Sleep(random.Next(0, 3));
+                if (round % 2 == 0) scene.Dispose();
+                else exposure.Dispose();
+                measuring.Join();
+                Assert.IsInstanceOf<ObjectDisposedException>(measuring.Ended, "round " + round + ": " + measuring.Ended);
+                if (measuring.Iterations > 0) ++roundsWithAQuery;
+                exposure.Dispose();  // after its scene, or again
+                scene.Dispose();
+            }
+            Console.WriteLine("dispose under a measuring thread: {0} of 100 rounds after at least one query", roundsWithAQuery);
+            Assert.Greater(roundsWithAQuery, 0);
+        }
+
+        [Test]
+        public void TwoThreadsMeasuringOneExposureWhileTheSceneStepsAreToldBusy()
+        {
+            // A tube falling onto the floor over a disk: each query sees one whole published
+            // state (its fraction in [0, 1], its steps never going back); a query on the
+            // exposure another thread is measuring gets the library's Busy and writes nothing.
+            using (Scene scene = Occlusion.StraightTube(SceneDesc.Default().effects))
+            {
+                scene.AddObstacle(ObstacleDesc.Default(ObstacleKind.Plane));  // the floor z = 0, under the disk's plane
+                double[] points;
+                uint[] triangles;
+                Occlusion.Disk(0.0, 0.0, 0.02, out points, out triangles);
+                using (var exposure = new Exposure(scene, ExposureDesc.Default(), points, triangles))
+                {
+                    int busy = 0;
+                    var problems = new List<string>();
+                    var deadline = Stopwatch.StartNew();
+                    var physics = new Worker("physics", w =>
+                    {
+                        while (!w.Stop)
+                        {
+                            scene.Step(0.001);
+                            ++w.Iterations;
+                        }
+                    });
+                    Action<Worker> measure = w =>
+                    {
+                        ulong lastSteps = 0;
+                        var seen = new double[exposure.ElementCount];
+                        while (deadline.Elapsed < TimeSpan.FromSeconds(10) && (Volatile.Read(ref busy) == 0 || w.Iterations < 100))
+                        {
+                            seen[0] = -7.0;
+                            try
+                            {
+                                ExposureResult r = exposure.Measure(Occlusion.Eye, null, null, null, seen);
+                                if (!(r.visible_fraction >= 0.0 && r.visible_fraction <= 1.0) || r.steps < lastSteps || seen[0] < 0.0)
+                                    lock (problems) problems.Add(w.Iterations + ": visible " + r.visible_fraction + ", steps " + r.steps);
+                                lastSteps = r.steps;
+                                ++w.Iterations;
+                            }
+                            catch (EnteronException error)
+                            {
+                                if (error.Status != Status.Busy) throw;
+                                if (seen[0] != -7.0) lock (problems) problems.Add("a busy query wrote into the array");
+                                Interlocked.Increment(ref busy);
+                            }
+                        }
+                    };
+                    var first = new Worker("first measurer", measure);
+                    var second = new Worker("second measurer", measure);
+                    first.Join();
+                    second.Join();
+                    physics.Stop = true;
+                    physics.Join();
+                    Console.WriteLine("two threads on one exposure while {0} steps: {1} + {2} queries, {3} refused as busy",
+                                      physics.Iterations, first.Iterations, second.Iterations, busy);
+                    Assert.IsNull(first.Ended, first.Ended == null ? "" : first.Ended.ToString());
+                    Assert.IsNull(second.Ended, second.Ended == null ? "" : second.Ended.ToString());
+                    Assert.IsNull(physics.Ended, physics.Ended == null ? "" : physics.Ended.ToString());
+                    Assert.IsEmpty(problems, string.Join("\n", problems.ToArray()));
+                    Assert.Greater(busy, 0, "the two threads overlapped at least once in 10 s");
+                    Assert.Greater(physics.Iterations, 0);
+                }
+            }
+        }
+
+        [Test]
         public void OfTwoDriversOneIsToldBusyAndNothingIsLost()
         {
             using (Scene scene = Scene.FromJson(TestScenes.Minimal))
