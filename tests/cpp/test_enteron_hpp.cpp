@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -38,6 +39,37 @@ TEST(CppLayer, DescsHoldTheLibrarysDefaults) {
     EXPECT_EQ(enteron::ToolDesc().max_force_N, tool.max_force_N);
     EXPECT_EQ(enteron::SkinDesc().struct_size, sizeof(ent_skin_desc));
     EXPECT_EQ(enteron::ObstacleDesc().struct_size, sizeof(ent_obstacle_desc));
+}
+
+// Issue 27, defect 3: an array and its count come from one container, so the library never
+// reads past an array whose count says more than it holds.
+TEST(CppLayer, ArraysSetTheirCountsThemselves) {
+    const std::vector<double> xyz = {0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.2, 0.0, 0.0, 0.3, 0.0, 0.0, 0.4, 0.0, 0.0};
+    const std::vector<uint32_t> held = {0, 4};
+    enteron::SceneDesc desc;
+    desc.shape_points(xyz).pinned(held);
+    EXPECT_EQ(desc.control_points, 5u);
+    EXPECT_EQ(desc.shape, ENT_SHAPE_POINTS);
+    EXPECT_EQ(desc.shape_points_xyz_m, xyz.data());
+    EXPECT_EQ(desc.pinned_point_count, 2u);
+    EXPECT_NE(desc.effects & ENT_EFFECT_BIT(ENT_EFFECT_PINNED), 0u);
+    const enteron::Scene scene(desc);
+    EXPECT_EQ(scene.control_points(), xyz);
+    try {
+        desc.shape_points(std::vector<double>(7, 0.0));
+        ADD_FAILURE() << "7 values taken as points";
+    } catch (const enteron::Error& error) {
+        EXPECT_EQ(error.status(), ENT_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(error.what()).find("shape_points_xyz_m"), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(desc.control_points, 5u);  // a refused array changes nothing
+    const double box[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const uint32_t faces[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    enteron::ObstacleDesc organ;
+    organ.mesh(box, faces);
+    EXPECT_EQ(organ.mesh_vertex_count, 4u);
+    EXPECT_EQ(organ.mesh_triangle_count, 4u);
+    EXPECT_EQ(organ.kind, ENT_OBSTACLE_MESH);
 }
 
 TEST(CppLayer, AFailingCallThrowsTheLibrarysMessage) {
