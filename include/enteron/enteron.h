@@ -256,7 +256,10 @@ typedef struct ent_scene_desc {
     uint32_t effects;
 
     /* The intestine */
-    double length_m;                    /**< rest length of the axis, m (default 6). */
+    double length_m;                    /**< rest length of the axis, m (default 6). A points shape with length_m 0
+                                             takes the length of the spline through its points, so that it starts at
+                                             rest; a length given that differs from that one by more than 1 % is used,
+                                             and logged as a warning (the bowel starts stretched or compressed). */
     double radius_m;                    /**< tube radius R, m (default 0.0125). */
     uint32_t control_points;            /**< spline control points, >= 4 (default 240). */
     double linear_density_kg_per_m;     /**< mass per unit length, kg/m (default 0.3). */
@@ -271,7 +274,8 @@ typedef struct ent_scene_desc {
     double shape_leg_spacing_m;         /**< serpentine: distance between legs, m, >= 2 R (default 0.05). */
     double shape_helix_radius_m;        /**< helix: radius, m (default 0.1). */
     double shape_helix_pitch_m;         /**< helix: rise per turn, m, >= 2 R (default 0.03). */
-    const double* shape_points_xyz_m;   /**< points: control_points x 3 coordinates, m. */
+    const double* shape_points_xyz_m;   /**< points: control_points x 3 coordinates, m (the library reads exactly
+                                             that many: a binding fills both from one array). */
 
     /* Solver */
     int32_t integrator;                 /**< ENT_INTEGRATOR_* (default implicit Euler). */

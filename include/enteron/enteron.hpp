@@ -114,13 +114,16 @@ private:
  *  count says. The container must outlive the scene's creation (it is not copied here). */
 struct SceneDesc : ent_scene_desc {
     SceneDesc() noexcept : ent_scene_desc() { ent_scene_desc_default(this); }
-    /** A points shape through `xyz` (x y z per point, m: doubles): shape, shape_points_xyz_m
-     *  and control_points. Throws Error when its size is not a multiple of 3. */
+    /** A points shape through `xyz` (x y z per point, m: doubles): shape, shape_points_xyz_m,
+     *  control_points, and length_m 0 (the length of the spline through them: the bowel starts
+     *  at rest; set length_m afterwards to give another). Throws Error when its size is not a
+     *  multiple of 3. */
     template <class Container>
     SceneDesc& shape_points(const Container& xyz) {
         control_points = detail::item_count(std::size(xyz), 3, "shape_points_xyz_m");
         shape_points_xyz_m = detail::data_of<double>(xyz);
         shape = ENT_SHAPE_POINTS;
+        length_m = 0.0;
         return *this;
     }
     /** The control points to hold (uint32_t indices): pinned_points and pinned_point_count,

@@ -147,8 +147,9 @@ class SceneDesc:
     gravity_m_per_s2=(0, 0, -9.81), integrator=enteron.INTEGRATOR_RK4). Also:
       effects             a bit mask, or an iterable of effect numbers or names
                           ({"gravity", "stretch"}); default: stretch, bend, damping, gravity
-      shape_points_xyz_m  an (n, 3) array-like (sets shape to SHAPE_POINTS and control_points
-                          to n: a control_points given too must be n)
+      shape_points_xyz_m  an (n, 3) array-like (sets shape to SHAPE_POINTS, control_points to
+                          n: a control_points given too must be n, and length_m to 0, the
+                          length of the spline through them, unless length_m is given)
       pinned_points       an iterable of control point indices (sets pinned_point_count)
     The arrays are copied and kept with the description until the scene is created. The
     count of an array always comes from the array; an integer field that its C type cannot
@@ -191,6 +192,8 @@ class SceneDesc:
             self.struct.shape_points_xyz_m = points.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
             self.struct.shape = SHAPE_POINTS
             self.struct.control_points = count
+            if "length_m" not in self._given:
+                self.struct.length_m = 0.0  # the length of the spline through them: it starts at rest
             return
         if name == "pinned_points":
             indices = np.array([_fields.checked_integer(ctypes.c_uint32, index, "SceneDesc.pinned_points[%d]" % n)

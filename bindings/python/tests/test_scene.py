@@ -228,6 +228,16 @@ class Descriptions(unittest.TestCase):
             enteron.Scene(desc=desc)
         self.assertIn("pinned_point_count is 1000 but pinned_points holds 1 indices", str(caught.exception))
 
+    def test_points_start_at_rest(self):
+        # Issue 27, defect 5: without length_m the rest length is the spline's through the
+        # points (a straight 0.45 m line here), not the 6 m default.
+        desc = enteron.SceneDesc(shape_points_xyz_m=self.POINTS, effects={"stretch"})
+        self.assertEqual(desc.length_m, 0.0)
+        with enteron.Scene(desc=desc) as scene:
+            self.assertLess(abs(scene.contact_summary().largest_stretch), 1e-9)
+            self.assertLess(scene.stats().potential_energy_J, 1e-12)
+        self.assertEqual(enteron.SceneDesc(length_m=1.0, shape_points_xyz_m=self.POINTS).length_m, 1.0)
+
     def test_integer_fields_do_not_wrap(self):
         cases = [(lambda: enteron.SceneDesc(control_points=2**32 + 10), "SceneDesc.control_points must fit uint32_t"),
                  (lambda: enteron.SceneDesc(control_points=2**40), "got 1099511627776"),
