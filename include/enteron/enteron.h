@@ -915,6 +915,10 @@ typedef struct ent_tool_feedback {
     double proxy_position_m[3];       /**< the tip of the tool in the scene (the proxy's; the commanded one in direct mode), m: what a viewer draws. */
     double commanded_position_m[3];   /**< the tip the caller commanded for that step, m. */
     double orientation_wxyz[4];       /**< the commanded orientation for that step (the proxy's too). */
+    /** 1 if max_force_N bounded the tool's force in that step (the force is the bound, not what the
+     *  contacts asked for: a device shim says so, as the LCM bridge's STATUS_FORCE_LIMITED does), else 0.
+     *  Added in 0.1 after the proxy (issue 27): not written for an older, smaller struct_size. */
+    int32_t saturated;
 } ent_tool_feedback;
 
 /**

@@ -55,9 +55,10 @@ PublishedTool published_tool(const SceneHandle& handle, int32_t tool) {
 }
 
 // The sizes of ent_tool_desc and ent_tool_feedback in released headers: before the fields
-// of the tool's proxy and stiffness, and now.
+// of the tool's proxy and stiffness, (the feedback) before saturated, and now.
 constexpr std::size_t kToolDescFirstSize = offsetof(ent_tool_desc, mode);
 constexpr std::size_t kToolFeedbackFirstSize = offsetof(ent_tool_feedback, stiffness_N_per_m);
+constexpr std::size_t kToolFeedbackProxySize = offsetof(ent_tool_feedback, saturated);
 
 // The published output of a tool that exists and is not removed.
 PublishedTool present_tool(const SceneHandle& handle, int32_t tool) {
@@ -186,9 +187,9 @@ ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, 
         const SceneCall call(scene);
         const SceneHandle& handle = call.handle();
         require(out, "out");
-        // The sizes of ent_tool_feedback in released headers: only the current one so far.
-        enteron::capi::check_struct_size(out->struct_size, {kToolFeedbackFirstSize, sizeof(ent_tool_feedback)},
-                                         "ent_tool_feedback");
+        enteron::capi::check_struct_size(
+            out->struct_size, {kToolFeedbackFirstSize, kToolFeedbackProxySize, sizeof(ent_tool_feedback)},
+            "ent_tool_feedback");
         const PublishedTool published = present_tool(handle, tool);
         const enteron::collision::ToolOutput& output = published.output;
         ent_tool_feedback full{};
@@ -207,6 +208,7 @@ ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, 
             full.commanded_position_m[c] = output.commanded.position[c];
         }
         std::copy(output.commanded.orientation.begin(), output.commanded.orientation.end(), full.orientation_wxyz);
+        full.saturated = output.saturated ? 1 : 0;
         std::memcpy(out, &full, out->struct_size);
     });
 }

@@ -333,6 +333,48 @@ TEST(ToolHaptics, TheProxyNeverPassesThroughTheBowelAndItsForceStaysBounded) {
     }
 }
 
+// Issue 27, defect 6: a tool whose force max_force bounded says so (ent_tool_feedback's
+// saturated), in proxy and in direct mode; one that never reaches it never does. Before,
+// nothing said that 5.000 N was the bound and not what the bowel pushed.
+TEST(ToolHaptics, AForceBoundedAtMaxForceIsSaidSaturated) {
+    const double dt = 1e-3, r = 0.0025;
+    for (const int32_t mode : {ENT_TOOL_MODE_PROXY, ENT_TOOL_MODE_DIRECT}) {
+        for (const double max_force : {2.0, 50.0}) {
+            SCOPED_TRACE(std::string(mode == ENT_TOOL_MODE_PROXY ? "proxy" : "direct") + ", max_force " +
+                         std::to_string(max_force));
+            ScenePtr scene = bowel_on_floor(0.6, 25, dt);
+            ASSERT_TRUE(scene);
+            // Down 12 mm into the bowel at 50 mm/s, then held there.
+            const double top = 2 * kRadius + r, start[3] = {0.0, 0.0, top + 0.002};
+            add_tool(scene.get(), start, r, max_force, mode);
+            int saturated = 0, at_bound = 0, at_bound_and_saturated = 0;
+            double smallest_saturated = 1e9;
+            for (int i = 1; i <= 600; ++i) {
+                const double p[3] = {0.0, 0.0, start[2] - std::min(0.014, 0.05 * i * dt)};
+                ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK) << ent_last_error();
+                ASSERT_EQ(ent_scene_step(scene.get(), dt), ENT_OK) << ent_last_error();
+                const ent_tool_feedback f = feedback(scene.get(), 0);
+                ASSERT_TRUE(f.saturated == 0 || f.saturated == 1);
+                saturated += f.saturated;
+                if (f.saturated) smallest_saturated = std::min(smallest_saturated, norm3(f.force_N));
+                if (norm3(f.force_N) >= max_force * (1 - 1e-9)) {
+                    ++at_bound;
+                    at_bound_and_saturated += f.saturated;
+                }
+            }
+            std::cout << "[ saturated " << (mode == ENT_TOOL_MODE_PROXY ? "proxy" : "direct") << " max_force "
+                      << max_force << " N ] " << saturated << " steps saturated, " << at_bound
+                      << " at the bound, smallest saturated force " << smallest_saturated << " N\n";
+            if (max_force < 10.0) {
+                EXPECT_GT(saturated, 100) << "held at the bound";
+                EXPECT_EQ(at_bound_and_saturated, at_bound) << "every step at the bound says so";
+            } else {
+                EXPECT_EQ(saturated, 0) << "50 N is never reached";
+            }
+        }
+    }
+}
+
 // Where the proxy is not solved with the bowel (both ends clamped; bdf2's second-order
 // substeps) minus what the bowel received can exceed max_force (docs/haptics.md "The
 // wrench"): the reported force is clipped to it. The sweep of the test above, faster: with

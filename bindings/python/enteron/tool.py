@@ -57,7 +57,8 @@ class ToolFeedback(typing.NamedTuple):
     in N and torque (3,) about the tip in N m on the tool, bounded by its max_force;
     grasping; contacts (collision spheres touching it); time_s and steps of that state;
     stiffness (3, 3) dF/dx in N/m (as Tool.stiffness); proxy_position (3,), the tip of the
-    tool in the scene, and commanded_position (3,), the tip asked for, in m."""
+    tool in the scene, and commanded_position (3,), the tip asked for, in m; saturated: True
+    when max_force bounded the force in that step (the force is the bound)."""
     force: np.ndarray
     torque: np.ndarray
     grasping: bool
@@ -67,6 +68,7 @@ class ToolFeedback(typing.NamedTuple):
     stiffness: np.ndarray
     proxy_position: np.ndarray
     commanded_position: np.ndarray
+    saturated: bool
 
 
 class ToolStats(typing.NamedTuple):
@@ -190,7 +192,8 @@ class Tool:
               "ent_tool_read_feedback")
         return ToolFeedback(np.array(raw.force_N[:]), np.array(raw.torque_Nm[:]), bool(raw.grasping),
                             raw.contacts, raw.time_s, raw.steps, np.array(raw.stiffness_N_per_m[:]).reshape(3, 3),
-                            np.array(raw.proxy_position_m[:]), np.array(raw.commanded_position_m[:]))
+                            np.array(raw.proxy_position_m[:]), np.array(raw.commanded_position_m[:]),
+                            bool(raw.saturated))
 
     def stiffness(self):
         """The tool's local stiffness at the last published step (ent_tool_stiffness): a new
