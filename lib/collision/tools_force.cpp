@@ -325,7 +325,12 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
     problem.start = tool.proxy;
     problem.start_velocity = tool.proxy_velocity;
     problem.target = segment.tip;
-    problem.target_velocity = segment.tip_velocity;
+    // The coupling's damper takes the tip's velocity over the last two steps. A device that
+    // turns back within one tick flips its velocity at once, and b_c (v_x - v_p) flipped with
+    // it: a click of up to 2 b_c |v| in one tick (0.16 N at 80 mm/s, docs/haptics.md). The
+    // mean of two steps spreads it over two ticks and stays dissipative: against the step's
+    // velocity its response e^(-i w dt / 2) cos(w dt / 2) has a real part >= 0.
+    problem.target_velocity = 0.5 * (segment.tip_velocity + tool.previous_tip_velocity);
     problem.dt = std::max(0.0, t - tool.proxy_time);
     // The spheres the proxy may meet on its way from where it was to the device.
     candidates_.clear();
@@ -625,6 +630,12 @@ void ToolsForce::end_step(bool accepted) {
                                                 tool.settings.passivity_limiter);
             tool.accepted_stiffness = tool.used_stiffness;
             tool.contacts = tool.used_contacts;
+            if (step_dt_ > 0.0) {
+                tool.previous_tip_velocity = (tool.target.position - tool.current.position) / step_dt_;
+                tool.previous_tail_velocity =
+                    (tail_of(tool.target, tool.settings.length) - tail_of(tool.current, tool.settings.length)) /
+                    step_dt_;
+            }
             tool.current = tool.target;
             tool.grasp_rest = grasp_rest(tool, step_start_ + step_dt_);
             tool.contact_impulse += tool.attempt_contact_impulse;
@@ -702,6 +713,8 @@ void ToolsForce::save_state(StateWriter& out) const {
         out.f64s(tool.contact_impulse.data(), 3);
         out.f64(tool.contact_impulse_magnitude);
         out.u8(tool.saturated ? 1 : 0);
+        out.f64s(tool.previous_tip_velocity.data(), 3);
+        out.f64s(tool.previous_tail_velocity.data(), 3);
     }
     out.u32(last_.count);
     out.f64(last_.max_penetration);
@@ -741,8 +754,14 @@ void ToolsForce::restore_state(StateReader& in) {
         PassivityObserver::restore_state(in, saved.observer);
         in.f64s("contact impulse", 3, saved.contact_impulse.data());
         saved.contact_impulse_magnitude = in.f64("contact impulse magnitude");
-        // Version 3 and before did not say whether max_force bounded the last step.
+        // Version 3 and before did not say whether max_force bounded the last step, nor how
+        // fast the tool moved in it (taken as still).
         saved.saturated = version >= 4 && in.flag("force saturated");
+        saved.previous_tip_velocity = saved.previous_tail_velocity = Vec3::Zero();
+        if (version >= 4) {
+            in.f64s("tip velocity", 3, saved.previous_tip_velocity.data());
+            in.f64s("tail velocity", 3, saved.previous_tail_velocity.data());
+        }
         saved.step_proxy = saved.proxy;
         saved.step_proxy_velocity = saved.proxy_velocity;
         saved.step_proxy_time = saved.proxy_time;

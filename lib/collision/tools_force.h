@@ -124,6 +124,9 @@ private:
         bool removed = false;
         ToolPose current;  // the commanded pose at the start of the step
         ToolPose target;   // and at its end
+        // The tip's and the tail's velocities over the last accepted step, m/s: where the
+        // commanded velocity of this step starts from (segment_at).
+        Vec3 previous_tip_velocity = Vec3::Zero(), previous_tail_velocity = Vec3::Zero();
         bool grasping = false;
         bool slipped = false;                // in the current attempt
         spline::SegmentWeights grasp_point;  // material point of the axis held
