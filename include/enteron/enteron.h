@@ -796,7 +796,8 @@ typedef struct ent_tool_desc {
  * commanded pose by a virtual coupling (a spring-damper bounded by max_force_N). The bowel
  * receives what the proxy gives it; the wrench is the coupling's. Direct: the capsule is
  * where the caller puts it and its contacts are bounded together by max_force_N (the
- * behaviour before 0.2: a fast or forceful tool can pass through the tube).
+ * behaviour of the first tools, before the proxy: a fast or forceful tool can pass
+ * through the tube).
  */
 #define ENT_TOOL_MODE_PROXY 0
 #define ENT_TOOL_MODE_DIRECT 1

@@ -173,8 +173,8 @@ class Scene;
 
 /**
  * A tool of a scene (ent_tool_add). Move-only; it refers to its scene, which must outlive
- * it (the C API has no call that removes a tool: destroying the handle leaves the tool in
- * the scene). Its commands and reads are safe from any thread (a haptic thread).
+ * it. Destroying the handle leaves the tool in the scene (ent_tool_remove(scene.get(),
+ * tool.id()) removes it). Its commands and reads are safe from any thread (a haptic thread).
  */
 class Tool {
 public:
