@@ -155,6 +155,11 @@ TEST(CppLayer, ToolsContactsAndSaveRestore) {
         if (c.kind == ENT_CONTACT_TOOL) sum += c.force_N[1];
     EXPECT_NEAR(sum, -feedback.force_N[1], 1e-12);
     EXPECT_EQ(scene.contact_summary().tool_contacts, feedback.contacts);
+    // A push of well under max_force (5 N) is not saturated (issue 27: ent_tool_feedback.saturated).
+    EXPECT_LT(std::sqrt(feedback.force_N[0] * feedback.force_N[0] + feedback.force_N[1] * feedback.force_N[1] +
+                        feedback.force_N[2] * feedback.force_N[2]),
+              1.0);
+    EXPECT_EQ(feedback.saturated, 0);
 
     const std::vector<double> at_400 = scene.control_points();
     scene.restore_state(saved);
@@ -174,6 +179,29 @@ TEST(CppLayer, ToolsContactsAndSaveRestore) {
         EXPECT_NE(std::string(error.what()).find("checksum"), std::string::npos) << error.what();
     }
     EXPECT_EQ(scene.control_points(), at_400);
+}
+
+TEST(CppLayer, TheFeedbackSaysWhenMaxForceBoundedTheForce) {
+    enteron::Scene scene = small_scene();
+    enteron::ObstacleDesc floor;
+    floor.kind = ENT_OBSTACLE_PLANE;
+    scene.add_obstacle(floor);
+    enteron::ToolDesc desc;
+    desc.max_force_N = 0.05;  // less than pushing the bowel aside takes
+    desc.position_m[1] = 0.05;
+    desc.position_m[2] = 0.0125;
+    enteron::Tool tool = scene.add_tool(desc);
+    const double identity[4] = {1, 0, 0, 0};
+    for (int i = 1; i <= 400; ++i) {
+        const double tip[3] = {0.0, 0.05 - 1e-4 * i, 0.0125};
+        tool.set_pose(tip, identity);
+        scene.step(1e-3);
+    }
+    const ent_tool_feedback feedback = tool.feedback();
+    EXPECT_EQ(feedback.saturated, 1);
+    EXPECT_NEAR(std::sqrt(feedback.force_N[0] * feedback.force_N[0] + feedback.force_N[1] * feedback.force_N[1] +
+                          feedback.force_N[2] * feedback.force_N[2]),
+                0.05, 1e-9);
 }
 
 TEST(CppLayer, SkinsGiveSpansOverTheMesh) {
