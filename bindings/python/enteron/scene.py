@@ -346,14 +346,27 @@ class Scene(OwnedHandle):
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
-        """Destroys the scene (ent_scene_destroy), after closing its skins. Idempotent; later
+        """Destroys the scene (ent_scene_destroy) and closes its skins. Idempotent; later
         calls raise ValueError. Any thread: calls running on other threads (a step, a query,
         a save) finish, the scene goes as the last of them returns, and their next calls
         raise ValueError."""
-        if not self.closed:
-            for skin in list(getattr(self, "_skins", ())):
-                skin.close()
-        super().close()
+        super().close()  # first: a skin made from now on is refused (_adopt)
+        lock = getattr(self, "_lock", None)
+        if lock is None:
+            return
+        with lock:
+            skins = list(self._skins)
+        for skin in skins:
+            skin.close()
+
+    def _adopt(self, skin):
+        """Keeps a new skin, to be closed with the scene; False if the scene was closed
+        while the skin was being made (another thread's close)."""
+        with self._lock:
+            if not self._handle:
+                return False
+            self._skins.add(skin)
+            return True
 
     # ---- driving --------------------------------------------------------------------------
     def step(self, dt_s):

@@ -156,7 +156,9 @@ class Skin(OwnedHandle):
         self._own(handle, lib.ent_skin_destroy)
         self._scene = scene
         self.method = desc.method
-        scene._skins.add(self)
+        if not scene._adopt(self):  # the scene was closed on another thread meanwhile
+            self.close()
+            raise ValueError("operation on a closed enteron.Scene")
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
