@@ -110,13 +110,19 @@ void heap_release(void* user, void* memory, size_t, size_t) {
     std::free(memory);
 }
 
-TEST(Lifetimes, TheScenesMemoryGoesWithTheLastOfTheSceneAndItsSkins) {
-    Heap heap;
+// Callbacks that allocate from `heap` and count its blocks.
+ent_callbacks allocating_from(Heap& heap) {
     ent_callbacks callbacks;
     ent_callbacks_default(&callbacks);
     callbacks.allocate = heap_allocate;
     callbacks.release = heap_release;
     callbacks.user_data = &heap;
+    return callbacks;
+}
+
+TEST(Lifetimes, TheScenesMemoryGoesWithTheLastOfTheSceneAndItsSkins) {
+    Heap heap;
+    const ent_callbacks callbacks = allocating_from(heap);
     ent_scene_desc desc = falling_desc();
     desc.callbacks = &callbacks;
     ent_scene* scene = nullptr;
@@ -201,12 +207,8 @@ std::size_t live_blocks(Heap& heap) {
 
 TEST(Lifetimes, ADestroyDuringAStepOnAnotherThreadLeavesTheSceneToTheStep) {
     HeldStep held;
-    ent_callbacks callbacks;
-    ent_callbacks_default(&callbacks);
-    callbacks.allocate = heap_allocate;
-    callbacks.release = heap_release;
+    ent_callbacks callbacks = allocating_from(held);
     callbacks.log = hold_the_first_warning;
-    callbacks.user_data = static_cast<Heap*>(&held);
     ent_scene_desc desc = falling_desc();
     desc.max_speed_m_per_s = 1e-6;
     desc.callbacks = &callbacks;

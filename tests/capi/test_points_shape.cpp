@@ -9,7 +9,6 @@
 #include "capi_test_support.h"
 
 #include <cstdio>
-#include <mutex>
 
 using namespace capi_test;
 
@@ -75,44 +74,16 @@ std::string points_json(const std::vector<double>& xyz) {
     return text + "]";
 }
 
-struct Warnings {
-    std::mutex mutex;
-    std::vector<std::string> lines;
-    std::string all() {
-        std::lock_guard<std::mutex> lock(mutex);
-        std::string text;
-        for (const std::string& line : lines) text += line + "\n";
-        return text;
-    }
-};
-void collect(void* user, int32_t level, const char* message) {
-    if (level != ENT_LOG_WARNING) return;
-    Warnings& w = *static_cast<Warnings*>(user);
-    std::lock_guard<std::mutex> lock(w.mutex);
-    w.lines.push_back(message);
-}
-
 // A bowel with stretch alone (no bend, no gravity): its potential energy is the stretch's.
 // `length` < 0: no "length" key.
 ScenePtr stretch_only(const std::vector<double>& xyz, double length, Warnings& warnings) {
     std::string json = R"({"intestine": {"bend_stiffness": 0, )";
     if (length >= 0.0) json += "\"length\": " + std::to_string(length) + ", ";
     json += R"("shape": {"kind": "points", "points": )" + points_json(xyz) + "}}}";
-    ent_callbacks callbacks;
-    ent_callbacks_default(&callbacks);
-    callbacks.log = collect;
-    callbacks.user_data = &warnings;
+    const ent_callbacks callbacks = logging_to(warnings);
     ent_scene* scene = nullptr;
     EXPECT_EQ(ent_scene_create_json_with(json.data(), json.size(), &callbacks, &scene), ENT_OK) << ent_last_error();
     return ScenePtr(scene);
-}
-
-ent_contact_summary summary(const ent_scene* scene) {
-    ent_contact_summary s;
-    std::memset(&s, 0, sizeof s);
-    s.struct_size = sizeof s;
-    EXPECT_EQ(ent_scene_contact_summary(scene, &s), ENT_OK) << ent_last_error();
-    return s;
 }
 
 // The arc length of the axis, from 20001 samples evenly spaced along it.
@@ -199,10 +170,7 @@ TEST(PointsShape, ALengthThatDisagreesWithTheSplineIsUsedAndWarnedAbout) {
     EXPECT_EQ(close.all(), "");
     // From C, named as C names them.
     Warnings c_warnings;
-    ent_callbacks callbacks;
-    ent_callbacks_default(&callbacks);
-    callbacks.log = collect;
-    callbacks.user_data = &c_warnings;
+    const ent_callbacks callbacks = logging_to(c_warnings);
     ent_scene_desc desc = default_desc();
     desc.shape = ENT_SHAPE_POINTS;
     desc.control_points = static_cast<uint32_t>(serpentine.size() / 3);
