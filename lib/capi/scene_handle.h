@@ -59,8 +59,8 @@ void release(SceneHandle* handle);
 void destroy_scene(SceneHandle* handle) noexcept;
 
 // A call on a scene, for as long as it runs (every entry point that takes an ent_scene*):
-// counted in flight, so that a destroy on another thread waits for it to return before the
-// scene goes. NULL is refused, and so is a scene already destroyed whose handle is still
+// counted in flight, so that a destroy on another thread leaves the scene to it, and the
+// scene goes as the last such call returns. NULL is refused, and so is a scene already destroyed whose handle is still
 // there (its skins keep it, or another call is in flight); a scene destroyed without skins
 // or calls in flight is gone: using it is the caller's dangling pointer.
 class SceneCall {
