@@ -44,12 +44,19 @@
  *   stepping thread never waits for a copy: it publishes into a free slot of a small pool
  *   (8 slots; with up to 7 queries running at once every step is published, beyond that a
  *   publication may be skipped and the next one goes through).
- * - A skin is used by one thread at a time (its own lock, or one skin per thread); it reads
- *   the snapshots like a query, so it never waits for the step either.
- * - Lifetimes: ent_scene_destroy must not overlap any other call on that scene, and a
- *   scene (or skin) must not be used after its destroy call. A skin may outlive its
- *   scene: it shares the published snapshots and keeps working on the last state the
- *   scene published. A skin's mesh view is valid until that skin's next update or destroy.
+ * - A skin is used by one thread at a time (its own lock, or one skin per thread): a call
+ *   on a skin made while another runs on the same skin on another thread returns
+ *   ENT_ERROR_BUSY and does nothing. It reads the snapshots like a query, so it never waits
+ *   for the step either.
+ * - Lifetimes: a scene (or skin) must not be used after its destroy call returned: a call
+ *   begun after it is the caller's bug, as in any C API (the handle may be gone). A destroy
+ *   that races with calls already running on other threads is safe: those calls finish (or
+ *   fail with a status) and the last of them to return releases the memory, on its thread
+ *   (through the scene's release callback, if any; keep the callbacks' user_data valid
+ *   until then). The check costs each call two atomic operations; the step still
+ *   allocates nothing and makes no system call. A skin may outlive its scene: it shares
+ *   the published snapshots and keeps working on the last state the scene published. A
+ *   skin's mesh view is valid until that skin's next update or destroy.
  * - Different scenes are independent; the calls that take no scene (ent_version,
  *   ent_status_string, ent_last_error, ent_effect_name, the _init/_default functions)
  *   are safe from any thread. ent_last_error is per thread. Callbacks run on the thread
@@ -136,7 +143,8 @@ typedef int32_t ent_status;
 /** A bug in the library. Please report it with the message of ent_last_error(). */
 #define ENT_ERROR_INTERNAL 9
 /** Another driving call (step, add obstacle, add tool) is running on this scene on another
- *  thread; nothing was done. Added in 0.1 after the first tools. */
+ *  thread, or another call on this skin (ent_skin_update, _mesh, _metrics); nothing was
+ *  done. Added in 0.1 after the first tools. */
 #define ENT_ERROR_BUSY 10
 
 /**
@@ -249,7 +257,10 @@ typedef struct ent_scene_desc {
     uint32_t effects;
 
     /* The intestine */
-    double length_m;                    /**< rest length of the axis, m (default 6). */
+    double length_m;                    /**< rest length of the axis, m (default 6). A points shape with length_m 0
+                                             takes the length of the spline through its points, so that it starts at
+                                             rest; a length given that differs from that one by more than 1 % is used,
+                                             and logged as a warning (the bowel starts stretched or compressed). */
     double radius_m;                    /**< tube radius R, m (default 0.0125). */
     uint32_t control_points;            /**< spline control points, >= 4 (default 240). */
     double linear_density_kg_per_m;     /**< mass per unit length, kg/m (default 0.3). */
@@ -264,7 +275,8 @@ typedef struct ent_scene_desc {
     double shape_leg_spacing_m;         /**< serpentine: distance between legs, m, >= 2 R (default 0.05). */
     double shape_helix_radius_m;        /**< helix: radius, m (default 0.1). */
     double shape_helix_pitch_m;         /**< helix: rise per turn, m, >= 2 R (default 0.03). */
-    const double* shape_points_xyz_m;   /**< points: control_points x 3 coordinates, m. */
+    const double* shape_points_xyz_m;   /**< points: control_points x 3 coordinates, m (the library reads exactly
+                                             that many: a binding fills both from one array). */
 
     /* Solver */
     int32_t integrator;                 /**< ENT_INTEGRATOR_* (default implicit Euler). */
@@ -386,7 +398,15 @@ ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callba
 /**
  * Destroys a scene and everything it owns. NULL is ignored. Its skins stay valid: they keep
  * the last published state (and its memory) until they are destroyed too.
- * @warning No other call on this scene may run during or after this one.
+ * Calls on this scene already running on other threads when it is called (a step, a
+ * query, a tool command) finish, or fail with a status; the scene's memory is then
+ * released by the last of them as it returns, on that thread. It never waits for them.
+ * A call begun after this one returned is the caller's bug: the handle may be gone (while
+ * a skin or a call in flight still holds it, such a call gets ENT_ERROR_INVALID_ARGUMENT,
+ * "scene was destroyed"). A second destroy of a scene whose skins keep its handle does
+ * nothing.
+ * @warning Stop your other threads' calls on the scene before destroying it; the library
+ *          only makes the race harmless, it cannot make a later call valid.
  */
 ENT_API void ent_scene_destroy(ent_scene* scene);
 
@@ -777,7 +797,8 @@ typedef struct ent_tool_desc {
  * commanded pose by a virtual coupling (a spring-damper bounded by max_force_N). The bowel
  * receives what the proxy gives it; the wrench is the coupling's. Direct: the capsule is
  * where the caller puts it and its contacts are bounded together by max_force_N (the
- * behaviour before 0.2: a fast or forceful tool can pass through the tube).
+ * behaviour of the first tools, before the proxy: a fast or forceful tool can pass
+ * through the tube).
  */
 #define ENT_TOOL_MODE_PROXY 0
 #define ENT_TOOL_MODE_DIRECT 1
@@ -896,6 +917,10 @@ typedef struct ent_tool_feedback {
     double proxy_position_m[3];       /**< the tip of the tool in the scene (the proxy's; the commanded one in direct mode), m: what a viewer draws. */
     double commanded_position_m[3];   /**< the tip the caller commanded for that step, m. */
     double orientation_wxyz[4];       /**< the commanded orientation for that step (the proxy's too). */
+    /** 1 if max_force_N bounded the tool's force in that step (the force is the bound, not what the
+     *  contacts asked for: a device shim says so, as the LCM bridge's STATUS_FORCE_LIMITED does), else 0.
+     *  Added in 0.1 after the proxy (issue 27): not written for an older, smaller struct_size. */
+    int32_t saturated;
 } ent_tool_feedback;
 
 /**
@@ -1329,9 +1354,11 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
  * buffers keep headroom; tests/no_alloc/skin_no_alloc.cpp checks this on a moving bowel).
  * Invalidates the previous ent_skin_mesh view.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_OUT_OF_MEMORY (the previous
- *         mesh may then be incomplete: update again).
- * @warning Calls on one skin (update, mesh, metrics, destroy) must not race each other; use
- *          one skin per thread, or your own lock.
+ *         mesh may then be incomplete: update again); ENT_ERROR_BUSY (another thread is in
+ *         a call on this skin; nothing done).
+ * @warning Calls on one skin (update, mesh, metrics) are made by one thread at a time; use
+ *          one skin per thread, or your own lock. A call that overlaps another on the same
+ *          skin is refused with ENT_ERROR_BUSY rather than corrupting its buffers.
  */
 ENT_API ent_status ent_skin_update(ent_skin* skin);
 
@@ -1375,7 +1402,8 @@ typedef struct ent_mesh_view {
  * Points *out at the skin's mesh, without copying. Set out->struct_size first; fields
  * beyond an older, smaller struct_size are not written. Before the first update the mesh
  * is empty (counts 0, pointers NULL).
- * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
+ *         ENT_ERROR_BUSY (another thread is in a call on this skin).
  */
 ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out);
 
@@ -1422,11 +1450,16 @@ struct ent_skin_metrics {
  *   if (ent_skin_metrics(skin, &m) == ENT_OK) printf("radius RMS %.3f %%\n", 100 * m.radius_error_rms);
  * @endcode
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
- *         ENT_ERROR_OUT_OF_MEMORY.
+ *         ENT_ERROR_OUT_OF_MEMORY; ENT_ERROR_BUSY (another thread is in a call on this skin).
  */
 ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metrics* out);
 
-/** Destroys a skin and its mesh (any view of it becomes invalid). NULL is ignored. */
+/**
+ * Destroys a skin and its mesh (any view of it becomes invalid). NULL is ignored.
+ * A call on this skin already running on another thread (an update) finishes, and the
+ * skin's memory goes as it returns; a call begun after this one returned is the caller's
+ * bug (the handle may be gone).
+ */
 ENT_API void ent_skin_destroy(ent_skin* skin);
 
 #ifdef __cplusplus

@@ -31,9 +31,12 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -64,6 +67,24 @@ inline void check(ent_status status) {
         throw Error(status, std::string(ent_status_string(status)) + ": " + (message != nullptr ? message : ""));
     }
 }
+/** The element count of an array the library reads as `what` (3 values per point for
+ *  `per_item` 3), as the uint32_t the C struct holds; throws Error naming `what` when the
+ *  size is not a whole number of items or the count does not fit. */
+inline uint32_t item_count(std::size_t values, std::size_t per_item, const char* what) {
+    if (values % per_item != 0 || values / per_item > std::numeric_limits<uint32_t>::max())
+        throw Error(ENT_ERROR_INVALID_ARGUMENT, std::string(what) + " must hold a whole number of " +
+                                                    std::to_string(per_item) + "-value items that fits uint32_t, got " +
+                                                    std::to_string(values) + " values");
+    return static_cast<uint32_t>(values / per_item);
+}
+
+/** A container's data() as const T*, after checking its element type is T. */
+template <class T, class Container>
+const T* data_of(const Container& values) {
+    static_assert(std::is_same_v<std::remove_cv_t<std::remove_reference_t<decltype(*std::data(values))>>, T>,
+                  "the container's elements must be of the C field's type");
+    return std::data(values);
+}
 }  // namespace detail
 
 /** A view of `size` contiguous elements (not owned). */
@@ -87,17 +108,53 @@ private:
     std::size_t size_ = 0;
 };
 
-/** ent_scene_desc with the library's defaults (ent_scene_desc_default). */
+/** ent_scene_desc with the library's defaults (ent_scene_desc_default). Its arrays are best
+ *  set with shape_points() and pinned(), which take the pointer and the count from one
+ *  container: the library cannot see an array's length, and reads as many values as the
+ *  count says. The container must outlive the scene's creation (it is not copied here). */
 struct SceneDesc : ent_scene_desc {
     SceneDesc() noexcept : ent_scene_desc() { ent_scene_desc_default(this); }
+    /** A points shape through `xyz` (x y z per point, m: doubles): shape, shape_points_xyz_m,
+     *  control_points, and length_m 0 (the length of the spline through them: the bowel starts
+     *  at rest; set length_m afterwards to give another). Throws Error when its size is not a
+     *  multiple of 3. */
+    template <class Container>
+    SceneDesc& shape_points(const Container& xyz) {
+        control_points = detail::item_count(std::size(xyz), 3, "shape_points_xyz_m");
+        shape_points_xyz_m = detail::data_of<double>(xyz);
+        shape = ENT_SHAPE_POINTS;
+        length_m = 0.0;
+        return *this;
+    }
+    /** The control points to hold (uint32_t indices): pinned_points and pinned_point_count,
+     *  and the pinned effect's bit. */
+    template <class Container>
+    SceneDesc& pinned(const Container& indices) {
+        pinned_point_count = detail::item_count(std::size(indices), 1, "pinned_points");
+        pinned_points = detail::data_of<uint32_t>(indices);
+        effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+        return *this;
+    }
 };
 /** ent_tool_desc with the library's defaults. */
 struct ToolDesc : ent_tool_desc {
     ToolDesc() noexcept : ent_tool_desc() { ent_tool_desc_default(this); }
 };
-/** ent_obstacle_desc with the library's defaults. */
+/** ent_obstacle_desc with the library's defaults. mesh() sets a mesh's arrays with their
+ *  counts, as SceneDesc::shape_points does. */
 struct ObstacleDesc : ent_obstacle_desc {
     ObstacleDesc() noexcept : ent_obstacle_desc() { ent_obstacle_desc_default(this); }
+    /** A mesh obstacle of `vertices_xyz` (doubles, m, 3 per vertex) and `triangles` (uint32_t,
+     *  3 vertex indices per triangle): kind, the two arrays and their counts. */
+    template <class Vertices, class Triangles>
+    ObstacleDesc& mesh(const Vertices& vertices_xyz, const Triangles& triangles) {
+        mesh_vertex_count = detail::item_count(std::size(vertices_xyz), 3, "mesh_vertices_xyz_m");
+        mesh_triangle_count = detail::item_count(std::size(triangles), 3, "mesh_triangles");
+        mesh_vertices_xyz_m = detail::data_of<double>(vertices_xyz);
+        mesh_triangles = detail::data_of<uint32_t>(triangles);
+        kind = ENT_OBSTACLE_MESH;
+        return *this;
+    }
 };
 /** ent_skin_desc with the library's defaults. */
 struct SkinDesc : ent_skin_desc {
@@ -121,8 +178,8 @@ class Scene;
 
 /**
  * A tool of a scene (ent_tool_add). Move-only; it refers to its scene, which must outlive
- * it (the C API has no call that removes a tool: destroying the handle leaves the tool in
- * the scene). Its commands and reads are safe from any thread (a haptic thread).
+ * it. Destroying the handle leaves the tool in the scene (ent_tool_remove(scene.get(),
+ * tool.id()) removes it). Its commands and reads are safe from any thread (a haptic thread).
  */
 class Tool {
 public:

@@ -22,7 +22,7 @@ using enteron::Error;
 using enteron::ErrorCode;
 using enteron::capi::SceneHandle;
 using enteron::capi::guarded;
-using enteron::capi::live_handle;
+using enteron::capi::SceneCall;
 using enteron::capi::require;
 using enteron::collision::ToolMailbox;
 
@@ -55,9 +55,10 @@ PublishedTool published_tool(const SceneHandle& handle, int32_t tool) {
 }
 
 // The sizes of ent_tool_desc and ent_tool_feedback in released headers: before the fields
-// of the tool's proxy and stiffness, and now.
+// of the tool's proxy and stiffness, (the feedback) before saturated, and now.
 constexpr std::size_t kToolDescFirstSize = offsetof(ent_tool_desc, mode);
 constexpr std::size_t kToolFeedbackFirstSize = offsetof(ent_tool_feedback, stiffness_N_per_m);
+constexpr std::size_t kToolFeedbackProxySize = offsetof(ent_tool_feedback, saturated);
 
 // The published output of a tool that exists and is not removed.
 PublishedTool present_tool(const SceneHandle& handle, int32_t tool) {
@@ -97,7 +98,8 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
 
 ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int32_t* out_tool) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require(desc, "desc");
         enteron::capi::check_struct_size(desc->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
         const enteron::capi::DrivingCall driving(handle, "ent_tool_add");
@@ -134,7 +136,8 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
 ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const double position_m[3],
                                      const double orientation_wxyz[4]) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require(position_m, "position_m");
         require(orientation_wxyz, "orientation_wxyz");
         ToolMailbox& mailbox = mailbox_of(handle, tool);
@@ -146,16 +149,23 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 }
 
 ENT_API ent_status ent_tool_grasp(ent_scene* scene, int32_t tool) {
-    return guarded([&] { mailbox_of(live_handle(scene), tool).post_grasp(ToolMailbox::Grasp::grasp); });
+    return guarded([&] {
+        const SceneCall call(scene);
+        mailbox_of(call.handle(), tool).post_grasp(ToolMailbox::Grasp::grasp);
+    });
 }
 
 ENT_API ent_status ent_tool_release(ent_scene* scene, int32_t tool) {
-    return guarded([&] { mailbox_of(live_handle(scene), tool).post_grasp(ToolMailbox::Grasp::release); });
+    return guarded([&] {
+        const SceneCall call(scene);
+        mailbox_of(call.handle(), tool).post_grasp(ToolMailbox::Grasp::release);
+    });
 }
 
 ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double force_N[3], double torque_Nm[3]) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(force_N, "force_N");
         require(torque_Nm, "torque_Nm");
         const enteron::collision::ToolWrench wrench = present_tool(handle, tool).output.wrench;
@@ -165,7 +175,8 @@ ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double 
 
 ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t* out_grasping) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_grasping, "out_grasping");
         *out_grasping = present_tool(handle, tool).output.grasping ? 1 : 0;
     });
@@ -173,11 +184,12 @@ ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t*
 
 ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, ent_tool_feedback* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
-        // The sizes of ent_tool_feedback in released headers: only the current one so far.
-        enteron::capi::check_struct_size(out->struct_size, {kToolFeedbackFirstSize, sizeof(ent_tool_feedback)},
-                                         "ent_tool_feedback");
+        enteron::capi::check_struct_size(
+            out->struct_size, {kToolFeedbackFirstSize, kToolFeedbackProxySize, sizeof(ent_tool_feedback)},
+            "ent_tool_feedback");
         const PublishedTool published = present_tool(handle, tool);
         const enteron::collision::ToolOutput& output = published.output;
         ent_tool_feedback full{};
@@ -196,13 +208,15 @@ ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, 
             full.commanded_position_m[c] = output.commanded.position[c];
         }
         std::copy(output.commanded.orientation.begin(), output.commanded.orientation.end(), full.orientation_wxyz);
+        full.saturated = output.saturated ? 1 : 0;
         std::memcpy(out, &full, out->struct_size);
     });
 }
 
 ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, double K_N_per_m[9]) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(K_N_per_m, "K_N_per_m");
         const std::array<double, 9> stiffness = present_tool(handle, tool).output.stiffness;
         std::copy(stiffness.begin(), stiffness.end(), K_N_per_m);
@@ -211,7 +225,8 @@ ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, doub
 
 ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent_tool_stats* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_tool_stats)}, "ent_tool_stats");
         const PublishedTool published = present_tool(handle, tool);
@@ -231,7 +246,8 @@ ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent
 
 ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_tool_remove");
         mailbox_of(handle, tool);  // NOT_FOUND for an unknown or removed tool
         handle.scene->remove_tool(static_cast<std::size_t>(tool));
@@ -240,7 +256,8 @@ ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool) {
 
 ENT_API ent_status ent_scene_tool_count(const ent_scene* scene, int32_t* out_count) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_count, "out_count");
         *out_count = static_cast<int32_t>(handle.scene->tool_channels().present());
     });

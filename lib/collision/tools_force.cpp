@@ -284,6 +284,7 @@ void ToolsForce::evaluate_direct(Tool& tool, const mechanics::State& state, doub
     const double max_force = tool.settings.max_force;
     const bool bounded = total_magnitude > max_force;
     const double scale = bounded ? max_force / total_magnitude : 1.0;
+    tool.bounded = bounded;
     // The force on the tool is -scale total, the scale changing with the magnitudes.
     tool.stiffness = bounded ? Mat3(-scale * (total_rate - total * magnitude_rate / total_magnitude)) : Mat3(-total_rate);
 
@@ -324,7 +325,12 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
     problem.start = tool.proxy;
     problem.start_velocity = tool.proxy_velocity;
     problem.target = segment.tip;
-    problem.target_velocity = segment.tip_velocity;
+    // The coupling's damper takes the tip's velocity over the last two steps. A device that
+    // turns back within one tick flips its velocity at once, and b_c (v_x - v_p) flipped with
+    // it: a click of up to 2 b_c |v| in one tick (0.16 N at 80 mm/s, docs/haptics.md). The
+    // mean of two steps spreads it over two ticks and stays dissipative: against the step's
+    // velocity its response e^(-i w dt / 2) cos(w dt / 2) has a real part >= 0.
+    problem.target_velocity = 0.5 * (segment.tip_velocity + tool.previous_tip_velocity);
     problem.dt = std::max(0.0, t - tool.proxy_time);
     // The spheres the proxy may meet on its way from where it was to the device.
     candidates_.clear();
@@ -363,6 +369,7 @@ void ToolsForce::evaluate_proxy(Tool& tool, const mechanics::State& state, doubl
     for (const ProxyContact& c : proxy_.contacts()) total += c.force.force;
     const double magnitude = total.norm();
     const double scale = lin == nullptr && magnitude > tool.settings.max_force ? tool.settings.max_force / magnitude : 1.0;
+    tool.bounded = result.saturated || scale < 1.0;
     const double h = lin != nullptr ? lin->h : 0.0;
     Mat3 block = Mat3::Zero();      // h sum E_i of the border body
     Vec3 predicted = Vec3::Zero();  // sum of the forces less h K v: the g-hats of the border
@@ -450,6 +457,7 @@ void ToolsForce::evaluation_used(double duration, const mechanics::State* after)
         tool.duration += duration;
         tool.used_stiffness = tool.stiffness;
         tool.used_contacts = tool.sphere_contacts;
+        tool.attempt_saturated = tool.attempt_saturated || tool.bounded;
         // The proxy is where this evaluation put it (and moved with the bowel since).
         const Vec3 before = tool.proxy;
         tool.proxy = tool.evaluated_proxy + proxy_move;
@@ -592,6 +600,7 @@ void ToolsForce::begin_attempt() {
         tool.proxy_travel = 0.0;
         tool.impulse = tool.angular_impulse = tool.attempt_contact_impulse = Vec3::Zero();
         tool.duration = tool.attempt_contact_impulse_magnitude = 0.0;
+        tool.attempt_saturated = false;
     }
 }
 
@@ -614,12 +623,19 @@ void ToolsForce::end_step(bool accepted) {
             // observer, so that its balance counts the work of the force rendered.
             const double magnitude = received.force.norm();
             if (magnitude > tool.settings.max_force) received.force *= tool.settings.max_force / magnitude;
+            tool.saturated = tool.attempt_saturated || magnitude > tool.settings.max_force;
             const Vec3 displacement = tool.target.position - tool.current.position;
             const Vec3 rotation = rotation_between(tool.current.orientation, tool.target.orientation);
             tool.wrench = tool.observer.observe(received, displacement, rotation, tool.settings.max_force,
                                                 tool.settings.passivity_limiter);
             tool.accepted_stiffness = tool.used_stiffness;
             tool.contacts = tool.used_contacts;
+            if (step_dt_ > 0.0) {
+                tool.previous_tip_velocity = (tool.target.position - tool.current.position) / step_dt_;
+                tool.previous_tail_velocity =
+                    (tail_of(tool.target, tool.settings.length) - tail_of(tool.current, tool.settings.length)) /
+                    step_dt_;
+            }
             tool.current = tool.target;
             tool.grasp_rest = grasp_rest(tool, step_start_ + step_dt_);
             tool.contact_impulse += tool.attempt_contact_impulse;
@@ -647,6 +663,7 @@ void ToolsForce::write_output(const Tool& tool, ToolOutput& output) {
     output.grasp_sphere = tool.grasp_sphere;
     output.contact_impulse = tool.contact_impulse;
     output.contact_impulse_magnitude = tool.contact_impulse_magnitude;
+    output.saturated = tool.saturated;
 }
 
 namespace {
@@ -673,7 +690,7 @@ void save_mat3(StateWriter& out, const Mat3& m) { out.f64s(m.data(), 9); }
 // left it), accepted outputs, passivity observer and impulses; the rest is rebuilt by the
 // next step (the attempt's sums, the evaluation's contacts).
 void ToolsForce::save_state(StateWriter& out) const {
-    out.begin_section("tools", 3);
+    out.begin_section("tools", 4);
     out.u32(static_cast<uint32_t>(tools_.size()));
     for (const Tool& tool : tools_) {
         out.u8(tool.removed ? 1 : 0);
@@ -695,6 +712,9 @@ void ToolsForce::save_state(StateWriter& out) const {
         tool.observer.save_state(out);
         out.f64s(tool.contact_impulse.data(), 3);
         out.f64(tool.contact_impulse_magnitude);
+        out.u8(tool.saturated ? 1 : 0);
+        out.f64s(tool.previous_tip_velocity.data(), 3);
+        out.f64s(tool.previous_tail_velocity.data(), 3);
     }
     out.u32(last_.count);
     out.f64(last_.max_penetration);
@@ -704,7 +724,7 @@ void ToolsForce::save_state(StateWriter& out) const {
 
 void ToolsForce::restore_state(StateReader& in) {
     // Version 1 (before the proxy) cannot give a proxy's state: refused as too old.
-    const uint32_t version = in.begin_section("tools", 3);
+    const uint32_t version = in.begin_section("tools", 4);
     if (version < 2) in.fail("saved before tools had proxies (version 1); save it again");
     if (in.u32("tools") != tools_.size()) in.fail("saved with another number of tools");
     for (std::size_t i = 0; i < tools_.size(); ++i) {
@@ -734,6 +754,14 @@ void ToolsForce::restore_state(StateReader& in) {
         PassivityObserver::restore_state(in, saved.observer);
         in.f64s("contact impulse", 3, saved.contact_impulse.data());
         saved.contact_impulse_magnitude = in.f64("contact impulse magnitude");
+        // Version 3 and before did not say whether max_force bounded the last step, nor how
+        // fast the tool moved in it (taken as still).
+        saved.saturated = version >= 4 && in.flag("force saturated");
+        saved.previous_tip_velocity = saved.previous_tail_velocity = Vec3::Zero();
+        if (version >= 4) {
+            in.f64s("tip velocity", 3, saved.previous_tip_velocity.data());
+            in.f64s("tail velocity", 3, saved.previous_tail_velocity.data());
+        }
         saved.step_proxy = saved.proxy;
         saved.step_proxy_velocity = saved.proxy_velocity;
         saved.step_proxy_time = saved.proxy_time;

@@ -124,6 +124,9 @@ private:
         bool removed = false;
         ToolPose current;  // the commanded pose at the start of the step
         ToolPose target;   // and at its end
+        // The tip's and the tail's velocities over the last accepted step, m/s: where the
+        // commanded velocity of this step starts from (segment_at).
+        Vec3 previous_tip_velocity = Vec3::Zero(), previous_tail_velocity = Vec3::Zero();
         bool grasping = false;
         bool slipped = false;                // in the current attempt
         spline::SegmentWeights grasp_point;  // material point of the axis held
@@ -148,11 +151,13 @@ private:
         std::size_t body = 0;
         bool has_body = false;
         Mat3 stiffness = Mat3::Zero();
+        bool bounded = false;  // max_force scaled this evaluation's force down
         // The attempt: what the bowel received, integrated over time.
         Vec3 impulse = Vec3::Zero(), angular_impulse = Vec3::Zero();
         double duration = 0.0;
         Mat3 used_stiffness = Mat3::Zero();
         uint32_t used_contacts = 0;
+        bool attempt_saturated = false;  // an evaluation it used was bounded by max_force
         // The attempt's impulse of the bowel's contacts (not the grasp) on the tool: the
         // vector sum and the sum of the magnitudes, N s.
         Vec3 attempt_contact_impulse = Vec3::Zero();
@@ -161,6 +166,7 @@ private:
         ToolWrench wrench;
         Mat3 accepted_stiffness = Mat3::Zero();
         uint32_t contacts = 0;
+        bool saturated = false;  // ToolOutput's
         PassivityObserver observer;
         Vec3 contact_impulse = Vec3::Zero();     // N s, ToolOutput's
         double contact_impulse_magnitude = 0.0;  // N s

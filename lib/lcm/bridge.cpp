@@ -190,7 +190,7 @@ bool Bridge::plan_tool(std::size_t index, int64_t now_ns, int64_t utime) {
     return given;
 }
 
-bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const ent_stats& stats,
+bool Bridge::render_tool(std::size_t index, int64_t now_ns, int64_t utime, bool step_ok, const ent_stats& stats,
                          TickSummary& summary) {
     Tool& tool = tools_[index];
     const int32_t id = static_cast<int32_t>(index);
@@ -207,7 +207,11 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
         read ? Eigen::Matrix3d(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(output.stiffness_N_per_m))
              : Eigen::Matrix3d::Zero();
     ToolSafety& safety = tool.safety;
-    safety.render(scene_force, scene_torque, scene_stiffness, step_ok && read);
+    safety.render(scene_force, scene_torque, scene_stiffness, read && output.saturated != 0, step_ok && read);
+    // A device locked out (another sender keeps the sequence, a command the checks refuse)
+    // hears it here: the safety's bits and the last rejection of the watchdog time.
+    const int32_t status =
+        safety.status() | rejection_status(receiver_->recent_rejection(index, now_ns, settings_.limits().watchdog_ns));
 
     enteron_tool_feedback_t& feedback = tool.feedback;
     feedback.utime = utime;
@@ -224,7 +228,7 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
     copy3(device_pose.position, feedback.applied_position_m);
     copy_wxyz(device_pose.orientation, feedback.applied_orientation_wxyz);
     feedback.grasping = static_cast<int8_t>(grasping);
-    feedback.status = safety.status();
+    feedback.status = status;
     feedback.step_us = clamp_to_int32(static_cast<int64_t>(stats.last_step_ns / 1000));
     if (settings_.network && !feedback_.push(feedback)) BridgeCounters::add(counters_.feedback_dropped);
 
@@ -242,7 +246,7 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
     copy3(safety.rendered_scene_force(), state.rendered_force_N);
     state.grasping = static_cast<int8_t>(grasping);
     state.jaws_closed = safety.jaws_closed() ? 1 : 0;
-    state.status = safety.status();
+    state.status = status;
     state.command_seq = feedback.command_seq;
     return read;
 }
@@ -264,7 +268,7 @@ ent_status Bridge::tick(int64_t now_ns) {
     summary.tick = tick_;
 
     for (std::size_t i = 0; i < tools_.size(); ++i)
-        calls_ok = render_tool(i, utime, step_ok, summary.stats, summary) && calls_ok;
+        calls_ok = render_tool(i, now_ns, utime, step_ok, summary.stats, summary) && calls_ok;
     queue_journal([&](JournalRecord& record) {
         record.kind = JournalRecord::Kind::step;
         enteron_journal_step_t& entry = record.step;

@@ -94,7 +94,8 @@ private:
 
     // Tick parts.
     bool plan_tool(std::size_t index, int64_t now_ns, int64_t utime);
-    bool render_tool(std::size_t index, int64_t utime, bool step_ok, const ent_stats& stats, TickSummary& summary);
+    bool render_tool(std::size_t index, int64_t now_ns, int64_t utime, bool step_ok, const ent_stats& stats,
+                     TickSummary& summary);
     template <class Fill>
     void queue_journal(Fill&& fill);
 

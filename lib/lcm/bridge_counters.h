@@ -9,7 +9,8 @@
 
 namespace enteron::bridge {
 
-// Why a command was rejected, in the order the receive thread checks.
+// Why a command was rejected, in the order the receive thread checks. In tool_feedback_t's
+// status a reason is its value + 1 (REJECTED_*) in bits 8-15.
 enum class Rejection : int {
     size,
     fingerprint,

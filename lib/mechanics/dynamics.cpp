@@ -291,12 +291,10 @@ double Dynamics::external_work_bound() const {
 }
 
 void Dynamics::save_state(StateWriter& out) const {
-    // Version 2: the clamped ends' attachments follow the counters.
-    out.begin_section("dynamics", 2);
-    for (const EffectCounters& counter : counters_) {
-        out.u64(counter.calls);
-        out.u64(counter.total_time_ns);
-    }
+    // Version 2: the clamped ends' attachments follow the counters. Version 3: the effects'
+    // wall-clock times are not saved (two identical runs save identical images).
+    out.begin_section("dynamics", 3);
+    for (const EffectCounters& counter : counters_) out.u64(counter.calls);
     if (clamped_) clamped_->save_attachments(out);
     else out.u32(0);
     out.end_section();
@@ -305,11 +303,11 @@ void Dynamics::save_state(StateWriter& out) const {
 }
 
 void Dynamics::restore_state(StateReader& in, const RigidFrames& frames) {
-    const uint32_t version = in.begin_section("dynamics", 2);
-    std::array<EffectCounters, kEffectCount> counters{};
-    for (EffectCounters& counter : counters) {
-        counter.calls = in.u64("effect calls");
-        counter.total_time_ns = in.u64("effect time");
+    const uint32_t version = in.begin_section("dynamics", 3);
+    std::array<uint64_t, kEffectCount> calls{};
+    for (uint64_t& count : calls) {
+        count = in.u64("effect calls");
+        if (version < 3) in.u64("effect time");  // a wall-clock figure: dropped
     }
     // Version 1 (before clamped ends could follow frames): they stay as they are.
     if (version >= 2) {
@@ -319,7 +317,9 @@ void Dynamics::restore_state(StateReader& in, const RigidFrames& frames) {
     in.end_section();
     for (Owned<Effect>& effect : effects_) effect->restore_state(in);
     if (pinned_) pinned_->restore_state(in, model_.control_points);
-    if (!in.checking()) counters_ = counters;
+    // The calls are the simulation's work; the times stay this process's.
+    if (!in.checking())
+        for (std::size_t i = 0; i < calls.size(); ++i) counters_[i].calls = calls[i];
 }
 
 void Dynamics::add_layout(Fingerprint& fingerprint) const {

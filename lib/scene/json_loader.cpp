@@ -12,6 +12,7 @@
 
 #include "base/error.h"
 #include "scene/mesh_file.h"
+#include "scene/points_length.h"
 #include "scene/validate.h"
 
 namespace enteron::scene {
@@ -223,10 +224,12 @@ const Key<IntestineConfig> kIntestineKeys[] = {
 
 void read_intestine(const json& value, const std::string& path, IntestineConfig& intestine) {
     read_object(value, path, kIntestineKeys, intestine);
-    // Explicit points set the control point count unless it is given too.
+    // Explicit points set the control point count unless it is given too, and the length:
+    // the spline's through them (points_length.h).
     if (intestine.shape.kind == ShapeKind::points && !value.contains("control_points")) {
         intestine.control_points = intestine.shape.points.size() / 3;
     }
+    if (intestine.shape.kind == ShapeKind::points && !value.contains("length")) intestine.length = kLengthOfThePoints;
 }
 
 const Key<SolverConfig> kSolverKeys[] = {

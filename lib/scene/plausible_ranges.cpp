@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "scene/checked_value.h"
+#include "scene/points_length.h"
 
 namespace enteron::scene {
 
@@ -92,6 +93,7 @@ void warn_implausible(const SceneConfig& config, const FieldNames& names, const 
     };
     const IntestineConfig& intestine = config.intestine;
     check(Field::length, intestine.length);
+    warn_points_length(config, names, logger);
     check(Field::radius, intestine.radius);
     check(Field::linear_density, intestine.linear_density);
     // 0 turns an elasticity off: a choice, not a mistake.

@@ -39,7 +39,8 @@ const PlausibleRange* plausible_range(Field field);
 // Logs one warning (ENT_LOG_WARNING) for each value of a validated config, obstacle or
 // tool that lies outside its range, naming it with `names` ("gravity", "gravity_m_per_s2").
 // An obstacle is named by `name` ("environment[0]", "obstacle[2]"), a tool's fields by
-// `prefix` and names.tool ("tools[1].radius", "radius_m").
+// `prefix` and names.tool ("tools[1].radius", "radius_m"). The config's also warns of a
+// points shape whose length disagrees with its spline's (points_length.h).
 void warn_implausible(const SceneConfig& config, const FieldNames& names, const Logger& logger);
 void warn_implausible(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger);
 void warn_implausible(const collision::ToolSettings& tool, const std::string& prefix, const FieldNames& names,

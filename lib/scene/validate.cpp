@@ -10,6 +10,7 @@
 #include "mechanics/clamped_ends.h"
 #include "scene/checked_value.h"
 #include "scene/plausible_ranges.h"
+#include "scene/points_length.h"
 #include "scene/shape_builder.h"
 #include "spline/catmull_rom.h"
 
@@ -539,6 +540,20 @@ const FieldNames& c_field_names() {
 
 SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet& given) {
     const Validator validator(names, given);
+    // A points shape starts at rest: its length 0 (JSON: no length) is the length of the
+    // spline through the points (points_length.h), once they are seen to be valid.
+    if (config.intestine.shape.kind == ShapeKind::points && config.intestine.length == kLengthOfThePoints) {
+        IntestineConfig placeholder = config.intestine;
+        placeholder.length = IntestineConfig().length;
+        validator.intestine(placeholder);
+        config.intestine.length = points_spline_length(config);
+        if (!(config.intestine.length > config.intestine.radius))
+            validator.fail(names[Field::shape_points],
+                           "must spread along the bowel: the spline through them is " +
+                               format_number(config.intestine.length) + " m long, not longer than " +
+                               names[Field::radius] + " (" + format_number(config.intestine.radius) +
+                               " m), and a points shape without a length takes the spline's");
+    }
     validator.intestine(config.intestine);
     validator.solver(config.solver);
     if (config.gravity) validator.check_finite(*config.gravity, Field::gravity);

@@ -13,6 +13,7 @@
 #include "capi_test_support.h"
 
 #include <cfloat>
+#include <cstddef>
 #include <climits>
 #include <fstream>
 #include <functional>
@@ -1073,6 +1074,13 @@ std::vector<BadInput> table() {
              return status;
          },
          ENT_ERROR_NOT_FOUND, "tool -3"},
+        {"ent_tool_read_feedback", "struct_size between the sizes before and with saturated",
+         [](L l) {
+             ent_tool_feedback f;
+             f.struct_size = offsetof(ent_tool_feedback, saturated) + 2;
+             return ent_tool_read_feedback(l.scene, l.tool, &f);
+         },
+         kVersion, "struct_size"},
         // Contacts (queries) and save/restore (driving calls).
         {"ent_scene_contacts", "scene NULL",
          [](L) {

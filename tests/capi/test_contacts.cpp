@@ -18,14 +18,6 @@ const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
 double norm3(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
-ent_contact_summary summary(const ent_scene* scene) {
-    ent_contact_summary s;
-    std::memset(&s, 0, sizeof s);
-    s.struct_size = sizeof s;
-    EXPECT_EQ(ent_scene_contact_summary(scene, &s), ENT_OK) << ent_last_error();
-    return s;
-}
-
 std::vector<ent_contact> contacts(const ent_scene* scene) {
     const ent_contact_summary s = summary(scene);
     std::vector<ent_contact> list(std::max<uint32_t>(s.capacity, 1));

@@ -11,32 +11,6 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-struct Warnings {
-    std::mutex mutex;
-    std::vector<std::string> lines;
-    bool has(const std::string& part) {
-        std::lock_guard<std::mutex> lock(mutex);
-        for (const std::string& line : lines)
-            if (contains(line, part)) return true;
-        return false;
-    }
-};
-
-void collect(void* user, int32_t level, const char* message) {
-    if (level != ENT_LOG_WARNING) return;
-    Warnings& w = *static_cast<Warnings*>(user);
-    std::lock_guard<std::mutex> lock(w.mutex);
-    w.lines.push_back(message);
-}
-
-ent_callbacks logging_to(Warnings& warnings) {
-    ent_callbacks callbacks;
-    ent_callbacks_default(&callbacks);
-    callbacks.log = collect;
-    callbacks.user_data = &warnings;
-    return callbacks;
-}
-
 ScenePtr json_with(const std::string& json, Warnings& warnings) {
     const ent_callbacks callbacks = logging_to(warnings);
     ent_scene* scene = nullptr;

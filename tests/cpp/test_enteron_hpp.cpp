@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -38,6 +39,37 @@ TEST(CppLayer, DescsHoldTheLibrarysDefaults) {
     EXPECT_EQ(enteron::ToolDesc().max_force_N, tool.max_force_N);
     EXPECT_EQ(enteron::SkinDesc().struct_size, sizeof(ent_skin_desc));
     EXPECT_EQ(enteron::ObstacleDesc().struct_size, sizeof(ent_obstacle_desc));
+}
+
+// Issue 27, defect 3: an array and its count come from one container, so the library never
+// reads past an array whose count says more than it holds.
+TEST(CppLayer, ArraysSetTheirCountsThemselves) {
+    const std::vector<double> xyz = {0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.2, 0.0, 0.0, 0.3, 0.0, 0.0, 0.4, 0.0, 0.0};
+    const std::vector<uint32_t> held = {0, 4};
+    enteron::SceneDesc desc;
+    desc.shape_points(xyz).pinned(held);
+    EXPECT_EQ(desc.control_points, 5u);
+    EXPECT_EQ(desc.shape, ENT_SHAPE_POINTS);
+    EXPECT_EQ(desc.shape_points_xyz_m, xyz.data());
+    EXPECT_EQ(desc.pinned_point_count, 2u);
+    EXPECT_NE(desc.effects & ENT_EFFECT_BIT(ENT_EFFECT_PINNED), 0u);
+    const enteron::Scene scene(desc);
+    EXPECT_EQ(scene.control_points(), xyz);
+    try {
+        desc.shape_points(std::vector<double>(7, 0.0));
+        ADD_FAILURE() << "7 values taken as points";
+    } catch (const enteron::Error& error) {
+        EXPECT_EQ(error.status(), ENT_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(error.what()).find("shape_points_xyz_m"), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(desc.control_points, 5u);  // a refused array changes nothing
+    const double box[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const uint32_t faces[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    enteron::ObstacleDesc organ;
+    organ.mesh(box, faces);
+    EXPECT_EQ(organ.mesh_vertex_count, 4u);
+    EXPECT_EQ(organ.mesh_triangle_count, 4u);
+    EXPECT_EQ(organ.kind, ENT_OBSTACLE_MESH);
 }
 
 TEST(CppLayer, AFailingCallThrowsTheLibrarysMessage) {
@@ -123,6 +155,11 @@ TEST(CppLayer, ToolsContactsAndSaveRestore) {
         if (c.kind == ENT_CONTACT_TOOL) sum += c.force_N[1];
     EXPECT_NEAR(sum, -feedback.force_N[1], 1e-12);
     EXPECT_EQ(scene.contact_summary().tool_contacts, feedback.contacts);
+    // A push of well under max_force (5 N) is not saturated (issue 27: ent_tool_feedback.saturated).
+    EXPECT_LT(std::sqrt(feedback.force_N[0] * feedback.force_N[0] + feedback.force_N[1] * feedback.force_N[1] +
+                        feedback.force_N[2] * feedback.force_N[2]),
+              1.0);
+    EXPECT_EQ(feedback.saturated, 0);
 
     const std::vector<double> at_400 = scene.control_points();
     scene.restore_state(saved);
@@ -142,6 +179,29 @@ TEST(CppLayer, ToolsContactsAndSaveRestore) {
         EXPECT_NE(std::string(error.what()).find("checksum"), std::string::npos) << error.what();
     }
     EXPECT_EQ(scene.control_points(), at_400);
+}
+
+TEST(CppLayer, TheFeedbackSaysWhenMaxForceBoundedTheForce) {
+    enteron::Scene scene = small_scene();
+    enteron::ObstacleDesc floor;
+    floor.kind = ENT_OBSTACLE_PLANE;
+    scene.add_obstacle(floor);
+    enteron::ToolDesc desc;
+    desc.max_force_N = 0.05;  // less than pushing the bowel aside takes
+    desc.position_m[1] = 0.05;
+    desc.position_m[2] = 0.0125;
+    enteron::Tool tool = scene.add_tool(desc);
+    const double identity[4] = {1, 0, 0, 0};
+    for (int i = 1; i <= 400; ++i) {
+        const double tip[3] = {0.0, 0.05 - 1e-4 * i, 0.0125};
+        tool.set_pose(tip, identity);
+        scene.step(1e-3);
+    }
+    const ent_tool_feedback feedback = tool.feedback();
+    EXPECT_EQ(feedback.saturated, 1);
+    EXPECT_NEAR(std::sqrt(feedback.force_N[0] * feedback.force_N[0] + feedback.force_N[1] * feedback.force_N[1] +
+                          feedback.force_N[2] * feedback.force_N[2]),
+                0.05, 1e-9);
 }
 
 TEST(CppLayer, SkinsGiveSpansOverTheMesh) {

@@ -1,18 +1,31 @@
 #!/usr/bin/python3
 """Checks that the documentation says what the code does.
 
-    check_docs.py --root SOURCE_DIR CHECK [--library LIBENTERON]
+    check_docs.py --root SOURCE_DIR CHECK [--library LIBENTERON] [--run "NAME=COMMAND"]
+                  [--not-run NAME REASON]
 
 CHECK is one of:
   header     every function a public header exports (declared with an ENT_*API macro in
              include/enteron/*.h) has a doc comment (/** ... */) right above it;
   json_keys  every key the JSON loader accepts, at every level, is in its section of
              docs/scene-json.md, and so is every value of a key that takes a choice of
-             names (needs --library, the built libenteron);
+             names; and every message `PATH must be one of "a", "b", got "x"` the page
+             quotes is the loader's own for that value (needs --library, the built
+             libenteron);
   links      every relative link and image of README.md and docs/*.md leads to a file or
              folder that exists, and its #anchor to a heading (or an <a name>/id) there;
+  doc_paths  every docs/*.md that a header, a source file or a document names (in a
+             comment, in text: not only links) exists;
   readme_example
-             the C program of README.md is examples/minimal.c, character for character.
+             the C program of README.md is examples/minimal.c, character for character;
+  example_outputs
+             every output examples/README.md quotes (its table's last column) is printed by
+             a run of that example: each example of the table is either run (--run
+             "NAME=COMMAND", NAME as in the table's first column, e.g. python/skin.py, the
+             command line split as a shell would) or named with the reason it is not
+             (--not-run NAME REASON). A quoted line must be a line
+             the run printed, character for character; where the row says its figures
+             "depend on the machine", any number stands for any number.
 
 The JSON keys come from the loader itself, not from reading its source: a document with an
 unknown key is refused with the keys allowed at that place ("unknown key "x" in intestine
@@ -259,8 +272,44 @@ def check_json_keys(root, library):
                 if f"\"{choice}\"" not in section:
                     problems.add(f"docs/scene-json.md, section {heading}: the loader accepts "
                                  f"{key} \"{choice}\", which is not documented there")
+    quoted = check_quoted_choices(loader, read(doc_path), problems)
     return problems.report(f"{keys} JSON keys and {values} named values in {len(found)} places, "
-                           "each in its section of docs/scene-json.md")
+                           f"each in its section of docs/scene-json.md; {quoted} quoted choice messages, "
+                           "each the loader's")
+
+
+QUOTED_CHOICE = re.compile(r"`(([\w.\[\]]+) must be one of (?:\"[^\"]*\"(?:, )?)+, got \"([^\"]*)\")`")
+
+
+def document_at(path, value):
+    """The document that puts value at a path like environment[0].type: {"environment":
+    [{"type": value}]}; None for a path this cannot build (an index other than 0)."""
+    tokens = re.findall(r"([^.\[\]]+)((?:\[\d+\])*)", path)
+    document = value
+    for key, indices in reversed(tokens):
+        for index in reversed(re.findall(r"\[(\d+)\]", indices)):
+            if index != "0":
+                return None
+            document = [document]
+        document = {key: document}
+    return document
+
+
+def check_quoted_choices(loader, text, problems):
+    """Every `PATH must be one of "a", ..., got "x"` the page quotes is what the loader says
+    for x at PATH: a list of choices that lost a newer one (an obstacle type) is caught."""
+    count = 0
+    for number, line, _ in markdown_lines(text):
+        for match in QUOTED_CHOICE.finditer(line):
+            message, path, value = match.groups()
+            document = document_at(path, value)
+            if document is None:
+                continue
+            count += 1
+            said = loader.error(document) or "(no error)"
+            if message not in said:
+                problems.add(f"docs/scene-json.md:{number}: quotes `{message}`, the loader says `{said}`")
+    return count
 
 
 # ---------------------------------------------------------------- links
@@ -336,11 +385,131 @@ def check_readme_example(root):
     return problems.report("the C program of README.md is examples/minimal.c")
 
 
+# ---------------------------------------------------------------- paths of docs
+
+DOC_PATH = re.compile(r"\bdocs/[A-Za-z0-9_.-]+\.md\b")
+# Where docs are named: headers, sources, the binding, examples, scripts and the documents
+# (the CHANGELOG is history: it may name what was renamed since).
+DOC_PATH_PLACES = ("include", "lib", "bindings", "examples", "apps", "bench", "scripts", "tests", "docs")
+DOC_PATH_SUFFIXES = (".h", ".hpp", ".c", ".cpp", ".py", ".md", ".lcm", ".cmake", ".txt", ".sh", ".json")
+
+
+def named_doc_paths(root):
+    """(file, line number, docs/*.md) for every mention outside build trees."""
+    files = [os.path.join(root, "README.md")]
+    for place in DOC_PATH_PLACES:
+        for directory, subdirectories, names in os.walk(os.path.join(root, place)):
+            subdirectories[:] = [d for d in subdirectories if not d.startswith((".", "build"))]
+            files += [os.path.join(directory, n) for n in sorted(names) if n.endswith(DOC_PATH_SUFFIXES)]
+    for path in files:
+        try:
+            text = read(path)
+        except (UnicodeDecodeError, OSError):
+            continue
+        for number, line in enumerate(text.splitlines(), 1):
+            for match in DOC_PATH.finditer(line):
+                yield os.path.relpath(path, root), number, match.group(0)
+
+
+def check_doc_paths(root):
+    problems = Problems()
+    count = 0
+    for where, number, path in named_doc_paths(root):
+        count += 1
+        if not os.path.isfile(os.path.join(root, path)):
+            problems.add(f"{where}:{number}: names {path}, which does not exist")
+    return problems.report(f"{count} mentions of docs/*.md, each an existing file")
+
+
+# ---------------------------------------------------------------- example outputs
+
+NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?")
+
+
+def table_cells(line):
+    """The cells of a markdown table row; an escaped \\| stays inside its cell."""
+    cells = re.split(r"(?<!\\)\|", line.strip())
+    return [cell.strip().replace("\\|", "|") for cell in cells[1:-1]]
+
+
+def quoted_outputs(readme):
+    """(line number, example name, [quoted outputs], machine dependent) per table row."""
+    for number, line, fenced in markdown_lines(readme):
+        if fenced or not line.startswith("| `"):
+            continue
+        cells = table_cells(line)
+        if len(cells) < 3:
+            continue
+        name = re.match(r"`([^`]+)`", cells[0]).group(1)
+        quotes = re.findall(r"`([^`]+)`", cells[-1])
+        yield number, name, quotes, "depend on the machine" in cells[-1]
+
+
+def output_pattern(quote, machine_dependent):
+    """A regular expression a printed line must match in full: the quote itself, or with
+    any number for its numbers (and any run of spaces for its own, which numbers of
+    another width move) where the figures depend on the machine; "..." stands for anything."""
+    parts = []
+    for piece in re.split(r"(\.\.\.)", quote):
+        if piece == "...":
+            parts.append(".*")
+            continue
+        if not machine_dependent:
+            parts.append(re.escape(piece))
+            continue
+        at = 0
+        for match in NUMBER.finditer(piece):
+            parts.append(re.sub(r"\\ (?:\\ )+", r"\\s+", re.escape(piece[at:match.start()])))
+            parts.append(r"[-+]?\d+(?:\.\d+)?")
+            at = match.end()
+        parts.append(re.sub(r"\\ (?:\\ )+", r"\\s+", re.escape(piece[at:])))
+    return re.compile("".join(parts))
+
+
+def check_example_outputs(root, runs, not_run):
+    import subprocess
+    problems = Problems()
+    readme_path = os.path.join(root, "examples", "README.md")
+    checked = 0
+    rows = list(quoted_outputs(read(readme_path)))
+    for number, name, quotes, machine_dependent in rows:
+        if name in not_run:
+            continue
+        if name not in runs:
+            problems.add(f"examples/README.md:{number}: quotes what {name} prints, but no run of it is checked: "
+                         "give it --run (or --not-run with the reason) in tests/docs/docs.cmake")
+            continue
+        try:
+            result = subprocess.run(runs[name], capture_output=True, text=True, timeout=120)
+        except (OSError, subprocess.TimeoutExpired) as error:
+            problems.add(f"examples/README.md:{number}: cannot run {name} ({' '.join(runs[name])}): {error}")
+            continue
+        printed = (result.stdout + result.stderr).splitlines()
+        if result.returncode != 0:
+            problems.add(f"examples/README.md:{number}: {name} exited with status {result.returncode}")
+        for quote in quotes:
+            checked += 1
+            pattern = output_pattern(quote, machine_dependent)
+            if not any(pattern.fullmatch(line.rstrip()) for line in printed):
+                import difflib
+                closest = next(iter(difflib.get_close_matches(quote, printed, n=1, cutoff=0.0)), None)
+                problems.add(f"examples/README.md:{number}: {name} does not print {quote!r}"
+                             + (f" (it prints {closest!r})" if closest else ""))
+    for name in list(runs) + list(not_run):
+        if name not in {row[1] for row in rows}:
+            problems.add(f"tests/docs/docs.cmake names the example {name}, which examples/README.md's table lacks")
+    return problems.report(f"{checked} quoted outputs of {len(runs)} examples printed by their runs "
+                           f"({len(not_run)} examples not run here: {', '.join(sorted(not_run))})")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--root", required=True)
     parser.add_argument("--library")
-    parser.add_argument("check", choices=["header", "json_keys", "links", "readme_example"])
+    parser.add_argument("--run", action="append", default=[], metavar="NAME=COMMAND")
+    parser.add_argument("--not-run", nargs=2, action="append", default=[], metavar=("NAME", "REASON"))
+    parser.add_argument("check", choices=["header", "json_keys", "links", "doc_paths", "readme_example",
+                                          "example_outputs"])
     args = parser.parse_args()
     root = os.path.abspath(args.root)
     if args.check == "header":
@@ -349,6 +518,12 @@ def main():
         return check_json_keys(root, args.library)
     if args.check == "links":
         return check_links(root)
+    if args.check == "doc_paths":
+        return check_doc_paths(root)
+    if args.check == "example_outputs":
+        import shlex
+        runs = {name: shlex.split(command) for name, _, command in (run.partition("=") for run in args.run)}
+        return check_example_outputs(root, runs, dict(args.not_run))
     return check_readme_example(root)
 
 

@@ -4,7 +4,11 @@
 #                        built library, so not under sanitizers: their runtimes cannot be
 #                        loaded into a plain python3)
 #   docs.links           every relative link of README.md and docs/*.md resolves
+#   docs.doc_paths       every docs/*.md that a header, a source or a document names exists
 #   docs.readme_example  the C program of README.md is examples/minimal.c
+#   docs.example_outputs every output examples/README.md quotes is printed by a run of its
+#                        example (registered in examples/CMakeLists.txt, which knows the
+#                        examples and the Python binding's environment)
 # Python 3's standard library only.
 if(EXISTS /usr/bin/python3)
   set(_enteron_docs_python /usr/bin/python3)
@@ -16,10 +20,11 @@ if(NOT _enteron_docs_python)
   return()
 endif()
 set(_enteron_check_docs ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_docs.py --root ${PROJECT_SOURCE_DIR})
-foreach(check IN ITEMS header links readme_example)
+set(ENTERON_CHECK_DOCS ${_enteron_check_docs} CACHE INTERNAL "the documentation checks' command (examples/CMakeLists.txt)")
+foreach(check IN ITEMS header links doc_paths readme_example)
   add_test(NAME docs.${check} COMMAND ${_enteron_check_docs} ${check})
 endforeach()
-set(_enteron_docs_tests docs.header docs.links docs.readme_example)
+set(_enteron_docs_tests docs.header docs.links docs.doc_paths docs.readme_example)
 if(NOT ENTERON_SANITIZE)
   add_test(NAME docs.json_keys COMMAND ${_enteron_check_docs} --library $<TARGET_FILE:enteron> json_keys)
   list(APPEND _enteron_docs_tests docs.json_keys)

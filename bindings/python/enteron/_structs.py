@@ -204,6 +204,7 @@ class ent_tool_feedback(ctypes.Structure):
         ("proxy_position_m", _vec3),
         ("commanded_position_m", _vec3),
         ("orientation_wxyz", ctypes.c_double * 4),
+        ("saturated", ctypes.c_int32),
     ]
 
 

@@ -87,6 +87,7 @@ int main(void) {
     BEGIN(ent_tool_feedback)
     FIELD(struct_size) FIELD(grasping) FIELD(force_N) FIELD(torque_Nm) FIELD(contacts) FIELD(time_s) FIELD(steps)
     FIELD(stiffness_N_per_m) FIELD(proxy_position_m) FIELD(commanded_position_m) FIELD(orientation_wxyz)
+    FIELD(saturated)
     END()
     BEGIN(ent_tool_stats)
     FIELD(struct_size) FIELD(grasping) FIELD(contacts) FIELD(reserved) FIELD(energy_in_J) FIELD(energy_out_J)

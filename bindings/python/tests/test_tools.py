@@ -94,6 +94,15 @@ class Push(unittest.TestCase):
             self.assertTrue(all(bounded))
             self.assertGreater(largest, 0.99, "the bound is reached")
             self.assertTrue(np.isfinite(scene.control_points()).all())
+            # Held at the bound: the feedback says the force is max_force's, not the bowel's
+            # (issue 27, defect 6).
+            feedback = tool.feedback()
+            self.assertAlmostEqual(float(np.linalg.norm(feedback.force)), 1.0, places=9)
+            self.assertIs(feedback.saturated, True)
+            tool.set_pose(above)
+            for _ in range(50):
+                scene.step(H)
+            self.assertIs(tool.feedback().saturated, False)
 
 
 class Grasp(unittest.TestCase):

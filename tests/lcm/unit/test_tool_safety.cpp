@@ -30,8 +30,9 @@ protected:
         return c;
     }
 
-    static void render(ToolSafety& safety, double force_x, bool step_ok = true) {
-        safety.render(Eigen::Vector3d(force_x, 0, 0), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), step_ok);
+    static void render(ToolSafety& safety, double force_x, bool step_ok = true, bool saturated = false) {
+        safety.render(Eigen::Vector3d(force_x, 0, 0), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), saturated,
+                      step_ok);
     }
 
     SafetyLimits limits;
@@ -138,6 +139,25 @@ TEST_F(ToolSafetyTest, ClampsToMaxForceToTheDeviceLimitAndToTheChangePerTick) {
     unlimited_device.plan(&c, 0);
     for (int tick = 0; tick < 20; ++tick) render(unlimited_device, 8.0);
     EXPECT_NEAR(unlimited_device.device_force().x(), 5.0, 1e-12) << "at the tool's max_force";
+}
+
+// Issue 27, defect 6: libenteron bounds the force at max_force itself, so the force the
+// bridge gets is exactly 5 N, which its own test (> max_force) misses; the library's
+// saturated flag says it.
+TEST_F(ToolSafetyTest, AForceTheLibraryBoundedIsSaidLimited) {
+    limits.force_ramp_s = 0.0;
+    ToolSafety safety = make();
+    const AcceptedCommand c = command(1, 0);
+    safety.plan(&c, 0);
+    render(safety, 5.0);
+    EXPECT_EQ(safety.status() & kForceLimited, 0) << "at max_force but not bounded: the contacts asked 5 N";
+    safety.plan(nullptr, kMs);
+    render(safety, 5.0, true, true);
+    EXPECT_EQ(safety.status() & kForceLimited, kForceLimited);
+    EXPECT_NEAR(safety.device_force().x(), 5.0, 1e-12) << "rendered as given";
+    safety.plan(nullptr, 2 * kMs);
+    render(safety, 5.0, false, true);
+    EXPECT_EQ(safety.status() & kForceLimited, 0) << "a failed step renders nothing: nothing is limited";
 }
 
 TEST_F(ToolSafetyTest, StopsAreImmediateWhateverTheChangeLimit) {
