@@ -27,7 +27,6 @@ using enteron::ErrorCode;
 using enteron::Vec3;
 using enteron::capi::SceneHandle;
 using enteron::capi::guarded;
-using enteron::capi::live_handle;
 using enteron::capi::require;
 using enteron::scene::Checked;
 
@@ -189,7 +188,8 @@ ENT_API ent_status ent_exposure_desc_init(ent_exposure_desc* desc, uint32_t stru
 ENT_API ent_status ent_exposure_create(const ent_scene* scene, const ent_exposure_desc* desc,
                                        ent_exposure** out_exposure) {
     return guarded([&] {
-        const SceneHandle& scene_handle = live_handle(scene);
+        const enteron::capi::SceneCall call(scene);
+        const SceneHandle& scene_handle = call.handle();
         require(desc, "desc");
         require(out_exposure, "out_exposure");
         enteron::capi::check_struct_size(desc->struct_size, {sizeof(ent_exposure_desc)}, "ent_exposure_desc");
@@ -231,7 +231,8 @@ ENT_API void ent_exposure_destroy(ent_exposure* exposure) {
 ENT_API ent_status ent_scene_exposure(const ent_scene* scene, ent_exposure* exposure, const double viewpoint_m[3],
                                       ent_exposure_result* out) {
     return guarded([&] {
-        const SceneHandle& scene_handle = live_handle(scene);
+        const enteron::capi::SceneCall call(scene);
+        const SceneHandle& scene_handle = call.handle();
         ExposureHandle& h = handle_of(exposure);
         require(viewpoint_m, "viewpoint_m");
         require(out, "out");

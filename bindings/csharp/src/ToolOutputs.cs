@@ -33,11 +33,19 @@ namespace Enteron
         public Vec3 commanded_position_m;
         /// <summary>the commanded orientation for that step</summary>
         public Quat orientation_wxyz;
+        /// <summary>1 if max_force_N bounded the tool's force in that step, else 0</summary>
+        public int saturated;
 
         /// <summary>grasping != 0</summary>
         public bool IsGrasping
         {
             get { return grasping != 0; }
+        }
+
+        /// <summary>saturated != 0: the force is the tool's max_force_N, not what the contacts asked for</summary>
+        public bool IsSaturated
+        {
+            get { return saturated != 0; }
         }
     }
 

@@ -15,6 +15,7 @@ import threading
 
 import numpy as np
 
+from . import _fields
 from . import _structs as s
 from ._errors import check
 from ._handle import OwnedHandle
@@ -47,14 +48,14 @@ class Exposure(OwnedHandle):
              obstacle=enteron.NO_OBSTACLE, axis_chords_per_segment=4)
     points: (N, 3) m; triangles: (T, 3) indices into points, or None (the points are the
     target); weights: one per point (or per triangle: it multiplies the area), or None.
-    Failures raise enteron.Error. One thread at a time per Exposure (the library answers
-    ERROR_BUSY to a second); any thread, also while the scene steps.
+    Failures raise enteron.Error. Any thread, also while the scene steps; measures of one
+    Exposure from several threads take turns (the C library would refuse the second as
+    busy); close() from any thread: a measure running elsewhere finishes first.
     """
 
     def __init__(self, scene, points, triangles=None, weights=None, samples_per_edge=4, obstacle=-1,
                  axis_chords_per_segment=4):
         self._handle = None
-        self._lock = threading.Lock()  # measure and close never overlap
         self._points = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3)
         self._triangles = None if triangles is None else np.ascontiguousarray(triangles, dtype=np.uint32).reshape(-1, 3)
         self._weights = None if weights is None else np.ascontiguousarray(weights, dtype=np.float64).reshape(-1)
@@ -71,28 +72,20 @@ class Exposure(OwnedHandle):
             desc.triangle_count = len(self._triangles)
         if self._weights is not None:
             desc.weights = self._weights.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
-        desc.samples_per_edge = samples_per_edge
-        desc.obstacle = obstacle
-        desc.axis_chords_per_segment = axis_chords_per_segment
+        _fields.set_field(desc, "samples_per_edge", samples_per_edge)
+        _fields.set_field(desc, "obstacle", obstacle)
+        _fields.set_field(desc, "axis_chords_per_segment", axis_chords_per_segment)
         handle = ctypes.c_void_p()
-        check(lib.ent_exposure_create(scene._live(), ctypes.byref(desc), ctypes.byref(handle)), "ent_exposure_create")
-        self._handle = handle
+        check(scene._call(lib.ent_exposure_create, ctypes.byref(desc), ctypes.byref(handle)), "ent_exposure_create")
+        self._serial = threading.Lock()  # measures from several threads take turns
+        self._own(handle, lib.ent_exposure_destroy)
         self._scene = scene
-
-    def close(self):
-        """Destroys the prepared target (ent_exposure_destroy). Idempotent."""
-        lock = getattr(self, "_lock", None)
-        if lock is None:
-            return
-        with lock:
-            handle, self._handle = getattr(self, "_handle", None), None
-            if handle:
-                lib.ent_exposure_destroy(handle)
 
     def measure(self, viewpoint, span_capacity=16):
         """ent_scene_exposure from `viewpoint` (3,) m, on the scene's last published state:
         an ExposureResult with up to span_capacity spans."""
         eye = np.ascontiguousarray(viewpoint, dtype=np.float64).reshape(3)
+        span_capacity = _fields.checked_integer(ctypes.c_uint32, span_capacity, "span_capacity")
         spans = np.zeros((span_capacity, 2))
         fractions = np.zeros(span_capacity)
         tubes = np.zeros(span_capacity, dtype=np.int32)
@@ -104,10 +97,9 @@ class Exposure(OwnedHandle):
         raw.span_hidden_fractions = fractions.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
         raw.span_intestines = tubes.ctypes.data_as(ctypes.POINTER(ctypes.c_int32))
         raw.element_visible = elements.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
-        with self._lock:
-            check(lib.ent_scene_exposure(self._scene._live(), self._live(),
-                                         eye.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), ctypes.byref(raw)),
-                  "ent_scene_exposure")
+        with self._serial, self._using() as handle:
+            check(self._scene._call(lib.ent_scene_exposure, handle, eye.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
+                                    ctypes.byref(raw)), "ent_scene_exposure")
         k = min(raw.span_count, span_capacity)
         for array in (spans, fractions, tubes, elements):
             array.flags.writeable = False
