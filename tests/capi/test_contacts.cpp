@@ -4,7 +4,7 @@
 // the penalty law's k d from every sphere; two folds overlapping at rest push apart with
 // k times their depth along their normal; a tool's contacts add up to minus its wrench, and
 // their torques about the tip to minus its torque; a stretched axis reports its stretch.
-#include "capi_test_support.h"
+#include "capi_scenes.h"
 
 #include <iostream>
 
@@ -12,7 +12,7 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = 0.0125;     // the default R, m
+constexpr double kRadius = kBowelRadius;  // the default R, m
 constexpr double kStiffness = 500.0;   // the default contact stiffness, N/m
 const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
@@ -190,18 +190,8 @@ struct Pushed {
 
 Pushed bowel_and_tool(int32_t mode = ENT_TOOL_MODE_PROXY) {
     Pushed p;
-    ent_scene_desc desc = default_desc();
-    desc.length_m = 0.4;
-    desc.control_points = 17;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.2;
-    desc.shape_center_m[2] = kRadius;
-    p.scene = create(desc);
+    p.scene = bowel_on_plane(BowelOnPlane{});
     if (!p.scene) return p;
-    ent_obstacle_desc plane;
-    ent_obstacle_desc_default(&plane);
-    plane.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(p.scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
     ent_tool_desc tool;
     ent_tool_desc_default(&tool);
     tool.position_m[1] = 0.05;

@@ -5,6 +5,8 @@
 #                        loaded into a plain python3)
 #   docs.links           every relative link of README.md and docs/*.md resolves
 #   docs.readme_example  the C program of README.md is examples/minimal.c
+#   docs.unit_tests      every unit of lib/ has its tests/unit/<layer>/test_<unit>.cpp or a
+#                        row in tests/unit/README.md saying why (tests/docs/check_unit_tests.py)
 # Python 3's standard library only.
 if(EXISTS /usr/bin/python3)
   set(_enteron_docs_python /usr/bin/python3)
@@ -19,7 +21,9 @@ set(_enteron_check_docs ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_
 foreach(check IN ITEMS header links readme_example)
   add_test(NAME docs.${check} COMMAND ${_enteron_check_docs} ${check})
 endforeach()
-set(_enteron_docs_tests docs.header docs.links docs.readme_example)
+add_test(NAME docs.unit_tests COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_unit_tests.py
+         --root ${PROJECT_SOURCE_DIR})
+set(_enteron_docs_tests docs.header docs.links docs.readme_example docs.unit_tests)
 if(NOT ENTERON_SANITIZE)
   add_test(NAME docs.json_keys COMMAND ${_enteron_check_docs} --library $<TARGET_FILE:enteron> json_keys)
   list(APPEND _enteron_docs_tests docs.json_keys)
