@@ -16,6 +16,11 @@
 # `scripts/package` configures a tree for the prefix /usr and runs cpack; tests/packaging
 # unpacks the packages and builds a consumer against them. Every package carries
 # /usr/share/doc/<package>/copyright and changelog.Debian.gz, as Debian policy asks.
+# The maintainer is a placeholder (the .invalid domain never resolves) until the owners
+# name one: give ENTERON_PACKAGE_MAINTAINER in the build tree's cache (cmake
+# -DENTERON_PACKAGE_MAINTAINER="Name <address>" build/package, then scripts/package). It
+# fills the Maintainer field, the Debian changelog's signature and the copyright file's
+# Upstream-Contact.
 set(ENTERON_PACKAGE_MAINTAINER "Enteron developers <dev@enteron.invalid>"
     CACHE STRING "The Maintainer field of the Debian packages (name <address>)")
 set(ENTERON_PACKAGE_RELEASE "1" CACHE STRING "The Debian revision of the packages (version <project version>-<this>)")
@@ -25,6 +30,7 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME enteron)
 set(CPACK_PACKAGE_VENDOR "Enteron developers")
 set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
+set(CPACK_RESOURCE_FILE_LICENSE "${PROJECT_SOURCE_DIR}/LICENSE")
 # Each package has its own synopsis (the first line of its description). CPack's DEB
 # generator would put this summary above it, unless it is CPack's own default: keep that.
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_NAME} built using CMake")
@@ -58,6 +64,9 @@ set(_enteron_debian_dir "${PROJECT_BINARY_DIR}/debian")
 set(ENTERON_PACKAGE_VERSION "${PROJECT_VERSION}-${ENTERON_PACKAGE_RELEASE}")
 string(TIMESTAMP ENTERON_PACKAGE_DATE "%a, %d %b %Y %H:%M:%S +0000" UTC)  # honours SOURCE_DATE_EPOCH
 configure_file("${PROJECT_SOURCE_DIR}/cmake/debian/changelog.in" "${_enteron_debian_dir}/changelog" @ONLY)
+# The copyright file, machine-readable (DEP-5): the project's licence (ENTERON_LICENSE,
+# Apache-2.0) and what the packages carry of others' (docs/building.md, "Licences").
+configure_file("${PROJECT_SOURCE_DIR}/cmake/debian/copyright.in" "${_enteron_debian_dir}/copyright" @ONLY)
 find_program(ENTERON_GZIP gzip REQUIRED)
 execute_process(COMMAND "${ENTERON_GZIP}" -9nc "${_enteron_debian_dir}/changelog"
                 OUTPUT_FILE "${_enteron_debian_dir}/changelog.Debian.gz" COMMAND_ERROR_IS_FATAL ANY)
@@ -111,7 +120,7 @@ macro(enteron_debian_package)
     set(CPACK_DEBIAN_${_package_upper}_PACKAGE_CONTROL_STRICT_PERMISSION ON)
   endif()
   # Only in the package: a plain `cmake --install` does not put these into the prefix.
-  install(FILES "${PROJECT_SOURCE_DIR}/cmake/debian/copyright" "${_enteron_debian_dir}/changelog.Debian.gz"
+  install(FILES "${_enteron_debian_dir}/copyright" "${_enteron_debian_dir}/changelog.Debian.gz"
     DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/${_package_NAME}"
     COMPONENT ${_package_COMPONENT} EXCLUDE_FROM_ALL)
 endmacro()

@@ -238,35 +238,27 @@ public:
     // Whether `size` more bytes are there.
     bool has(std::size_t size) const { return size <= bytes_.size() - at_; }
 
-    // The next value of type `type` (has() checked by the caller).
-    double real(PlyType type) {
-        switch (type) {
-            case PlyType::int8: return take<int8_t>();
-            case PlyType::uint8: return take<uint8_t>();
-            case PlyType::int16: return take<int16_t>();
-            case PlyType::uint16: return take<uint16_t>();
-            case PlyType::int32: return take<int32_t>();
-            case PlyType::uint32: return take<uint32_t>();
-            case PlyType::float32: return take<float>();
-            case PlyType::float64: return take<double>();
-        }
-        return 0.0;
-    }
-    // The next value of an integer type.
-    int64_t whole(PlyType type) {
-        switch (type) {
-            case PlyType::int8: return take<int8_t>();
-            case PlyType::uint8: return take<uint8_t>();
-            case PlyType::int16: return take<int16_t>();
-            case PlyType::uint16: return take<uint16_t>();
-            case PlyType::int32: return take<int32_t>();
-            case PlyType::uint32: return take<uint32_t>();
-            default: return 0;  // the header allows no other type here
-        }
-    }
+    // The next value of type `type` as a double (has() checked by the caller), or, for the
+    // integer types the header allows where it asks for one (counts, indices), as an int64.
+    double real(PlyType type) { return next<double>(type); }
+    int64_t whole(PlyType type) { return next<int64_t>(type); }
     void skip(std::size_t size) { at_ += size; }
 
 private:
+    template <class Out>
+    Out next(PlyType type) {
+        switch (type) {
+            case PlyType::int8: return static_cast<Out>(take<int8_t>());
+            case PlyType::uint8: return static_cast<Out>(take<uint8_t>());
+            case PlyType::int16: return static_cast<Out>(take<int16_t>());
+            case PlyType::uint16: return static_cast<Out>(take<uint16_t>());
+            case PlyType::int32: return static_cast<Out>(take<int32_t>());
+            case PlyType::uint32: return static_cast<Out>(take<uint32_t>());
+            case PlyType::float32: return static_cast<Out>(take<float>());
+            case PlyType::float64: return static_cast<Out>(take<double>());
+        }
+        return Out{};
+    }
     template <class T>
     T take() {
         unsigned char raw[sizeof(T)];

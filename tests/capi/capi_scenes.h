@@ -11,13 +11,16 @@ namespace capi_test {
 constexpr double kBowelRadius = 0.0125;  // the default R, m
 
 // A straight bowel along x, centred on the origin, lying on the plane z = 0 (its axis R
-// above it): the default stiffnesses, damping, gravity and friction; settled for
-// `settle_s` seconds in steps of `dt_s` before it is handed over (0: not stepped).
+// above it, or `axis_height_m`): the default stiffnesses, damping, gravity and friction
+// unless `effects` names others; settled for `settle_s` seconds in steps of `dt_s` before
+// it is handed over (0: not stepped).
 struct BowelOnPlane {
     double length_m = 0.4;
     uint32_t control_points = 17;
     int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER;
     int32_t clamped_ends = ENT_PIN_NONE;
+    double axis_height_m = kBowelRadius;
+    uint32_t effects = 0;  // ENT_EFFECT_BIT(...) | ...; 0: the defaults
     double settle_s = 0.0;
     double dt_s = 1e-3;
 };
@@ -30,7 +33,8 @@ inline ScenePtr bowel_on_plane(const BowelOnPlane& bowel) {
     desc.control_points = bowel.control_points;
     desc.shape = ENT_SHAPE_LINE;
     desc.shape_center_m[0] = -0.5 * bowel.length_m;
-    desc.shape_center_m[2] = kBowelRadius;
+    desc.shape_center_m[2] = bowel.axis_height_m;
+    if (bowel.effects != 0) desc.effects = bowel.effects;
     ScenePtr scene = create(desc);
     if (!scene) return scene;
     ent_obstacle_desc plane;

@@ -52,20 +52,12 @@ ent_tool_contacts tool_contacts(const ent_scene* scene, int32_t tool, std::vecto
 // A straight bowel along x whose axis lies at height z = R - depth above the plane z = 0,
 // at rest, without gravity: every collision sphere reaches `depth` into the plane.
 ScenePtr bowel_pressed_into_plane(double depth) {
-    ent_scene_desc desc = default_desc();
-    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND);
-    desc.length_m = 0.3;
-    desc.control_points = 13;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.15;
-    desc.shape_center_m[2] = kRadius - depth;
-    ScenePtr scene = create(desc);
-    if (!scene) return scene;
-    ent_obstacle_desc plane;
-    ent_obstacle_desc_default(&plane);
-    plane.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
-    return scene;
+    BowelOnPlane bowel;
+    bowel.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND);
+    bowel.length_m = 0.3;
+    bowel.control_points = 13;
+    bowel.axis_height_m = kRadius - depth;
+    return bowel_on_plane(bowel);
 }
 
 // Two parallel legs `gap` apart (axis to axis, less than 2R: they overlap) joined by a

@@ -18,6 +18,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from check_docs import Problems  # noqa: E402  (the same report as the other docs checks)
+
 LAYERS = ["base", "numerics", "spline", "mechanics", "collision", "scene", "skinning", "capi"]
 
 
@@ -46,30 +49,24 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--root", required=True)
     root = parser.parse_args().root
-    problems = []
+    problems = Problems()
     rows = listed(root)
     all_units = units(root)
     tested = {u for u in all_units if os.path.exists(os.path.join(root, "tests", "unit", os.path.dirname(u),
                                                                   f"test_{os.path.basename(u)}.cpp"))}
     for unit in sorted(all_units - tested - set(rows)):
-        problems.append(f"lib/{unit} has no tests/unit/{os.path.dirname(unit)}/test_{os.path.basename(unit)}.cpp "
-                        "and no row in tests/unit/README.md saying why")
+        problems.add(f"lib/{unit} has no tests/unit/{os.path.dirname(unit)}/test_{os.path.basename(unit)}.cpp "
+                     "and no row in tests/unit/README.md saying why")
     for unit, reason in sorted(rows.items()):
         if unit not in all_units:
-            problems.append(f"tests/unit/README.md lists {unit}, which lib/ does not have")
+            problems.add(f"tests/unit/README.md lists {unit}, which lib/ does not have")
         elif unit in tested:
-            problems.append(f"tests/unit/README.md lists {unit} as untested, but it has its test file now: remove the row")
+            problems.add(f"tests/unit/README.md lists {unit} as untested, but it has its test file now: remove the row")
         for path in re.findall(r"`(tests/[^`]+)`", reason):
             if not os.path.exists(os.path.join(root, path)):
-                problems.append(f"tests/unit/README.md, row {unit}: {path} does not exist")
-    for line in problems:
-        print(f"check_unit_tests: {line}", file=sys.stderr)
-    if problems:
-        print(f"check_unit_tests: {len(problems)} problem(s)", file=sys.stderr)
-        return 1
-    print(f"check_unit_tests: {len(tested)} of {len(all_units)} units have their test file; "
-          f"the other {len(all_units) - len(tested)} say why in tests/unit/README.md")
-    return 0
+                problems.add(f"tests/unit/README.md, row {unit}: {path} does not exist")
+    return problems.report(f"{len(tested)} of {len(all_units)} units have their test file; "
+                          f"the other {len(all_units) - len(tested)} say why in tests/unit/README.md")
 
 
 if __name__ == "__main__":

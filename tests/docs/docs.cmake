@@ -7,6 +7,9 @@
 #   docs.readme_example  the C program of README.md is examples/minimal.c
 #   docs.unit_tests      every unit of lib/ has its tests/unit/<layer>/test_<unit>.cpp or a
 #                        row in tests/unit/README.md saying why (tests/docs/check_unit_tests.py)
+#   docs.cpp_api         every exported C function has its counterpart in enteron.hpp, or a
+#                        reason in docs/cpp.md, and docs/cpp.md's table names it
+#                        (tests/docs/check_cpp_api.py)
 # Python 3's standard library only.
 if(EXISTS /usr/bin/python3)
   set(_enteron_docs_python /usr/bin/python3)
@@ -23,7 +26,9 @@ foreach(check IN ITEMS header links readme_example)
 endforeach()
 add_test(NAME docs.unit_tests COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_unit_tests.py
          --root ${PROJECT_SOURCE_DIR})
-set(_enteron_docs_tests docs.header docs.links docs.readme_example docs.unit_tests)
+add_test(NAME docs.cpp_api COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_cpp_api.py
+         --root ${PROJECT_SOURCE_DIR})
+set(_enteron_docs_tests docs.header docs.links docs.readme_example docs.unit_tests docs.cpp_api)
 if(NOT ENTERON_SANITIZE)
   add_test(NAME docs.json_keys COMMAND ${_enteron_check_docs} --library $<TARGET_FILE:enteron> json_keys)
   list(APPEND _enteron_docs_tests docs.json_keys)

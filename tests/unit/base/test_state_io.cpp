@@ -15,7 +15,10 @@
 #include <vector>
 
 #include "base/error.h"
+#include "base/saved_image.h"
 #include "base/state_io.h"
+#include "refusal.h"
+#include "saved_state_image.h"
 
 namespace enteron {
 namespace {
@@ -25,8 +28,7 @@ constexpr uint64_t kFingerprint = 0x0123456789abcdefull;
 // An image of two sections: "alpha" v2 (a count, three doubles, a flag, an index) and
 // "beta" v1 (uint32 values).
 std::vector<unsigned char> image(double middle = 2.5, uint32_t count = 3, uint8_t flag = 1, uint32_t index = 4) {
-    const auto write = [&](void* buffer, std::size_t capacity) {
-        StateWriter out(buffer, capacity, kFingerprint);
+    return state_test::saved_image([&](StateWriter& out) {
         out.begin_section("alpha", 2);
         out.u32(count);
         const double values[3] = {1.0, middle, -3.0};
@@ -39,12 +41,7 @@ std::vector<unsigned char> image(double middle = 2.5, uint32_t count = 3, uint8_
         out.u32s(words, 2);
         out.u64(0xfeedull);
         out.end_section();
-        return out.finish();
-    };
-    const std::size_t size = write(nullptr, 0);  // measures
-    std::vector<unsigned char> bytes(size);
-    EXPECT_EQ(write(bytes.data(), bytes.size()), size);
-    return bytes;
+    }, kFingerprint);
 }
 
 // Reads image() back; throws what the reader throws.
@@ -72,17 +69,7 @@ void read(const std::vector<unsigned char>& bytes, uint32_t newest_alpha = 2) {
     }
 }
 
-// The message of the Error that `f` throws, with its code checked.
-template <class F>
-std::string refusal(F f, ErrorCode code = ErrorCode::invalid_argument) {
-    try {
-        f();
-    } catch (const Error& error) {
-        EXPECT_EQ(error.code(), code) << error.what();
-        return error.what();
-    }
-    return "(no refusal)";
-}
+using unit_test::refusal;
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -91,10 +78,7 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 template <class T>
 std::vector<unsigned char> patched(std::vector<unsigned char> bytes, std::size_t offset, T value, bool reseal = true) {
     std::memcpy(bytes.data() + offset, &value, sizeof value);
-    if (reseal) {
-        const uint64_t checksum = state_checksum(bytes.data() + StateWriter::kHeaderSize, bytes.size() - StateWriter::kHeaderSize);
-        std::memcpy(bytes.data() + 32, &checksum, sizeof checksum);
-    }
+    if (reseal) saved_state_image::seal_checksum(bytes.data(), bytes.size());  // from docs/scoring-and-state.md
     return bytes;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "base/error.h"
+#include "base/saved_image.h"
 #include "collision/contact_log.h"
 
 namespace enteron::collision {
@@ -38,17 +39,11 @@ TEST(ContactLog, RecordsUpToItsCapacityAndCountsTheRest) {
 }
 
 std::vector<unsigned char> saved(const ContactLog& log) {
-    StateWriter measure(nullptr, 0, 0);
-    measure.begin_section("log", 1);
-    log.save_state(measure);
-    measure.end_section();
-    std::vector<unsigned char> bytes(measure.finish());
-    StateWriter out(bytes.data(), bytes.size(), 0);
-    out.begin_section("log", 1);
-    log.save_state(out);
-    out.end_section();
-    out.finish();
-    return bytes;
+    return state_test::saved_image([&](StateWriter& out) {
+        out.begin_section("log", 1);
+        log.save_state(out);
+        out.end_section();
+    });
 }
 
 // Restores `bytes` into `log` (both passes); the refusal's message, or "".

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "base/error.h"
+#include "base/saved_image.h"
 #include "base/state_io.h"
 #include "mechanics/clamped_ends.h"
+#include "saved_state_image.h"
 
 namespace enteron::mechanics {
 namespace {
@@ -219,17 +221,11 @@ TEST(ClampedEnds, TheAttachmentsSurviveASavedStateAndADamagedOneIsRefused) {
     ClampedEnds saved(true, true, q.data(), kPoints);
     saved.attach(false, frames, frame, 0.0);
     const auto image = [](const ClampedEnds& clamps) {
-        StateWriter measure(nullptr, 0, 1);
-        measure.begin_section("clamps", 1);
-        clamps.save_attachments(measure);
-        measure.end_section();
-        std::vector<unsigned char> bytes(measure.finish());
-        StateWriter out(bytes.data(), bytes.size(), 1);
-        out.begin_section("clamps", 1);
-        clamps.save_attachments(out);
-        out.end_section();
-        out.finish();
-        return bytes;
+        return state_test::saved_image([&](StateWriter& out) {
+            out.begin_section("clamps", 1);
+            clamps.save_attachments(out);
+            out.end_section();
+        });
     };
     const auto restore = [&](ClampedEnds& clamps, const std::vector<unsigned char>& bytes) {
         StateReader in(bytes.data(), bytes.size());
@@ -256,8 +252,7 @@ TEST(ClampedEnds, TheAttachmentsSurviveASavedStateAndADamagedOneIsRefused) {
     std::vector<unsigned char> damaged = bytes;
     const double bent = 0.5;
     std::memcpy(damaged.data() + StateWriter::kHeaderSize + StateWriter::kSectionHeaderSize + 8, &bent, sizeof bent);
-    const uint64_t checksum = state_checksum(damaged.data() + StateWriter::kHeaderSize, damaged.size() - StateWriter::kHeaderSize);
-    std::memcpy(damaged.data() + 32, &checksum, sizeof checksum);
+    saved_state_image::seal_checksum(damaged.data(), damaged.size());
     ClampedEnds untouched(true, true, q.data(), kPoints);
     const Vec3 direction = untouched.direction(true);
     try {

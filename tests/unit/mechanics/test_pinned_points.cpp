@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "base/error.h"
+#include "base/saved_image.h"
 #include "base/state_io.h"
 #include "mechanics/bordered_system.h"
 #include "mechanics/pinned_points.h"
@@ -127,14 +128,8 @@ TEST(PinnedPoints, ASavedStateRestoresThePinsAndADamagedOneIsRefused) {
     State state = moving_state();
     PinnedPoints saved({0, 6}, frames, 1.0, kMemory);
     saved.pin(4, frame, state);
-    const auto image = [&](const PinnedPoints& pins) {
-        StateWriter measure(nullptr, 0, 1);
-        pins.save_state(measure);
-        std::vector<unsigned char> bytes(measure.finish());
-        StateWriter out(bytes.data(), bytes.size(), 1);
-        pins.save_state(out);
-        out.finish();
-        return bytes;
+    const auto image = [](const PinnedPoints& pins) {
+        return state_test::saved_image([&](StateWriter& out) { pins.save_state(out); });
     };
     const std::vector<unsigned char> bytes = image(saved);
     PinnedPoints restored({1}, frames, 1.0, kMemory);

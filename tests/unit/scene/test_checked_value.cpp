@@ -9,25 +9,21 @@
 #include <limits>
 #include <string>
 
+#include "refusal.h"
 #include "scene/checked_value.h"
 
 namespace enteron::scene {
 namespace {
 
+// The message of the refusal, the code invalid_scene unless told.
 template <class F>
 std::string message_of(F check, ErrorCode code = ErrorCode::invalid_scene) {
-    try {
-        check();
-    } catch (const Error& error) {
-        EXPECT_EQ(error.code(), code);
-        return error.what();
-    }
-    return "(passed)";
+    return unit_test::refusal(check, code);
 }
 
 TEST(CheckedValue, ChecksThatHoldChainAndOnesThatFailSayWhy) {
     EXPECT_EQ(message_of([] { Checked<double>(0.0125, "intestine.radius", ErrorCode::invalid_scene).above(0.0).below(6.0); }),
-              "(passed)");
+              "(no refusal)");
     EXPECT_EQ(message_of([] { Checked<double>(-1.0, "intestine.radius", ErrorCode::invalid_scene).above(0.0); }),
               "intestine.radius must be > 0, got -1");
     EXPECT_EQ(message_of([] {
@@ -38,7 +34,7 @@ TEST(CheckedValue, ChecksThatHoldChainAndOnesThatFailSayWhy) {
               "control_points must be >= 4, got 3");
     EXPECT_EQ(message_of([] { Checked<int>(5, "segments", ErrorCode::invalid_scene).at_most(4); }),
               "segments must be <= 4, got 5");
-    EXPECT_EQ(message_of([] { Checked<double>(0.1, "x", ErrorCode::invalid_scene).at_least(0.1).at_most(0.1); }), "(passed)");
+    EXPECT_EQ(message_of([] { Checked<double>(0.1, "x", ErrorCode::invalid_scene).at_least(0.1).at_most(0.1); }), "(no refusal)");
 }
 
 TEST(CheckedValue, ANonFiniteNumberFailsAtOnce) {

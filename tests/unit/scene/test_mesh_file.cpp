@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "base/error.h"
+#include "refusal.h"
 #include "scene/mesh_file.h"
 
 namespace enteron::scene {
@@ -34,16 +36,11 @@ std::string write_file(const std::string& name, const std::string& bytes) {
 }
 
 // The message read_mesh_file gives for the file `name` holding `bytes`.
-std::string refusal(const std::string& name, const std::string& bytes, std::string* path_out = nullptr) {
+std::string refusal(const std::string& name, const std::string& bytes, std::string* path_out) {
     const std::string path = write_file(name, bytes);
-    if (path_out != nullptr) *path_out = path;
-    try {
-        read_mesh_file(path, 1.0, "environment[3].file", ErrorCode::invalid_scene);
-    } catch (const Error& error) {
-        EXPECT_EQ(error.code(), ErrorCode::invalid_scene);
-        return error.what();
-    }
-    return "(read without a refusal)";
+    *path_out = path;
+    return unit_test::refusal([&] { read_mesh_file(path, 1.0, "environment[3].file", ErrorCode::invalid_scene); },
+                              ErrorCode::invalid_scene);
 }
 
 const std::string kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
@@ -196,21 +193,12 @@ TEST(MeshFile, EveryBrokenFileIsRefusedNamingItsLineAndWhatIsWrong) {
 
 TEST(MeshFile, AMissingFileAndADirectoryAreNamed) {
     const std::string missing = ::testing::TempDir() + "enteron_mesh_file_no_such.obj";
-    try {
-        read_mesh_file(missing, 1.0, "liver", ErrorCode::invalid_argument);
-        ADD_FAILURE() << "read a missing file";
-    } catch (const Error& error) {
-        EXPECT_EQ(error.code(), ErrorCode::invalid_argument);
-        EXPECT_EQ(std::string(error.what()), "liver \"" + missing + "\": cannot be opened (no such file, or not readable)");
-    }
+    EXPECT_EQ(unit_test::refusal([&] { read_mesh_file(missing, 1.0, "liver", ErrorCode::invalid_argument); }),
+              "liver \"" + missing + "\": cannot be opened (no such file, or not readable)");
     const std::string directory = ::testing::TempDir() + "enteron_mesh_file_dir.obj";
     ASSERT_EQ(std::system(("mkdir -p " + directory).c_str()), 0);
-    try {
-        read_mesh_file(directory, 1.0, "liver", ErrorCode::invalid_argument);
-        ADD_FAILURE() << "read a directory";
-    } catch (const Error& error) {
-        EXPECT_EQ(std::string(error.what()), "liver \"" + directory + "\": is a directory, not a mesh file");
-    }
+    EXPECT_EQ(unit_test::refusal([&] { read_mesh_file(directory, 1.0, "liver", ErrorCode::invalid_argument); }),
+              "liver \"" + directory + "\": is a directory, not a mesh file");
 }
 
 TEST(MeshFile, TheExtensionPicksTheReaderWhateverItsCaseAndTheScaleApplies) {

@@ -9,21 +9,13 @@
 #include <string>
 
 #include "base/error.h"
+#include "refusal.h"
 #include "scene/mesh_soup.h"
 
 namespace enteron::scene {
 namespace {
 
-template <class F>
-std::string refusal(F f) {
-    try {
-        f();
-    } catch (const Error& error) {
-        EXPECT_EQ(error.code(), ErrorCode::invalid_argument);
-        return error.what();
-    }
-    return "(no refusal)";
-}
+using unit_test::refusal;
 
 TEST(MeshSoup, PolygonsAreFannedAndTheScaleApplied) {
     MeshSoup soup;

@@ -10,20 +10,13 @@
 #include <string>
 
 #include "base/error.h"
+#include "refusal.h"
 #include "scene/mesh_text.h"
 
 namespace enteron::scene {
 namespace {
 
-template <class F>
-std::string refusal(F f) {
-    try {
-        f();
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "(no refusal)";
-}
+using unit_test::refusal;
 
 TEST(MeshText, LinesAndWordsAndComments) {
     MeshText in("v 1 2\r\n\n\tf  1\t2 # three\nlast", 5, '#');
