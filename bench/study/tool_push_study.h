@@ -8,4 +8,8 @@ namespace study {
 // spacing and the contact stiffness.
 void run_tool_push_study(const Options& options);
 
+// --run NAME (study_runs.h): computes that tool run and prints its record; false if NAME
+// is not a tool run.
+bool print_tool_run(const Options& options, const std::string& name);
+
 }  // namespace study
