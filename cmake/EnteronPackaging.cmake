@@ -30,7 +30,6 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME enteron)
 set(CPACK_PACKAGE_VENDOR "Enteron developers")
 set(CPACK_PACKAGE_VERSION "${PROJECT_VERSION}")
-set(CPACK_RESOURCE_FILE_LICENSE "${PROJECT_SOURCE_DIR}/LICENSE")
 # Each package has its own synopsis (the first line of its description). CPack's DEB
 # generator would put this summary above it, unless it is CPack's own default: keep that.
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_NAME} built using CMake")

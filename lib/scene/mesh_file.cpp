@@ -50,10 +50,16 @@ collision::TriangleMesh read_mesh_file(const std::string& path, double scale, co
     if (!mesh_format_of(path, format))
         fail("unknown mesh format \"." + extension_of(path) + "\" (expected .obj or .ply; .off and .stl also work)");
     std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) fail("is a directory, not a mesh file");
+    const std::filesystem::file_status status = std::filesystem::status(path, ignored);
+    if (std::filesystem::is_directory(status)) fail("is a directory, not a mesh file");
+    // A pipe or a device would block or never end: only files are read.
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        fail("is not a regular file (a pipe or a device?)");
     std::ifstream file(path, std::ios::binary | std::ios::ate);
     if (!file.good()) fail("cannot be opened (no such file, or not readable)");
-    std::string bytes(static_cast<std::size_t>(file.tellg()), '\0');
+    const std::streamoff size = file.tellg();
+    if (size < 0) fail("cannot be read (not a regular file)");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
     file.seekg(0);
     if (!file.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) fail("cannot be read");
     try {

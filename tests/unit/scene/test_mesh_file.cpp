@@ -191,7 +191,7 @@ TEST(MeshFile, EveryBrokenFileIsRefusedNamingItsLineAndWhatIsWrong) {
     }
 }
 
-TEST(MeshFile, AMissingFileAndADirectoryAreNamed) {
+TEST(MeshFile, AMissingFileADirectoryAndAPipeAreNamed) {
     const std::string missing = ::testing::TempDir() + "enteron_mesh_file_no_such.obj";
     EXPECT_EQ(unit_test::refusal([&] { read_mesh_file(missing, 1.0, "liver", ErrorCode::invalid_argument); }),
               "liver \"" + missing + "\": cannot be opened (no such file, or not readable)");
@@ -199,6 +199,13 @@ TEST(MeshFile, AMissingFileAndADirectoryAreNamed) {
     ASSERT_EQ(std::system(("mkdir -p " + directory).c_str()), 0);
     EXPECT_EQ(unit_test::refusal([&] { read_mesh_file(directory, 1.0, "liver", ErrorCode::invalid_argument); }),
               "liver \"" + directory + "\": is a directory, not a mesh file");
+    const std::string pipe = ::testing::TempDir() + "enteron_mesh_file_pipe.obj";
+    std::remove(pipe.c_str());
+    ASSERT_EQ(std::system(("mkfifo " + pipe).c_str()), 0);
+    EXPECT_EQ(unit_test::refusal([&] { read_mesh_file(pipe, 1.0, "liver", ErrorCode::invalid_argument); }),
+              "liver \"" + pipe + "\": is not a regular file (a pipe or a device?)")
+        << "refused, not waited on";
+    std::remove(pipe.c_str());
 }
 
 TEST(MeshFile, TheExtensionPicksTheReaderWhateverItsCaseAndTheScaleApplies) {
