@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The candidate libraries for organ meshes (issue 20, docs/anatomy.md "Library"), measured
 // against each other on the same closed ellipsoid organ (20 x 14 x 10 cm) of 10k, 100k and
 // 1M triangles, one thread each:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Debian packages with CPack (docs/building.md, "Debian packages"): one package per install
 # component, named after the SONAME where it holds a shared library (Debian policy 8.1).
 # Included last from the top-level CMakeLists.txt, once every install rule is known.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Enteron C++ layer: a header-only C++17 wrapper over the C ABI of enteron.h.
  *

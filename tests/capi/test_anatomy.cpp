@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Moving anatomy (issue 20): organ meshes against the analytic shapes they approximate,
 // meshes that are open, non-manifold or bad, obstacles that move and jump, pins and the
 // mesentery's root that follow an obstacle, and the run-time settings. Through the C API.

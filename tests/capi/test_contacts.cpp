@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The published contact list (ent_scene_contacts), the bowel's summary
 // (ent_scene_contact_summary) and a tool's touches (ent_tool_read_contacts), checked against
 // forces the tests work out themselves: a bowel pressed into a plane at a known depth gets

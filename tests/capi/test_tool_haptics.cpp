@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tool as a haptic device renders it (issue 18, docs/haptics.md): the wrench is minus
 // what the bowel received in the accepted step (no click at a reversal with friction), the
 // proxy keeps the tool out of the tube however fast the device moves and renders a force

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The haptic thread and the physics thread (issue 16, defect 4): a tool's commands (pose,
 // grasp, release) are posted from any thread without a lock and taken by the next step, the
 // last one posted winning; its output (wrench, grasp, contacts) is read from the published

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Surgical tools through the C API: a capsule driven by the caller pushes the bowel aside
 // with a force bounded by max_force_N, returns a passive force (push in and pull back does
 // no net work on the tool), grasps, releases and slips, sweeps a fast path without

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C++ layer (include/enteron/enteron.hpp), built twice: as C++17 without Eigen and as
 // C++20 with <Eigen/Core> included first (ENTERON_HPP_TEST_EIGEN), both with -Wall -Wextra
 // -Werror -pedantic. Each test checks the wrapper against the C call it wraps.
