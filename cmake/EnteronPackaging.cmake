@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Debian packages with CPack (docs/building.md, "Debian packages"): one package per install
 # component, named after the SONAME where it holds a shared library (Debian policy 8.1).
 # Included last from the top-level CMakeLists.txt, once every install rule is known.
@@ -20,6 +21,11 @@
 # unpacks the packages and builds a consumer against them, and installs the bindings'
 # packages into a scratch root to use them (check_bindings.sh). Every package carries
 # /usr/share/doc/<package>/copyright and changelog.Debian.gz, as Debian policy asks.
+# The maintainer is a placeholder (the .invalid domain never resolves) until the owners
+# name one: give ENTERON_PACKAGE_MAINTAINER in the build tree's cache (cmake
+# -DENTERON_PACKAGE_MAINTAINER="Name <address>" build/package, then scripts/package). It
+# fills the Maintainer field, the Debian changelog's signature and the copyright file's
+# Upstream-Contact.
 set(ENTERON_PACKAGE_MAINTAINER "Enteron developers <dev@enteron.invalid>"
     CACHE STRING "The Maintainer field of the Debian packages (name <address>)")
 set(ENTERON_PACKAGE_RELEASE "1" CACHE STRING "The Debian revision of the packages (version <project version>-<this>)")
@@ -62,6 +68,9 @@ set(_enteron_debian_dir "${PROJECT_BINARY_DIR}/debian")
 set(ENTERON_PACKAGE_VERSION "${PROJECT_VERSION}-${ENTERON_PACKAGE_RELEASE}")
 string(TIMESTAMP ENTERON_PACKAGE_DATE "%a, %d %b %Y %H:%M:%S +0000" UTC)  # honours SOURCE_DATE_EPOCH
 configure_file("${PROJECT_SOURCE_DIR}/cmake/debian/changelog.in" "${_enteron_debian_dir}/changelog" @ONLY)
+# The copyright file, machine-readable (DEP-5): the project's licence (ENTERON_LICENSE,
+# Apache-2.0) and what the packages carry of others' (docs/building.md, "Licences").
+configure_file("${PROJECT_SOURCE_DIR}/cmake/debian/copyright.in" "${_enteron_debian_dir}/copyright" @ONLY)
 find_program(ENTERON_GZIP gzip REQUIRED)
 execute_process(COMMAND "${ENTERON_GZIP}" -9nc "${_enteron_debian_dir}/changelog"
                 OUTPUT_FILE "${_enteron_debian_dir}/changelog.Debian.gz" COMMAND_ERROR_IS_FATAL ANY)
@@ -119,7 +128,7 @@ macro(enteron_debian_package)
     set(CPACK_DEBIAN_${_package_upper}_PACKAGE_CONTROL_STRICT_PERMISSION ON)
   endif()
   # Only in the package: a plain `cmake --install` does not put these into the prefix.
-  install(FILES "${PROJECT_SOURCE_DIR}/cmake/debian/copyright" "${_enteron_debian_dir}/changelog.Debian.gz"
+  install(FILES "${_enteron_debian_dir}/copyright" "${_enteron_debian_dir}/changelog.Debian.gz"
     DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/${_package_NAME}"
     COMPONENT ${_package_COMPONENT} EXCLUDE_FROM_ALL)
 endmacro()

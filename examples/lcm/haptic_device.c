@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The driver side of the LCM bridge: what a haptic-device vendor writes to drive a running
  * enteron-lcm-server. It speaks only LCM through the C types lcm-gen makes from

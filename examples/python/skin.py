@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Skins in Python: step a scene, update a convolution skin, read its mesh as numpy arrays
 copied from the library's buffers (they stay valid after the next update) and measure it
 against the ideal tube.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An orbit camera, z up (gravity is -z in the scenes): it looks at a target from a
 // distance, turned by yaw about z and tilted by pitch above the horizon. Orbit, pan and
 // zoom take mouse motion in pixels; ray() gives the line of sight through a pixel, which

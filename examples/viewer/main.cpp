@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // enteron-viewer: see the bowel move and push it with the mouse (docs/viewer.md).
 //
 //   enteron-viewer [SCENE.json] [options]      with no scene: the demo scene

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the viewer draws besides the bowel, read from the scene's JSON description: the
 // tube radius, the obstacles, the tools' capsules, the mesentery's root, the number of
 // collision spheres. The C API has no call that returns a scene's description, so the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL 3.30 core programs: lit surfaces (with the key light's shadow), flat lines, and
 // the shadow map's depth pass. Colours are linear; the fragment shaders
 // write sRGB.

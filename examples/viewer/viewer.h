@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer itself, apart from where its pixels go (a window, or offscreen for
 // --headless): the session it shows, the camera, the mouse-driven tools, what is drawn,
 // the plots and the panels. Everything here runs on the render thread; the physics runs

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's panels (Dear ImGui): on the left the simulation's controls, the tool and its
 // force plot, what is shown and the scene's text; on the right the statistics and the
 // skin; the help; the status line along the bottom.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Enteron: a real-time model of the human small intestine for surgery simulators.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Enteron C++ layer: a header-only C++17 wrapper over the C ABI of enteron.h.
  *
@@ -6,13 +7,17 @@
  * (the same shared library, the same compatibility rules). docs/cpp.md is its manual.
  *
  * - RAII handles: enteron::Scene, enteron::Skin and enteron::Exposure own their C object
- *   and destroy it; enteron::Tool names a tool of a scene. All four are move-only.
+ *   and destroy it; enteron::Tool names a tool of a scene. All four are move-only. Every
+ *   exported C function has its counterpart here (docs/cpp.md has the table; ctest
+ *   docs.cpp_api checks it): obstacles, pins, attachments, gravity, tools, contacts, skins,
+ *   exposure, save and restore.
  * - Errors: every failing C call throws enteron::Error, which carries the ent_status and
  *   the message of ent_last_error() (what failed and why). A step the guard cannot save
  *   throws Error with status() == ENT_ERROR_UNSTABLE, the scene unchanged.
- * - Descriptions: enteron::SceneDesc, ToolDesc, ObstacleDesc and SkinDesc are the C structs
- *   filled with the library's defaults on construction (struct_size set); change the fields
- *   you need. The defaults come from the library at run time, never from this header.
+ * - Descriptions: enteron::SceneDesc, ToolDesc, ObstacleDesc, SkinDesc and Callbacks are the
+ *   C structs filled with the library's defaults on construction (struct_size set); change
+ *   the fields you need. The defaults come from the library at run time, never from this
+ *   header.
  * - Spans: enteron::Span<T> views a contiguous array (the mesh's arrays; with C++20 it
  *   converts to std::span).
  * - Eigen: include <Eigen/Core> before this header and enteron::as_matrix views an x y z
@@ -29,6 +34,7 @@
 #include <enteron/enteron.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -174,12 +180,48 @@ T sized() noexcept {
     return value;
 }
 
+/** ent_callbacks with no hooks (silent, malloc/free); set the ones you need. The functions
+ *  and user_data must outlive the scene and its skins (enteron.h, ent_callbacks). */
+struct Callbacks : ent_callbacks {
+    Callbacks() noexcept : ent_callbacks() { ent_callbacks_default(this); }
+};
+
+/** The version of the library loaded (ent_version), packed like ENT_VERSION. */
+inline uint32_t version() noexcept { return ent_version(); }
+/** Whether the library loaded serves this header: the same major version. */
+inline bool compatible_version() noexcept { return (ent_version() >> 16) == ENT_VERSION_MAJOR; }
+/** The JSON-style name of an effect (ENT_EFFECT_*: "stretch", "gravity", ...); empty if unknown. */
+inline std::string_view effect_name(int32_t effect) noexcept {
+    const char* name = ent_effect_name(effect);
+    return name != nullptr ? std::string_view(name) : std::string_view();
+}
+
+/** Where a rigid frame rests: its origin (m) and orientation (w x y z, unit). */
+struct Pose {
+    std::array<double, 3> position_m{};
+    std::array<double, 4> orientation_wxyz{1.0, 0.0, 0.0, 0.0};
+};
+
+/** What the bowel does to a tool: force (N) and torque about its tip (N m). */
+struct Wrench {
+    std::array<double, 3> force_N{};
+    std::array<double, 3> torque_Nm{};
+};
+
+/** A mesh obstacle's triangles as the obstacle holds them (its frame, m). */
+struct ObstacleMesh {
+    std::vector<double> vertices_xyz_m;  /**< 3 per vertex. */
+    std::vector<uint32_t> triangles;     /**< 3 vertex indices per triangle. */
+    std::size_t vertex_count() const noexcept { return vertices_xyz_m.size() / 3; }
+    std::size_t triangle_count() const noexcept { return triangles.size() / 3; }
+};
+
 class Scene;
 
 /**
  * A tool of a scene (ent_tool_add). Move-only; it refers to its scene, which must outlive
- * it. Destroying the handle leaves the tool in the scene (ent_tool_remove(scene.get(),
- * tool.id()) removes it). Its commands and reads are safe from any thread (a haptic thread).
+ * it. Destroying the handle leaves the tool in the scene; remove() takes it out. Its
+ * commands and reads are safe from any thread (a haptic thread); remove() is a driving call.
  */
 class Tool {
 public:
@@ -212,6 +254,28 @@ public:
         detail::check(ent_tool_read_feedback(scene_, id_, &out));
         return out;
     }
+    /** The last published step's wrench (ent_tool_wrench): never above max_force_N. */
+    Wrench wrench() const {
+        Wrench out;
+        detail::check(ent_tool_wrench(scene_, id_, out.force_N.data(), out.torque_Nm.data()));
+        return out;
+    }
+    /** d(force_N)/d(tip position) at the last published step, row-major, N/m (ent_tool_stiffness). */
+    std::array<double, 9> stiffness() const {
+        std::array<double, 9> out{};
+        detail::check(ent_tool_stiffness(scene_, id_, out.data()));
+        return out;
+    }
+    /** Its passivity observer and counters since it was added (ent_tool_read_stats). */
+    ent_tool_stats stats() const {
+        ent_tool_stats out = sized<ent_tool_stats>();
+        detail::check(ent_tool_read_stats(scene_, id_, &out));
+        return out;
+    }
+    /** Takes the tool out of the scene from the next step on (ent_tool_remove; a driving
+     *  call); its id is not reused, and this handle's calls then throw ENT_ERROR_NOT_FOUND. */
+    void remove() { detail::check(ent_tool_remove(scene_, id_)); }
+
     /** What it touched and held in the last published step; the ranges of u it touched,
      *  [first, last] pairs, go into *ranges_u when given (resized to 2 per range). */
     ent_tool_contacts contacts(std::vector<double>* ranges_u = nullptr) const {
@@ -246,6 +310,19 @@ public:
     static Scene from_json(std::string_view json) {
         ent_scene* scene = nullptr;
         detail::check(ent_scene_create_json(json.data(), json.size(), &scene));
+        return Scene(scene);
+    }
+    /** ent_scene_create_json_with: with log and allocator hooks. */
+    static Scene from_json(std::string_view json, const ent_callbacks& callbacks) {
+        ent_scene* scene = nullptr;
+        detail::check(ent_scene_create_json_with(json.data(), json.size(), &callbacks, &scene));
+        return Scene(scene);
+    }
+    /** ent_scene_create_json_file: a scene file, its mesh files found beside it (slow: the
+     *  meshes' distance fields are built; not on a real-time thread). callbacks may be null. */
+    static Scene from_json_file(const std::string& path, const ent_callbacks* callbacks = nullptr) {
+        ent_scene* scene = nullptr;
+        detail::check(ent_scene_create_json_file(path.c_str(), callbacks, &scene));
         return Scene(scene);
     }
     /** Takes ownership of a scene made with the C API. */
@@ -308,6 +385,66 @@ public:
         detail::check(ent_scene_add_obstacle(scene_, &desc, &index));
         return index;
     }
+    /** Moves an obstacle: it reaches this pose at the end of the next step (ent_obstacle_set_pose;
+     *  the driving thread, between steps). */
+    void set_obstacle_pose(int32_t obstacle, const double position_m[3], const double orientation_wxyz[4]) {
+        detail::check(ent_obstacle_set_pose(scene_, obstacle, position_m, orientation_wxyz));
+    }
+    void set_obstacle_pose(int32_t obstacle, const Pose& pose) {
+        set_obstacle_pose(obstacle, pose.position_m.data(), pose.orientation_wxyz.data());
+    }
+    /** The velocity its contacts see in the next step (ent_obstacle_set_velocity): m/s, rad/s. */
+    void set_obstacle_velocity(int32_t obstacle, const double linear_m_per_s[3], const double angular_rad_per_s[3]) {
+        detail::check(ent_obstacle_set_velocity(scene_, obstacle, linear_m_per_s, angular_rad_per_s));
+    }
+    /** Its Coulomb friction from the next step on (ent_obstacle_set_friction; negative: the scene's). */
+    void set_obstacle_friction(int32_t obstacle, double friction) {
+        detail::check(ent_obstacle_set_friction(scene_, obstacle, friction));
+    }
+    /** Removes it from the next step on (ent_scene_remove_obstacle); the others keep their ids. */
+    void remove_obstacle(int32_t obstacle) { detail::check(ent_scene_remove_obstacle(scene_, obstacle)); }
+    /** Obstacles in the last published state, removed ones not counted. */
+    uint32_t obstacle_count() const {
+        uint32_t count = 0;
+        detail::check(ent_scene_obstacle_count(scene_, &count));
+        return count;
+    }
+    /** Where its frame rests in the last published state (ent_obstacle_pose; any thread). */
+    Pose obstacle_pose(int32_t obstacle) const {
+        Pose pose;
+        detail::check(ent_obstacle_pose(scene_, obstacle, pose.position_m.data(), pose.orientation_wxyz.data()));
+        return pose;
+    }
+    /** A mesh obstacle's vertices and triangles (ent_obstacle_mesh; the driving thread,
+     *  between steps: a removal frees the mesh). */
+    ObstacleMesh obstacle_mesh(int32_t obstacle) const {
+        uint32_t vertices = 0, triangles = 0;
+        detail::check(ent_obstacle_mesh(scene_, obstacle, 0, nullptr, &vertices, 0, nullptr, &triangles));
+        ObstacleMesh mesh;
+        mesh.vertices_xyz_m.resize(3 * std::size_t{vertices});
+        mesh.triangles.resize(3 * std::size_t{triangles});
+        detail::check(ent_obstacle_mesh(scene_, obstacle, vertices, mesh.vertices_xyz_m.data(), &vertices, triangles,
+                                        mesh.triangles.data(), &triangles));
+        return mesh;
+    }
+
+    /** Gravity from the next step on, m/s^2 (ent_scene_set_gravity; the driving thread). */
+    void set_gravity(const double gravity_m_per_s2[3]) { detail::check(ent_scene_set_gravity(scene_, gravity_m_per_s2)); }
+    /** Holds a control point where it is, in the world or on an obstacle's frame
+     *  (ent_scene_pin_point; the driving thread, between steps). */
+    void pin_point(uint32_t control_point, int32_t obstacle = ENT_NO_OBSTACLE) {
+        detail::check(ent_scene_pin_point(scene_, control_point, obstacle));
+    }
+    /** Lets a pinned control point go (ent_scene_unpin_point). */
+    void unpin_point(uint32_t control_point) { detail::check(ent_scene_unpin_point(scene_, control_point)); }
+    /** The mesentery's root follows an obstacle from where it is now (ENT_NO_OBSTACLE: the world). */
+    void attach_mesentery(int32_t obstacle) { detail::check(ent_scene_attach_mesentery(scene_, obstacle)); }
+    /** Clamped ends (ENT_PIN_FIRST, ENT_PIN_LAST or ENT_PIN_BOTH) follow an obstacle
+     *  (ent_scene_attach_clamped_end; ENT_NO_OBSTACLE: the world). */
+    void attach_clamped_end(int32_t ends, int32_t obstacle) {
+        detail::check(ent_scene_attach_clamped_end(scene_, ends, obstacle));
+    }
+
     /** Adds a tool (a driving call). */
     Tool add_tool(const ent_tool_desc& desc) {
         int32_t id = -1;
@@ -319,6 +456,13 @@ public:
         ent_tool_feedback probe = sized<ent_tool_feedback>();
         detail::check(ent_tool_read_feedback(scene_, id, &probe));  // ENT_ERROR_NOT_FOUND if none
         return Tool(scene_, id);
+    }
+
+    /** Tools added and not removed (ent_scene_tool_count); ids run up to those ever added. */
+    int32_t tool_count() const {
+        int32_t count = 0;
+        detail::check(ent_scene_tool_count(scene_, &count));
+        return count;
     }
 
     /** The contacts of the last published step, into `out` (its capacity is kept across calls). */

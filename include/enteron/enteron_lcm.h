@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Enteron LCM bridge: haptic-device drivers, viewers and loggers talk to a running scene
  * over LCM (Lightweight Communications and Marshalling, https://lcm-proj.github.io).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The library's geometry vocabulary: Eigen's fixed-size vectors for the
 // per-contact and per-node maths, and maps that view our own packed x y z arrays (the
 // state vectors, sphere centres) as 3-vectors without copying. One Vec3 for every layer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contact entry points of the C API: the published contact list, the bowel's summary
 // (largest force and stretch) and each tool's touches. Queries of the last published
 // snapshot, from any thread: they pin it only while they copy.

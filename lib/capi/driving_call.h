@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The guard of the driving calls (ent_scene_step, ent_scene_add_obstacle, ent_tool_add,
 // ent_scene_save_state, ent_scene_restore_state and the anatomy's changes between steps,
 // enteron.h lists them):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The environment entry points of the C API: rigid obstacles around the bowel, which the
 // caller may move, re-grip and remove between steps.
 #include <algorithm>

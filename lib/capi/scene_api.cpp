@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene entry points of the C API: create, destroy, step and the snapshot queries.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ent_scene_desc -> SceneConfig: the C description in C++ terms, effects taken from the
 // `effects` bitmask, then checked by the same validate() as JSON, with C field names.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What an ent_scene* points to, shared by the C API files that take a scene.
 #pragma once
 

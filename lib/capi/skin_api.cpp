@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The skin entry points of the C API: a skin wraps a lib/skinning skin, the published
 // snapshots of its scene (shared: a skin may outlive its scene) and the copy of the axis
 // it reads into.

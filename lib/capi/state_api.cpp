@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Save and restore through the C API (docs/scoring-and-state.md): driving calls, since they read
 // or replace the live state of the scene, not a snapshot.
 #include <string>

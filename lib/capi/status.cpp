@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Version, status strings, the per-thread last error, effect names.
 #include <cstring>
 

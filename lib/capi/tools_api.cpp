@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tool entry points of the C API: surgical instruments that push and grasp the bowel.
 // ent_tool_add is a driving call; the commands (pose, grasp, release) go through each
 // tool's wait-free mailbox and the outputs come from the published snapshot, so both work

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact of the bowel with its rigid surroundings (the abdominal cavity and other organs):
 // every collision sphere against every obstacle, penalty response (contact_model.h) mapped
 // to the control points through the sphere's basis weights. A contact touches only four

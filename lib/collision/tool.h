@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A surgical tool as the bowel sees it: a capsule (a shaft swept by a sphere) whose tip is
 // at `position` and whose shaft runs from the tip back along the orientation's local +z
 // axis for `length` metres (the identity orientation is a vertical tool pointing down,

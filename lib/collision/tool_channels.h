@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tools' channels to the caller's threads. In: a mailbox per tool (tool_mailbox.h),
 // posted to from any thread and taken by the tools effect at the start of each step. Out:
 // each tool's ToolOutput, written by the tools effect at the end of each step and published

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tool's proxy (a god-object, Zilles and Salisbury 1995): the massless capsule the bowel
 // meets, joined to the commanded tip (the device) by a virtual coupling (Colgate et al.
 // 1995), a spring k_c and a damper b_c whose force is bounded by max_force:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact and grasp of surgical tools (tool.h) with the bowel: every collision sphere
 // against every tool's capsule with the penalty law of contact_model.h, and a grasp
 // spring-damper from a material point of the axis to the tool's tip. Like the environment,

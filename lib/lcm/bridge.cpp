@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's life: creation, the tick and destruction. Its threads are in bridge_threads.cpp.
 #include "bridge.h"
 

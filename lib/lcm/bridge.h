@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene served over LCM (enteron_lcm.h, docs/lcm.md): the scene, the LCM instance, the
 // tick, and the threads around it. Every exchange between the tick and the other threads
 // goes through a preallocated wait-free queue or mailbox:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's counters (ent_lcm_stats, server_status_t): plain atomics that each thread
 // adds to (relaxed: they are statistics, read once a second) and any thread reads.
 #pragma once

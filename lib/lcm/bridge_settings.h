@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The settings of a bridge: ent_lcm_bridge_desc with its defaults, checked field by field
 // (a message naming the field and the value), and owned (the desc's strings are not kept).
 #pragma once

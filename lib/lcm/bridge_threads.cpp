@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's threads: receive, publish, report, mesh, and the physics thread of
 // ent_lcm_bridge_start. None of them ever waits for the tick; the tick never waits for them.
 #include <lcmtypes/enteron_mesh_t.h>

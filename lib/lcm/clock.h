@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's clocks: CLOCK_MONOTONIC for everything it judges (deadlines, the watchdog,
 // command ages), CLOCK_REALTIME only for the `utime` stamps of messages (microseconds since
 // the epoch, what lcm-logger writes too).

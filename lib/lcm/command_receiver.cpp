@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "command_receiver.h"
 
 #include <lcmtypes/enteron_tool_command_t.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The receiving side of the bridge: every message on ENTERON_TOOL_COMMAND (or fed in by
 // ent_lcm_bridge_feed_command) is checked here, on the receive thread, never on the tick:
 // exact size, fingerprint, finite values, non-zero quaternion, existing tool, 0/1 levels

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The host's callbacks (ent_lcm_bridge_desc.callbacks), shared by the bridge and its
 // scene. Log lines go to the host's log callback, one call at a time; lines the scene
 // logs during a tick (a rollback of the stability guard) are queued instead and handed

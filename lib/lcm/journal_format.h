@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The journal: an LCM log file (lcm_eventlog format, readable by lcm-logplayer, lcm-spy
 // and bindings/lcm/python/log.py) holding a session_t first, then for every tick one
 // journal_tool_t per tool (what the tool was given before the step) and one

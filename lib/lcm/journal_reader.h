@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads an LCM log file event by event, for the replay. LCM's own reader
 // (lcm_eventlog_read_next_event) prints to stderr on a damaged file and allocates whatever
 // size a damaged header claims; this one never prints, and refuses a header whose sizes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // enteron-lcm-replay's work (ent_lcm_replay_journal): re-creates the scene of a journal
 // from its session entry and gives it, tick by tick, exactly what the journal says the
 // bridge gave it (journal_format.h), comparing the state digest after every step. Stops

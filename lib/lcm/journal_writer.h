@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes the journal (journal_format.h) with LCM's lcm_eventlog API, on the report thread.
 #pragma once
 

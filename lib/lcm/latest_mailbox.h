@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Newest value wins" between one writer thread and one reader thread: a triple buffer.
 // The writer fills its own slot and swaps it with the middle one; the reader swaps the
 // middle one with its own when it holds something new. Neither side ever waits, locks or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C API of libenteron_lcm (include/enteron/enteron_lcm.h): checked calls into the
 // Bridge, errors as a status and ent_lcm_last_error().
 #include <cstring>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "message_check.h"
 
 #include <lcmtypes/enteron_journal_step_t.h>

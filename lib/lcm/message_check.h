@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks that bytes from a network or a file are exactly one message of a given type
 // before anything decodes them (ent_lcm_check_message). The decoders lcm-gen 1.3.1 writes
 // trust the counts inside a message: a negative or huge count makes the C decoder

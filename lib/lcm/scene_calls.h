@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The calls a tick makes on the scene, in the order the journal records them and the
 // replay repeats them: for each tool ent_tool_set_pose, then its grasp action; then
 // ent_scene_step, and the state digest of what it reached (state_digest.h).

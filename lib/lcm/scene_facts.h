@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the bridge needs to know about its scene that the public API does not report: each
 // tool's size, max_force and initial pose, and the bowel's radius (for the state a viewer
 // draws and for the force clamp). Read from the scene JSON after libenteron accepted it,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A bounded single-producer single-consumer queue: how the tick hands its feedback, journal
 // entries and log lines to the bridge's other threads without waiting for them, without a
 // lock and without allocating (Lamport's ring, with acquire/release indices). Both sides are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The state digest of scene_state_t and the journal: a 64-bit hash of the exact bits of a
 // tick's outcome as the public API gives it: the control points after the step (x y z per
 // point, ent_scene_control_points), the simulated time, and what each tool was given for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The safety rules of one tool, applied at every tick (docs/lcm.md, "Safety"):
 // - a command older than the watchdog time on the bridge's own clock makes the tool stale:
 //   zero force, the tool held where it was (never judged by comparing two hosts' clocks);

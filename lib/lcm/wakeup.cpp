@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Futex calls of Wakeup (Linux).
 #include "wakeup.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wakes a sleeping consumer thread (the publisher) without the producer ever waiting: the
 // producer bumps a counter and, only if the consumer is asleep, makes one futex wake (a
 // non-blocking system call); the consumer sleeps on the counter with a timeout, so that a

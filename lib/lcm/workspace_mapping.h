@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The workspace mapping: from a haptic device's frame and units into the scene's, and the
 // forces back (enteron_lcm.h, ent_lcm_bridge_desc). With s the scale, R the rotation of the
 // device's axes into the scene's, o the offset and g the force scale:

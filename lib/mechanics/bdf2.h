@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Second-order backward differentiation (BDF2) with the linearised Newton step and banded
 // solve of implicit_euler.h. With the substep ratio w = h_n / h_{n-1} (variable-step BDF2,
 // so a change of dt or a subdivided retry keeps second order) and

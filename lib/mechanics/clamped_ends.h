@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clamped ends: an end of the axis held where it started AND pointing where it started, as
 // the bowel is held where it joins fixed anatomy (the duodenojejunal flexure, the
 // ileocaecal junction). A boundary condition of the spline, not a second pinned point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The equations of motion of the axis, M a = F(q, v), with M the constant banded mass
 // matrix (factored once) and F the sum of the effects the scene names. Integrators ask it
 // for forces, accelerations, linearisations and energies; it times every effect.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An effect adds generalised forces F(q, v, t) on the control points. Every effect maps a
 // force f acting at spline parameter s to the control points the same way, through the
 // basis weights: F_j += w_j(s) f.

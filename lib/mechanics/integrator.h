@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A time integrator advances the state of the axis by one substep h. Each owns its work
 // buffers, sized once at creation, so a substep allocates nothing.
 #pragma once

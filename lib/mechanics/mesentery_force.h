@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mesentery: tension-only springs that tie points of the axis to the mesenteric root,
 // a short line segment at the back of the abdomen. Attachment k sits at the spline
 // parameter s_k = (k + 1/2) / K * (n - 1), evenly spread along the axis, and pulls toward

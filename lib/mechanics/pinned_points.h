@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control points held in place: fixed in space, or attached to a rigid frame (an organ,
 // mechanics/rigid_frames.h) and carried with it. A pinned point's three coordinates become
 // constraints: their rows of the mass matrix and of the implicit system are replaced by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid frames that the caller moves between steps: every obstacle has one (its pose), and
 // what is attached to an obstacle (a pin, the mesentery's root) moves with its frame.
 //

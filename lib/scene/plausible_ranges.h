@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ranges a human abdomen gives the settings of a scene. A value far outside its range
 // is still valid (a scene may model something else), but it is most often a unit mistake:
 // gravity in mm/s^2, a box in millimetres, a density a thousand times too large. The scene

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A simulated scene: the intestine axis, the effects its description names, an integrator,
 // the stability guard, and the snapshot it publishes for readers.
 //

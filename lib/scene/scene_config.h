@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene description in C++ terms, whatever it came from (the C struct or JSON v1), and
 // the one home of its defaults: the JSON loader starts from a default SceneConfig and
 // ent_scene_desc_default fills the C struct from one. An effect that the description does

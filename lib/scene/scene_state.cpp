@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Save and restore of a scene (scene.h, docs/scoring-and-state.md): the scene's own section (the
 // axis state, the counters, the guard's reference energies), then the dynamics' sections
 // (effect counters, then each effect's own), then the integrator's.

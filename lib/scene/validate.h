@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one check of a scene description, shared by the JSON loader and the C desc
 // conversion. The rules are written once; only the names in the messages and the error
 // code differ, so a JSON user reads "intestine.radius must be > 0, got -1" and a C user

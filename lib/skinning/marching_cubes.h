@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Marching cubes over the sparse narrow band: every cell whose corners straddle the
 // iso-value gets the triangles of its case (marching_cubes_table.h). A corner is inside
 // when its field exceeds the iso-value; a corner the band does not reach counts as outside

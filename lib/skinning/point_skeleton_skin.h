@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Distance surface of point skeletons (France et al. 2002, section 3), polygonised by
 // marching cubes on a narrow band.
 //

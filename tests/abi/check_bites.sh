@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Proves that abi/check bites: builds deliberately changed copies of libenteron.so and
 # runs the real abi/check (with the committed baseline) on each.
 #

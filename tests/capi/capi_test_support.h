@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the C API tests: they reach the library only through enteron.h.
 #pragma once
 

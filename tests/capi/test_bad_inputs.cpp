@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bad input through every entry point of the C API, as one table: each row is a function
 // and one bad input (NULL handles and pointers, NaN and Inf, negative or zero sizes, dt <= 0
 // or absurd, wrong struct_size, unknown JSON keys and wrong types, huge inputs). Every row

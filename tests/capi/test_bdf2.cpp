@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bdf2 integrator through the C API: second order also when dt changes from step to step
 // (its variable-step coefficients), and no energy from nothing. Its constant-step order is in
 // test_convergence.cpp, its rolled-back history in tests/unit/mechanics/test_bdf2.cpp.

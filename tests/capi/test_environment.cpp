@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The environment through the C API: the abdominal cavity (box_inside), planes, spheres and
 // capsules keep the bowel out; obstacles come from JSON ("environment") or
 // ent_scene_add_obstacle; the effect costs nothing until the first obstacle; bad obstacles

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Calls in the wrong order (issue 16, defect 2): a skin that outlives its scene used to read
 // freed memory and return ENT_OK; now it shares the published snapshots and keeps building
 // from the last state the scene published. The scene's memory, allocator callbacks

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Values no human abdomen has (issue 16, defect 8): accepted, but the log callback hears a
 // warning naming the key as the caller wrote it and the likely unit mistake; and errors
 // blame what the caller wrote, saying so when a default is what clashes with it.

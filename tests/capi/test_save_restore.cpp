@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Save and restore (ent_scene_save_state, ent_scene_restore_state; docs/scoring-and-state.md).
 //
 // A restored scene continues bit-identically: the test runs a scripted trainee (a tool

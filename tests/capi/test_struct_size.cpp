@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The struct_size handshake from the library's side: the _init functions behind the
 // _default macros write exactly the size they are given, every released size is served,
 // and sizes no release has are refused with ENT_ERROR_VERSION and nothing written.

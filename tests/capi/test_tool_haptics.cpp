@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tool as a haptic device renders it (issue 18, docs/haptics.md): the wrench is minus
 // what the bowel received in the accepted step (no click at a reversal with friction), the
 // proxy keeps the tool out of the tube however fast the device moves and renders a force
 // within its bound, the passivity observer's balance stays non-negative on closed paths
 // (and the limiter keeps it so), and tools can be removed and counted.
-#include "capi_test_support.h"
+#include "capi_scenes.h"
 
 #include <array>
 #include <cstring>
@@ -17,7 +18,7 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = 0.0125;  // the default R, m
+constexpr double kRadius = kBowelRadius;  // the default R, m
 const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
 double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
@@ -52,22 +53,14 @@ ent_tool_stats tool_stats(const ent_scene* scene, int32_t tool) {
 // with `points` control points and the default stiffnesses, damping and friction; settled.
 ScenePtr bowel_on_floor(double length, uint32_t points, double dt, int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER,
                         int32_t clamped_ends = ENT_PIN_NONE) {
-    ent_scene_desc desc = default_desc();
-    desc.integrator = integrator;
-    desc.clamped_ends = clamped_ends;
-    desc.length_m = length;
-    desc.control_points = points;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.5 * length;
-    desc.shape_center_m[2] = kRadius;
-    ScenePtr scene = create(desc);
-    if (!scene) return scene;
-    ent_obstacle_desc plane;
-    ent_obstacle_desc_default(&plane);
-    plane.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
-    EXPECT_TRUE(step_n(scene.get(), dt, int(std::lround(0.2 / dt))));  // settle
-    return scene;
+    BowelOnPlane bowel;
+    bowel.length_m = length;
+    bowel.control_points = points;
+    bowel.integrator = integrator;
+    bowel.clamped_ends = clamped_ends;
+    bowel.settle_s = 0.2;
+    bowel.dt_s = dt;
+    return bowel_on_plane(bowel);
 }
 
 // The demo's 6 m bowel (240 control points, self-collision, mesentery, in its cavity)

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Checks that the documentation says what the code does.
 
     check_docs.py --root SOURCE_DIR CHECK [--library LIBENTERON] [--run "NAME=COMMAND"]
@@ -17,7 +18,8 @@ CHECK is one of:
   doc_paths  every docs/*.md that a header, a source file or a document names (in a
              comment, in text: not only links) exists;
   readme_example
-             the C program of README.md is examples/minimal.c, character for character;
+             the C program of README.md is examples/minimal.c, character for character
+             (but for the file's SPDX licence line);
   example_outputs
              every output examples/README.md quotes (its table's last column) is printed by
              a run of that example: each example of the table is either run (--run
@@ -372,6 +374,8 @@ def check_readme_example(root):
     programs = [(number, code) for number, language, code in blocks
                 if language == "c" and re.search(r"\bint\s+main\s*\(", code)]
     example = read(os.path.join(root, "examples", "minimal.c"))
+    # Its licence line (tests/docs/check_spdx.py) is the file's, not the program's.
+    example = re.sub(r"\A/\* SPDX-License-Identifier: [^*]*\*/\n", "", example)
     if len(programs) != 1:
         problems.add(f"README.md has {len(programs)} C programs (```c blocks with main); "
                      "it must have one, examples/minimal.c")

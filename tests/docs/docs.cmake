@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ---- the documentation says what the code does (label "docs"; tests/docs/check_docs.py) -----
 #   docs.header          every exported function has a doc comment
 #   docs.json_keys       every key the JSON loader accepts is in docs/scene-json.md (asks the
@@ -9,6 +10,13 @@
 #   docs.example_outputs every output examples/README.md quotes is printed by a run of its
 #                        example (registered in examples/CMakeLists.txt, which knows the
 #                        examples and the Python binding's environment)
+#   docs.unit_tests      every unit of lib/ has its tests/unit/<layer>/test_<unit>.cpp or a
+#                        row in tests/unit/README.md saying why (tests/docs/check_unit_tests.py)
+#   docs.cpp_api         every exported C function has its counterpart in enteron.hpp, or a
+#                        reason in docs/cpp.md, and docs/cpp.md's table names it
+#                        (tests/docs/check_cpp_api.py)
+#   docs.spdx            every source file starts with its SPDX licence line
+#                        (tests/docs/check_spdx.py; --fix adds it)
 # Python 3's standard library only.
 if(EXISTS /usr/bin/python3)
   set(_enteron_docs_python /usr/bin/python3)
@@ -24,7 +32,13 @@ set(ENTERON_CHECK_DOCS ${_enteron_check_docs} CACHE INTERNAL "the documentation 
 foreach(check IN ITEMS header links doc_paths readme_example)
   add_test(NAME docs.${check} COMMAND ${_enteron_check_docs} ${check})
 endforeach()
-set(_enteron_docs_tests docs.header docs.links docs.doc_paths docs.readme_example)
+add_test(NAME docs.unit_tests COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_unit_tests.py
+         --root ${PROJECT_SOURCE_DIR})
+add_test(NAME docs.cpp_api COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_cpp_api.py
+         --root ${PROJECT_SOURCE_DIR})
+add_test(NAME docs.spdx COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_spdx.py
+         --root ${PROJECT_SOURCE_DIR})
+set(_enteron_docs_tests docs.header docs.links docs.doc_paths docs.readme_example docs.unit_tests docs.cpp_api docs.spdx)
 if(NOT ENTERON_SANITIZE)
   add_test(NAME docs.json_keys COMMAND ${_enteron_check_docs} --library $<TARGET_FILE:enteron> json_keys)
   list(APPEND _enteron_docs_tests docs.json_keys)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the C API from several threads at once, as a simulator uses it.
 //
 // The input drives the driving thread: one byte picks a base scene, then up to 48

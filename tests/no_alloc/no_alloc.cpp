@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Allocates nothing after the first step": the default scene (ent_scene_desc_default plus
 // mesentery, damping and self-collision, in a box, with a tool) under each integrator (6 m
 // for implicit Euler, 1 m for the explicit ones, which need many substeps with contacts), with every global allocation function of the

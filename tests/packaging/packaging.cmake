@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest packaging.debs (label "package"): cpack makes the Debian packages of this build
 # tree into a scratch directory, then check_packages.sh checks their names, dependencies
 # and lintian, and builds the C consumer against them unpacked. Included from

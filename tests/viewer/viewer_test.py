@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Tests of enteron-viewer (docs/viewer.md), run by ctest (label "viewer").
 
 The window tests run the viewer under an Xvfb server of their own (software rendering

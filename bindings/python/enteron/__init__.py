@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Enteron: a real-time model of the human small intestine, from Python.
 
 A ctypes binding of the C API of libenteron (no compile step). Quick start:

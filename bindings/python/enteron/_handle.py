@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The life cycle every handle class of the binding shares (Scene, Skin): a context
 manager, closed at exit or when collected, and refusing calls once closed.
 

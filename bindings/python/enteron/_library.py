@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Finds and loads libenteron, declares the C functions, checks the version.
 
 Search order for the library:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """ctypes mirrors of the structs in include/enteron/enteron.h (this binding's header: 0.1).
 
 Every struct starts with struct_size, so a newer library serves this layout unchanged

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Scenes: create, step, query. A Scene owns its ent_scene handle; close it (or use it as a
 context manager) to release it at a known time rather than at garbage collection."""
 import ctypes

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Skins: the bowel's surface as a triangle mesh (ent_skin), for rendering.
 
     with enteron.Scene(...) as scene, enteron.Skin(scene, "convolution", segments=24) as skin:

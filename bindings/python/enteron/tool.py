@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Surgical tools: rigid capsules driven by the caller (a haptic device, a script) that push
 and grasp the bowel (ent_tool_*).
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Prints the size and field offsets of the public structs as the C compiler lays them out,
  * as JSON, for the Python binding's test_layout (which compares its ctypes mirrors). */
 #include <enteron/enteron.h>

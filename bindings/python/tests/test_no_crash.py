@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """A Python user can never crash the interpreter through the package (issue 16, defect 1).
 
 Each pattern that crashed or read freed memory runs in its own interpreter, so that a crash

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Scenes through the binding: the values are the C API's, errors raise, handles close."""
 import ctypes
 import threading

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Tools through the binding: a push moves the bowel and the force opposes the motion within
 max_force, a grasp lifts, a release drops, bad input raises naming the input and changes
 nothing; obstacles added from Python equal those of the JSON description."""

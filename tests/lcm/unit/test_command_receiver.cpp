@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The receive side (command_receiver.h): every reason a command is rejected for, counted
 // and logged once per reason then summed; sequences, gaps, a restarted sender, coalescing.
 #include <gtest/gtest.h>

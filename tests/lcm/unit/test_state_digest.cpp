@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The state digest (state_digest.h): a change of any one bit of any one value it covers
 // (control points, time, the tools' pose and grasp action) changes it; so do the order and
 // the count of the values.

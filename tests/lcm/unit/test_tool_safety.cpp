@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The safety rules of one tool (tool_safety.h), tick by tick, against the numbers they
 // promise: the watchdog's time, the ramp's slope, the speed bounds, the clamps.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exchanges between the tick and the bridge's other threads: the SPSC queue and the
 // "newest value wins" mailbox, alone and between two threads (run under ThreadSanitizer by
 // scripts/test), and the publisher's wakeup.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The workspace mapping (workspace_mapping.h) against hand-computed frames, and its
 // force, torque and stiffness maps against the definitions they follow from.
 #include <gtest/gtest.h>

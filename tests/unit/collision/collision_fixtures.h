@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the collision tests: the default bowel radius, axes that touch themselves, and
 // a contact effect evaluated the way Dynamics does.
 #pragma once

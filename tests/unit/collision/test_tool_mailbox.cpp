@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tools' mailboxes and channels (lib/collision/tool_mailbox.h, tool_channels.h): a pose
 // is taken once, the last post wins, a grasp command is taken once and the last one wins;
 // posts from several threads at once never tear a pose (each pose taken is one that some

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tools effect (lib/collision/tools_force.h) on its own: the force of a tool on the
 // bowel and the wrench it reports are action and reaction, within max_force however deep
 // the tool presses, with the torque of the contact points about the tip; a grasp pulled

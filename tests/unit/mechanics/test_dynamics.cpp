@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dynamics around the step (lib/mechanics/dynamics.h): the effects' step hooks run in order
 // and in the right sequence, and the guard's report finds the effect behind a failure.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The JSON v1 loader (lib/scene/json_loader.h): what a document turns into, and the exact
 // error (code and message) for each kind of mistake.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ranges a human abdomen gives a scene (lib/scene/plausible_ranges.h): a value inside is
 // silent, one outside names itself and, where a unit mistake explains it, that mistake; the
 // warnings name each key as the caller wrote it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene validation (lib/scene/validate.h) with both name tables (JSON keys and C
 // fields): every field named, non-finite numbers and enums refused by name, messages that
 // blame what the caller wrote, scenes refused because they cannot start, and the normalised
