@@ -1,6 +1,6 @@
-#include "bridge_counters.h"
+#include "lcm/bridge_counters.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 const char* rejection_name(Rejection reason) {
     switch (reason) {
@@ -44,4 +44,4 @@ void BridgeCounters::fill(ent_lcm_stats& out) const {
     out.log_lines_dropped = get(log_lines_dropped);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

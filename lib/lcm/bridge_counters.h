@@ -7,7 +7,7 @@
 
 #include "enteron/enteron_lcm.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // Why a command was rejected, in the order the receive thread checks.
 enum class Rejection : int {
@@ -56,4 +56,4 @@ struct BridgeCounters {
     void fill(ent_lcm_stats& out) const;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,4 +1,4 @@
-#include "bridge_settings.h"
+#include "lcm/bridge_settings.h"
 
 #include <cmath>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include "base/error.h"
 #include "capi/struct_size.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -113,4 +113,4 @@ SafetyLimits BridgeSettings::limits() const {
     return limits;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

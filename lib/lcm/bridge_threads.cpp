@@ -16,9 +16,9 @@
 #include <future>
 
 #include "base/error.h"
-#include "bridge.h"
+#include "lcm/bridge.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -387,4 +387,4 @@ void Bridge::physics_loop() {
     }
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

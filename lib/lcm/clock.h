@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 int64_t monotonic_ns();
 int64_t realtime_us();
@@ -21,4 +21,4 @@ private:
     int64_t offset_ns_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

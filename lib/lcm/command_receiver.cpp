@@ -1,4 +1,4 @@
-#include "command_receiver.h"
+#include "lcm/command_receiver.h"
 
 #include <lcmtypes/enteron_tool_command_t.h>
 
@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "message_check.h"
+#include "lcm/message_check.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -172,4 +172,4 @@ void CommandReceiver::log_summary(double seconds) {
                  seconds, line);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

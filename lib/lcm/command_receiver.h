@@ -15,13 +15,13 @@
 #include <mutex>
 #include <vector>
 
-#include "bridge_counters.h"
-#include "latest_mailbox.h"
-#include "host_callbacks.h"
-#include "tool_safety.h"
-#include "workspace_mapping.h"
+#include "lcm/bridge_counters.h"
+#include "lcm/host_callbacks.h"
+#include "lcm/latest_mailbox.h"
+#include "lcm/tool_safety.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class CommandReceiver {
 public:
@@ -60,4 +60,4 @@ private:
     int64_t unlogged_[kRejectionCount] = {};  // rejections since, not logged one by one
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

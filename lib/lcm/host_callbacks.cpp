@@ -1,11 +1,11 @@
-#include "host_callbacks.h"
+#include "lcm/host_callbacks.h"
 
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 HostCallbacks::HostCallbacks(const ent_callbacks* host, BridgeCounters& counters) : counters_(counters) {
     ent_callbacks_default(&host_);
@@ -72,4 +72,4 @@ void HostCallbacks::drain() {
     }
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 inline constexpr const char* kJournalSessionChannel = "ENTERON_SESSION";
 inline constexpr const char* kJournalToolChannel = "ENTERON_JOURNAL_TOOL";
@@ -25,4 +25,4 @@ struct JournalRecord {
     enteron_journal_step_t step{};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

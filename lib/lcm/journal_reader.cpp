@@ -1,11 +1,11 @@
-#include "journal_reader.h"
+#include "lcm/journal_reader.h"
 
 #include <cerrno>
 #include <cstring>
 
 #include "base/error.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -62,4 +62,4 @@ JournalReader::Next JournalReader::next(LogEvent& event, std::string& problem) {
     return Next::event;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,4 +1,4 @@
-#include "journal_writer.h"
+#include "lcm/journal_writer.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include "base/error.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 JournalWriter::JournalWriter(const std::string& path) : path_(path) {
     errno = 0;
@@ -53,4 +53,4 @@ bool JournalWriter::write_end(const enteron_journal_step_t& last_step) {
 
 void JournalWriter::flush() { std::fflush(log_->f); }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -7,7 +7,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class Wakeup {
 public:
@@ -31,4 +31,4 @@ private:
     std::atomic<bool> sleeping_{false};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -7,9 +7,9 @@
 #include <cstring>
 #include <vector>
 
-#include "state_digest.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 void flip(double& value, int bit) {
@@ -55,4 +55,4 @@ TEST(StateDigest, DependsOnOrderAndCount) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm
