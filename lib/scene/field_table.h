@@ -106,7 +106,6 @@ struct List {
 enum class Special : uint8_t {
     version,         // "version": 1
     shape_points,    // intestine.shape.points: [[x, y, z], ...] into control_points x 3 numbers
-    mesentery_root,  // mesentery.root: [[x, y, z], [x, y, z]], the root segment's two ends
     pinned_points,   // pinned.control_points: indices of control points
     mesh_file,       // an obstacle's mesh, from an OBJ or PLY file
     mesh_vertices,   // an obstacle's mesh given inline

@@ -328,7 +328,6 @@ void Reader::read_custom(Special special, const json& value, const std::string& 
             mesh_scale_ = read_number(value, path);
             if (!(mesh_scale_ > 0.0) || !std::isfinite(mesh_scale_)) fail(path + " must be > 0, got " + describe(value));
             break;
-        case Special::mesentery_root: break;  // read as the elements of "root"
     }
 }
 
