@@ -108,20 +108,26 @@ const Field kShapeFields[] = {
     choice<&ShapeConfig::kind>("kind", "shape", kShapeKinds),
     point<&ShapeConfig::center>("center", "shape_center_m").for_kinds(kLine | kSerpentine | kHelix),
     direction<&ShapeConfig::direction>("direction", "shape_direction").for_kinds(kLine),
+    // Sizes up to kMaxLength: a helix 1e200 m wide squares its radius to infinity and has
+    // no points to place.
     number<&ShapeConfig::leg_length>("leg_length", "shape_leg_length_m")
         .above(0.0)
+        .at_most(kMaxLength)
         .plausible_in(kShapeSize)
         .for_kinds(kSerpentine),
     // Neighbouring legs or turns closer than a diameter would start interpenetrated.
     number<&ShapeConfig::leg_spacing>("leg_spacing", "shape_leg_spacing_m")
+        .at_most(kMaxLength)
         .must_be(Relation::at_least, 2.0, "radius")
         .plausible_in(kShapeSize)
         .for_kinds(kSerpentine),
     number<&ShapeConfig::helix_radius>("helix_radius", "shape_helix_radius_m")
         .above(0.0)
+        .at_most(kMaxLength)
         .plausible_in(kShapeSize)
         .for_kinds(kHelix),
     number<&ShapeConfig::helix_pitch>("helix_pitch", "shape_helix_pitch_m")
+        .at_most(kMaxLength)
         .must_be(Relation::at_least, 2.0, "radius")
         .plausible_in(kShapeSize)
         .for_kinds(kHelix),

@@ -166,7 +166,9 @@ void Validator::walk(const Scope& scope, Pass pass) const {
         if (f.present != nullptr && !f.present(scope.part)) continue;
         field(f, scope, pass);
     }
-    if (pass == Pass::values) block_rules(scope);
+    // An attached pin is checked whole once its obstacle is known to exist.
+    const bool last_pass = scope.block.check == Block::Check::attached_pin;
+    if (pass == (last_pass ? Pass::obstacle_indices : Pass::values)) block_rules(scope);
 }
 
 void Validator::field(const Field& f, const Scope& scope, Pass pass) const {
@@ -335,26 +337,30 @@ void Validator::block_rules(const Scope& scope) const {
             // attached (the end point on the organ, its direction in the world). Only JSON
             // attaches pins in the description (C pins with ent_scene_pin_point).
             const PinAttachment& pin = *static_cast<const PinAttachment*>(scope.part);
-            const PinnedConfig& pinned = *static_cast<const PinnedConfig*>(scope.outer->part);
+            const Scope& pins = *scope.outer;
+            const PinnedConfig& pinned = *static_cast<const PinnedConfig*>(pins.part);
             const Located control_points = locate(scope, "intestine.control_points");
             const auto n = static_cast<std::size_t>(value_of(*control_points.field, control_points.part));
             const mechanics::ClampedEnd end = mechanics::clamped_end_point(
                 pin.point, n, (pinned.clamped & pin_first) != 0, (pinned.clamped & pin_last) != 0);
             if (end != mechanics::ClampedEnd::none) {
                 const bool first = end == mechanics::ClampedEnd::first;
-                fail(join(scope.path, "control_point"),
+                fail(name(*scope.block.find("control_point"), scope),
                      "is " + std::to_string(pin.point) + ", the point of the clamped " + (first ? "first" : "last") +
-                         " end (pinned.clamped): attach the clamped end with pinned.clamped_attached");
+                         " end (" + name(*pins.block.find("clamped"), pins) + "): attach the clamped end with " +
+                         name(*pins.block.find("clamped_attached"), pins));
             }
             break;
         }
         case Block::Check::clamped_attached: {
+            // Its keys are fields of the pinned part (object_here), around it.
             const PinnedConfig& pinned = *static_cast<const PinnedConfig*>(scope.part);
+            const Scope& pins = *scope.outer;
             for (const bool first : {true, false})
                 if (pinned.clamped_obstacle[first ? 0 : 1] && (pinned.clamped & (first ? pin_first : pin_last)) == 0)
-                    fail(join(scope.path, first ? "first" : "last"),
-                         std::string("attaches the ") + (first ? "first" : "last") +
-                             " end, which pinned.clamped does not clamp: clamp it or remove the key");
+                    fail(name(*scope.block.find(first ? "first" : "last"), scope),
+                         std::string("attaches the ") + (first ? "first" : "last") + " end, which " +
+                             name(*pins.block.find("clamped"), pins) + " does not clamp: clamp it or remove the key");
             break;
         }
         case Block::Check::obstacle: {
@@ -392,6 +398,12 @@ void Validator::mesh(const collision::TriangleMesh& m, const Scope& scope) const
     if (!some_area) fail(virtual_name(scope, "triangles"), "are all of zero area: nothing to collide with");
 }
 
+// The name of the field at a JSON path from the top ("pinned.clamped").
+std::string name_at(const FieldNames& names, const std::string& path) {
+    const std::size_t dot = path.rfind('.');
+    return names.of(*find_path(scene_block(), path).field, dot == std::string::npos ? "" : path.substr(0, dot));
+}
+
 // Every clamped end needs a direction to hold: its tangent in the initial shape.
 void check_clamped_tangents(const SceneConfig& config, const FieldNames& names) {
     const int32_t clamped = config.pinned->clamped;
@@ -399,8 +411,7 @@ void check_clamped_tangents(const SceneConfig& config, const FieldNames& names) 
     for (const bool first : {true, false}) {
         if ((clamped & (first ? pin_first : pin_last)) == 0) continue;
         if (mechanics::clamped_end_is_degenerate(config.start_points.data(), n, first))
-            throw Error(names.code, names.of(*find_path(scene_block(), "pinned.clamped").field, "pinned") +
-                                        " clamps the " + (first ? "first" : "last") +
+            throw Error(names.code, name_at(names, "pinned.clamped") + " clamps the " + (first ? "first" : "last") +
                                         " end, but the initial shape gives it no direction to hold: its tangent " +
                                         (first ? "4 q1 - 3 q0 - q2" : "3 q[n-1] - 4 q[n-2] + q[n-3]") +
                                         " is zero (the end folds back on itself); change the shape's " +
