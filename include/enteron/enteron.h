@@ -397,6 +397,28 @@ ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callba
                                               ent_scene** out_scene);
 
 /**
+ * The description the scene was created from, as an ent_scene_desc, whether it came from C
+ * or from JSON (docs/scene-json.md gives each key's C field): its values, in `effects` the
+ * effects it turned on (a stiffness of 0 reads back with its bit clear), and for an effect
+ * it left off the defaults. The arrays are not kept: shape_points_xyz_m and pinned_points
+ * are NULL and pinned_point_count 0 (ent_scene_control_points gives the points), callbacks
+ * NULL. What changed since (ent_scene_set_gravity, obstacles, tools, pins, a mesentery or a
+ * clamped end attached) and what only JSON describes (its obstacles, tools, attached pins)
+ * are not in it. So for a scene without arrays, ent_scene_create of what this gives makes
+ * the same scene. Set out->struct_size first (ent_scene_desc_default does); fields beyond
+ * an older, smaller struct_size are not written.
+ * Any thread, any time (the description never changes); never waits; allocates nothing.
+ * @code
+ *   ent_scene_desc desc;
+ *   ent_scene_desc_default(&desc);
+ *   if (ent_scene_read_desc(scene, &desc) == ENT_OK) printf("R = %g m\n", desc.radius_m);
+ * @endcode
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, destroyed scene); ENT_ERROR_VERSION
+ *         (struct_size not known); *out untouched on failure.
+ */
+ENT_API ent_status ent_scene_read_desc(const ent_scene* scene, ent_scene_desc* out);
+
+/**
  * Destroys a scene and everything it owns. NULL is ignored. Its skins stay valid: they keep
  * the last published state (and its memory) until they are destroyed too.
  * Calls on this scene already running on other threads when it is called (a step, a
@@ -836,6 +858,18 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
  * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int32_t* out_tool);
+
+/**
+ * The settings a tool was added with (ent_tool_add, or the JSON "tools"), and the pose it
+ * was added at, its quaternion normalised: an ent_tool_desc that ent_tool_add would take.
+ * Where the tool is now: ent_tool_read_feedback. Set out->struct_size first
+ * (ent_tool_desc_default does); fields beyond an older, smaller struct_size are not written.
+ * Any thread, any time, also while another adds a tool or steps: never waits, allocates
+ * nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size not
+ *         known); ENT_ERROR_NOT_FOUND (unknown or removed tool); *out untouched on failure.
+ */
+ENT_API ent_status ent_tool_read_desc(const ent_scene* scene, int32_t tool, ent_tool_desc* out);
 
 /**
  * Sets where the tool is at the end of the next ent_scene_step: tip position (m) and

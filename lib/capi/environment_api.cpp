@@ -2,6 +2,7 @@
 // The environment entry points of the C API: rigid obstacles around the bowel, which the
 // caller may move, re-grip and remove between steps.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -187,15 +188,13 @@ ENT_API ent_status ent_obstacle_set_pose(ent_scene* scene, int32_t obstacle, con
         SceneHandle& handle = call.handle();
         require_finite(position_m, 3, "position_m");
         require_finite(orientation_wxyz, 4, "orientation_wxyz");
-        const double norm = std::sqrt(orientation_wxyz[0] * orientation_wxyz[0] + orientation_wxyz[1] * orientation_wxyz[1] +
-                                      orientation_wxyz[2] * orientation_wxyz[2] + orientation_wxyz[3] * orientation_wxyz[3]);
-        if (!(norm > 1e-12) || !std::isfinite(norm))
-            throw Error(ErrorCode::invalid_argument, "orientation_wxyz must be a non-zero quaternion (w x y z)");
+        const std::array<double, 4> q = enteron::scene::unit_quaternion(
+            {orientation_wxyz[0], orientation_wxyz[1], orientation_wxyz[2], orientation_wxyz[3]},
+            [] { return std::string("orientation_wxyz"); }, ErrorCode::invalid_argument);
         const enteron::capi::DrivingCall driving(handle, "ent_obstacle_set_pose");
         enteron::mechanics::RigidPose pose;
         pose.position = vec3(position_m);
-        pose.orientation = Eigen::Quaterniond(orientation_wxyz[0] / norm, orientation_wxyz[1] / norm,
-                                              orientation_wxyz[2] / norm, orientation_wxyz[3] / norm);
+        pose.orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
         handle.scene->set_obstacle_pose(obstacle_index(*handle.scene, obstacle), pose);
     });
 }

@@ -52,6 +52,7 @@ ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::Sce
     }
     try {
         enteron::scene::warn_implausible(config, names, handle->logger);
+        handle->description = enteron::capi::desc_from_config(config);
         handle->scene.emplace(config, *handle->published, handle->memory, handle->logger, names);
     } catch (...) {
         enteron::capi::release(handle);

@@ -40,6 +40,7 @@ struct SceneHandle {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     Logger logger;
     ent_callbacks callbacks{};  // kept to release the handle itself
+    ent_scene_desc description{};  // what the scene was made from (ent_scene_read_desc), set before it is shared
     std::optional<scene::SnapshotPublisher> published;  // outlives scene, for the skins
     std::optional<scene::Scene> scene;                  // reset by destroy_scene
     CallsInFlight calls;                                // on the scene, and its destroy

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "capi/call_guard.h"
+#include "capi/desc_fields.h"
 #include "capi/driving_call.h"
 #include "capi/scene_handle.h"
 #include "capi/struct_size.h"
@@ -58,6 +59,31 @@ PublishedTool published_tool(const SceneHandle& handle, int32_t tool) {
 // The sizes of ent_tool_desc and ent_tool_feedback in released headers: before the fields
 // of the tool's proxy and stiffness, (the feedback) before saturated, and now.
 constexpr std::size_t kToolDescFirstSize = offsetof(ent_tool_desc, mode);
+
+// ent_tool_desc's fields, each the row of the tool's table with its name
+// (scene/scene_table.cpp); struct_size aside, all of them.
+#define TOOL_FIELD(field) ENTERON_DESC_FIELD(ent_tool_desc, field)
+const enteron::capi::DescField<ent_tool_desc> kToolDescFields[] = {
+    TOOL_FIELD(radius_m), TOOL_FIELD(length_m), TOOL_FIELD(max_force_N), TOOL_FIELD(grasp_margin_m),
+    TOOL_FIELD(grasp_stiffness_N_per_m), TOOL_FIELD(grasp_damping_N_s_per_m), TOOL_FIELD(position_m),
+    TOOL_FIELD(orientation_wxyz), TOOL_FIELD(mode), TOOL_FIELD(passivity_limiter),
+    TOOL_FIELD(coupling_stiffness_N_per_m), TOOL_FIELD(coupling_damping_N_s_per_m), TOOL_FIELD(friction),
+};
+#undef TOOL_FIELD
+
+const enteron::capi::DescBinding<ent_tool_desc>& tool_desc_fields() {
+    static const enteron::capi::DescBinding<ent_tool_desc> binding(enteron::scene::tool_block(), kToolDescFields);
+    return binding;
+}
+
+// A tool as a whole current ent_tool_desc.
+ent_tool_desc desc_of(const enteron::collision::ToolConfig& tool) {
+    ent_tool_desc desc;
+    std::memset(&desc, 0, sizeof desc);
+    desc.struct_size = sizeof desc;
+    tool_desc_fields().write(&tool, desc);
+    return desc;
+}
 constexpr std::size_t kToolFeedbackFirstSize = offsetof(ent_tool_feedback, stiffness_N_per_m);
 constexpr std::size_t kToolFeedbackProxySize = offsetof(ent_tool_feedback, saturated);
 
@@ -76,24 +102,26 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
     return guarded([&] {
         require(desc, "desc");
         enteron::capi::check_struct_size(struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
-        const enteron::collision::ToolConfig tool;
-        ent_tool_desc defaults;
-        std::memset(&defaults, 0, sizeof defaults);
+        ent_tool_desc defaults = desc_of(enteron::collision::ToolConfig{});
         defaults.struct_size = struct_size;
-        defaults.radius_m = tool.settings.radius;
-        defaults.length_m = tool.settings.length;
-        defaults.max_force_N = tool.settings.max_force;
-        defaults.grasp_margin_m = tool.settings.grasp_margin;
-        defaults.grasp_stiffness_N_per_m = tool.settings.grasp_stiffness;
-        defaults.grasp_damping_N_s_per_m = tool.settings.grasp_damping;
-        for (int c = 0; c < 3; ++c) defaults.position_m[c] = tool.pose.position[c];
-        for (int c = 0; c < 4; ++c) defaults.orientation_wxyz[c] = tool.pose.orientation[c];
-        defaults.mode = static_cast<int32_t>(tool.settings.mode);
-        defaults.passivity_limiter = tool.settings.passivity_limiter ? 1 : 0;
-        defaults.coupling_stiffness_N_per_m = tool.settings.coupling_stiffness;
-        defaults.coupling_damping_N_s_per_m = tool.settings.coupling_damping;
-        defaults.friction = tool.settings.friction;
         std::memcpy(desc, &defaults, struct_size);
+    });
+}
+
+ENT_API ent_status ent_tool_read_desc(const ent_scene* scene, int32_t tool, ent_tool_desc* out) {
+    return guarded([&] {
+        const SceneHandle& handle = live_handle(scene);
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
+        const enteron::collision::ToolChannels& channels = handle.scene->tool_channels();
+        const enteron::collision::ToolConfig* added = tool >= 0 ? channels.added(static_cast<std::size_t>(tool)) : nullptr;
+        if (added == nullptr) unknown_tool(tool, channels.size());
+        if (channels.mailbox(static_cast<std::size_t>(tool))->retired())
+            throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " was removed");
+        ent_tool_desc desc = desc_of(*added);
+        desc.struct_size = out->struct_size;
+        // An older caller's struct ends at struct_size: write nothing past it.
+        std::memcpy(out, &desc, out->struct_size);
     });
 }
 
@@ -110,25 +138,10 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
         std::memcpy(&full, desc, desc->struct_size);
         desc = &full;
         enteron::collision::ToolConfig tool;
-        tool.settings.radius = desc->radius_m;
-        tool.settings.length = desc->length_m;
-        tool.settings.max_force = desc->max_force_N;
-        tool.settings.grasp_margin = desc->grasp_margin_m;
-        tool.settings.grasp_stiffness = desc->grasp_stiffness_N_per_m;
-        tool.settings.grasp_damping = desc->grasp_damping_N_s_per_m;
-        for (int c = 0; c < 3; ++c) tool.pose.position[c] = desc->position_m[c];
-        for (int c = 0; c < 4; ++c) tool.pose.orientation[c] = desc->orientation_wxyz[c];
-        tool.settings.mode = static_cast<enteron::collision::ToolMode>(desc->mode);
-        tool.settings.coupling_stiffness = desc->coupling_stiffness_N_per_m;
-        tool.settings.coupling_damping = desc->coupling_damping_N_s_per_m;
-        tool.settings.friction = desc->friction;
-        if (desc->passivity_limiter != 0 && desc->passivity_limiter != 1)
-            throw Error(ErrorCode::invalid_argument,
-                        "passivity_limiter must be 0 or 1, got " + std::to_string(desc->passivity_limiter));
-        tool.settings.passivity_limiter = desc->passivity_limiter == 1;
+        tool_desc_fields().read(*desc, &tool);
         const enteron::scene::FieldNames& names = enteron::scene::c_field_names();
         tool = enteron::scene::validate_tool(tool, "", names);
-        enteron::scene::warn_implausible(tool.settings, "", names, handle.logger);
+        enteron::scene::warn_implausible(tool, "", names, handle.logger);
         const std::size_t index = handle.scene->add_tool(tool);
         if (out_tool != nullptr) *out_tool = static_cast<int32_t>(index);
     });

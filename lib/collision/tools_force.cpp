@@ -106,7 +106,7 @@ std::size_t ToolsForce::add_tool(const ToolConfig& tool) {
     // touch every sphere and hold one point.
     tools_.reserve(tools_.size() + 1);
     contacts_.reserve((tools_.size() + 1) * (spheres_.size() + 1));
-    channels_.add();
+    channels_.add(tool);
     tools_.push_back(t);
     return tools_.size() - 1;
 }

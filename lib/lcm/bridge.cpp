@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The bridge's life: creation, the tick and destruction. Its threads are in bridge_threads.cpp.
-#include "bridge.h"
+#include "lcm/bridge.h"
 
 #include <lcmtypes/enteron_session_t.h>
 
@@ -10,11 +10,11 @@
 #include <random>
 
 #include "base/error.h"
-#include "message_check.h"
-#include "scene_calls.h"
-#include "state_digest.h"
+#include "lcm/message_check.h"
+#include "lcm/scene_calls.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -73,14 +73,7 @@ void Bridge::make_scene() {
     const ent_status status = ent_scene_create_json_with(settings_.scene_json.data(), settings_.scene_json.size(),
                                                          &callbacks_.scene_callbacks(), &scene_);
     if (status != ENT_OK) throw Error(static_cast<ErrorCode>(status), std::string("scene_json: ") + ent_last_error());
-    facts_ = read_scene_facts(settings_.scene_json.data(), settings_.scene_json.size());
-    // The JSON's tools are the scene's: the first id past them must not exist.
-    int32_t grasping = 0;
-    const int32_t count = static_cast<int32_t>(facts_.tools.size());
-    if (ent_tool_state(scene_, count, &grasping) != ENT_ERROR_NOT_FOUND ||
-        (count > 0 && ent_tool_state(scene_, count - 1, &grasping) != ENT_OK))
-        throw Error(ErrorCode::internal, "the scene's tools are not the " + std::to_string(count) + " of its JSON");
-
+    facts_ = read_scene_facts(scene_);
     tools_.reserve(facts_.tools.size());
     for (const ToolFacts& tool : facts_.tools) {
         SafetyLimits limits = settings_.limits();
@@ -289,4 +282,4 @@ ent_status Bridge::tick(int64_t now_ns) {
     return calls_ok ? ENT_OK : ENT_ERROR_INTERNAL;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -8,7 +8,7 @@
 
 #include "enteron/enteron_lcm.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // Why a command was rejected, in the order the receive thread checks. In tool_feedback_t's
 // status a reason is its value + 1 (REJECTED_*) in bits 8-15.
@@ -58,4 +58,4 @@ struct BridgeCounters {
     void fill(ent_lcm_stats& out) const;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

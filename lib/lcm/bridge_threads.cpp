@@ -17,9 +17,9 @@
 #include <future>
 
 #include "base/error.h"
-#include "bridge.h"
+#include "lcm/bridge.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -388,4 +388,4 @@ void Bridge::physics_loop() {
     }
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 int64_t monotonic_ns();
 int64_t realtime_us();
@@ -22,4 +22,4 @@ private:
     int64_t offset_ns_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

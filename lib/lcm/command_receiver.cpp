@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "command_receiver.h"
+#include "lcm/command_receiver.h"
 
 #include <lcmtypes/enteron_tool_command_t.h>
 
@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "message_check.h"
+#include "lcm/message_check.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -191,4 +191,4 @@ void CommandReceiver::log_summary(double seconds) {
                  seconds, line);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -21,13 +21,13 @@
 #include <mutex>
 #include <vector>
 
-#include "bridge_counters.h"
-#include "latest_mailbox.h"
-#include "host_callbacks.h"
-#include "tool_safety.h"
-#include "workspace_mapping.h"
+#include "lcm/bridge_counters.h"
+#include "lcm/host_callbacks.h"
+#include "lcm/latest_mailbox.h"
+#include "lcm/tool_safety.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // The tool_feedback_t status of a rejection: STATUS_COMMANDS_REJECTED and the reason
 // (REJECTED_* = the Rejection's value + 1) in bits 8-15; 0 for Rejection::none.
@@ -87,4 +87,4 @@ private:
     std::unique_ptr<LastRejection[]> last_rejections_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "host_callbacks.h"
+#include "lcm/host_callbacks.h"
 
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 HostCallbacks::HostCallbacks(const ent_callbacks* host, BridgeCounters& counters) : counters_(counters) {
     ent_callbacks_default(&host_);
@@ -73,4 +73,4 @@ void HostCallbacks::drain() {
     }
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

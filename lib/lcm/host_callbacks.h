@@ -15,11 +15,11 @@
 #include <mutex>
 
 #include "base/logger.h"
-#include "bridge_counters.h"
 #include "enteron/enteron.h"
-#include "spsc_queue.h"
+#include "lcm/bridge_counters.h"
+#include "lcm/spsc_queue.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class HostCallbacks {
 public:
@@ -66,4 +66,4 @@ private:
     pthread_t tick_thread_{};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

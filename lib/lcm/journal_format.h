@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 inline constexpr const char* kJournalSessionChannel = "ENTERON_SESSION";
 inline constexpr const char* kJournalToolChannel = "ENTERON_JOURNAL_TOOL";
@@ -26,4 +26,4 @@ struct JournalRecord {
     enteron_journal_step_t step{};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

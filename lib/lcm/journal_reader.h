@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 struct LogEvent {
     int64_t number = 0;
@@ -42,4 +42,4 @@ private:
     int64_t offset_ = 0;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "journal_writer.h"
+#include "lcm/journal_writer.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -7,7 +7,7 @@
 
 #include "base/error.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 JournalWriter::JournalWriter(const std::string& path) : path_(path) {
     errno = 0;
@@ -54,4 +54,4 @@ bool JournalWriter::write_end(const enteron_journal_step_t& last_step) {
 
 void JournalWriter::flush() { std::fflush(log_->f); }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

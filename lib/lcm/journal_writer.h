@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "journal_format.h"
+#include "lcm/journal_format.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class JournalWriter {
 public:
@@ -36,4 +36,4 @@ private:
     std::vector<uint8_t> buffer_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -9,7 +9,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 template <class T>
 class LatestMailbox {
@@ -50,4 +50,4 @@ private:
     uint8_t front_ = 2;                  // the reader's slot
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -12,7 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 enum class MessageFault {
     none,
@@ -35,4 +35,4 @@ std::size_t tool_command_size();
 // lcm-gen writes caches it in a plain static).
 void prepare_message_types();
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

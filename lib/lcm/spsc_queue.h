@@ -12,7 +12,7 @@
 #include <memory>
 #include <new>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // Keeps the two indices on separate cache lines, so that the producer and the consumer do
 // not invalidate each other's line on every operation.
@@ -83,4 +83,4 @@ private:
     uint64_t tail_cache_ = 0;                             // the consumer's last view of tail_
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -17,7 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // What the digest takes of one tool: tip position (3), orientation w x y z (4), grasp
 // action (journal_tool_t GRASP_*, as a double).
@@ -38,4 +38,4 @@ private:
 int64_t tick_digest(const double* control_points, std::size_t control_point_values, double time_s,
                     const double* tool_values, std::size_t tool_value_count);
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

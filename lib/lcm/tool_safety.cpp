@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "tool_safety.h"
+#include "lcm/tool_safety.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 ToolSafety::ToolSafety(const SafetyLimits& limits, const WorkspaceMapping& mapping, const Pose& initial_pose)
     : limits_(limits), mapping_(&mapping), applied_(initial_pose) {}
@@ -105,4 +105,4 @@ void ToolSafety::render(const Eigen::Vector3d& scene_force_N, const Eigen::Vecto
     rendered_scene_force_ = mapping_->force_to_scene(device_force_);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

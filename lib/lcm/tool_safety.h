@@ -15,9 +15,9 @@
 
 #include <cstdint>
 
-#include "workspace_mapping.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // A command that passed every check of the receive thread, mapped into the scene.
 struct AcceptedCommand {
@@ -107,4 +107,4 @@ private:
     Eigen::Vector3d rendered_scene_force_ = Eigen::Vector3d::Zero();
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -8,7 +8,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class Wakeup {
 public:
@@ -32,4 +32,4 @@ private:
     std::atomic<bool> sleeping_{false};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

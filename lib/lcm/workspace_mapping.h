@@ -11,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 struct Pose {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -45,4 +45,4 @@ private:
     double force_scale_ = 1.0;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -28,7 +28,7 @@ void warn_points_length(const SceneConfig& config, const FieldNames& names, cons
     if (!logger.enabled() || config.intestine.shape.kind != ShapeKind::points) return;
     const spline::ArcLengthTable table = spline_through_points(config);
     const double length = config.intestine.length;
-    const std::string length_name = names[Field::length], points_name = names[Field::shape_points];
+    const std::string length_name = names.at("intestine.length"), points_name = names.at("intestine.shape.points");
     // The whole axis against its rest length.
     const double strain = table.total_length() / length - 1.0;
     if (std::fabs(strain) > kPointsLengthTolerance)

@@ -138,7 +138,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     if (config.self_collision) contact_loads(EffectId::self_collision);
     for (std::size_t i = 0; i < config.environment.size(); ++i) {
         collision::Obstacle obstacle = config.environment[i];
-        const std::string name = std::string(names[Field::obstacle]) + "[" + std::to_string(i) + "]";
+        const std::string name = names.obstacle(i);
         collision::EnvironmentForce::prepare(obstacle, radius_, memory_);
         // A mesh's start can only be checked once its field is built.
         if (obstacle.kind == collision::ObstacleKind::mesh)
@@ -282,12 +282,14 @@ void Scene::pin_point_only(std::size_t point, std::optional<std::size_t> obstacl
 
 void Scene::refuse_clamped_end_point(std::size_t point, const char* change) {
     const ClampedEnds* clamps = dynamics_.clamps();
-    for (const bool first : {true, false})
-        if (clamps != nullptr && clamps->clamped(first) && point == (first ? 0 : model_.control_points - 1))
-            throw Error(ErrorCode::invalid_argument,
-                        "control point " + std::to_string(point) + " is the scene's " + (first ? "first" : "last") +
-                            " clamped end (clamped_ends): " + change +
-                            " it alone would leave the clamp half attached; attach the clamped end instead");
+    const ClampedEnd end = clamps != nullptr ? clamped_end_point(point, model_.control_points, clamps->clamped(true),
+                                                                 clamps->clamped(false))
+                                             : ClampedEnd::none;
+    if (end != ClampedEnd::none)
+        throw Error(ErrorCode::invalid_argument,
+                    "control point " + std::to_string(point) + " is the scene's " +
+                        (end == ClampedEnd::first ? "first" : "last") + " clamped end (clamped_ends): " + change +
+                        " it alone would leave the clamp half attached; attach the clamped end instead");
 }
 
 void Scene::pin_point(std::size_t point, std::optional<std::size_t> obstacle) {
@@ -383,7 +385,7 @@ collision::CollisionSpheres& Scene::collision_spheres() {
 }
 
 double Scene::sphere_spacing() const {
-    return collision_.sphere_spacing > 0.0 ? collision_.sphere_spacing : 0.5 * radius_;
+    return resting_sphere_spacing(collision_, radius_);
 }
 
 collision::SphereLoads& Scene::contact_loads(EffectId owner) {

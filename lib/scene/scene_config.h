@@ -92,6 +92,12 @@ struct CollisionConfig {
     collision::ContactParameters contact;
 };
 
+// The collision spheres' spacing at rest, m, for a tube of radius R: the description's, or
+// R / 2 when it leaves it at 0.
+inline double resting_sphere_spacing(const CollisionConfig& collision, double radius) {
+    return collision.sphere_spacing > 0.0 ? collision.sphere_spacing : 0.5 * radius;
+}
+
 // An obstacle of each kind as a JSON entry or ent_obstacle_desc_default starts: a cavity
 // 24 cm wide around the origin, a floor through the origin, organs of 5 cm radius.
 inline collision::Obstacle default_obstacle(collision::ObstacleKind kind) {

@@ -645,6 +645,14 @@ std::vector<BadInput> table() {
          },
          kArg, "scene"},
         {"ent_scene_stats", "out NULL", [](L l) { return ent_scene_stats(l.scene, nullptr); }, kArg, "out"},
+        {"ent_scene_read_desc", "scene NULL",
+         [](L) {
+             ent_scene_desc d;
+             ent_scene_desc_default(&d);
+             return ent_scene_read_desc(nullptr, &d);
+         },
+         kArg, "scene"},
+        {"ent_scene_read_desc", "out NULL", [](L l) { return ent_scene_read_desc(l.scene, nullptr); }, kArg, "out"},
         {"ent_scene_effect_stats", "scene NULL",
          [](L) {
              ent_effect_stats s;
@@ -1201,6 +1209,32 @@ std::vector<BadInput> table() {
              return ent_tool_read_stats(l.scene, l.tool + 1, &s);
          },
          ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_desc", "scene NULL",
+         [](L) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             return ent_tool_read_desc(nullptr, 0, &d);
+         },
+         kArg, "scene"},
+        {"ent_tool_read_desc", "out NULL", [](L l) { return ent_tool_read_desc(l.scene, l.tool, nullptr); }, kArg,
+         "out"},
+        {"ent_tool_read_desc", "unknown tool 1",
+         [](L l) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             const ent_tool_desc copy = d;
+             const ent_status status = ent_tool_read_desc(l.scene, l.tool + 1, &d);
+             EXPECT_TRUE(same_bits(&d, &copy, sizeof d)) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_desc", "unknown tool -1",
+         [](L l) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             return ent_tool_read_desc(l.scene, -1, &d);
+         },
+         ENT_ERROR_NOT_FOUND, "tool -1"},
         {"ent_tool_remove", "scene NULL", [](L) { return ent_tool_remove(nullptr, 0); }, kArg, "scene"},
         {"ent_tool_remove", "unknown tool 1", [](L l) { return ent_tool_remove(l.scene, l.tool + 1); },
          ENT_ERROR_NOT_FOUND, "tool 1"},
@@ -1393,6 +1427,11 @@ std::vector<BadInput> table() {
         add("ent_skin_create", skin_with([size](ent_skin_desc& d) { d.struct_size = size; }));
         add("ent_tool_desc_init", init_with_size(&ent_tool_desc_init, size));
         add("ent_tool_add", tool_with([size](ent_tool_desc& d) { d.struct_size = size; }));
+        add("ent_scene_read_desc", out_struct_with_size<ent_scene_desc>(
+                                       size, [](L l, ent_scene_desc* d) { return ent_scene_read_desc(l.scene, d); }));
+        add("ent_tool_read_desc", out_struct_with_size<ent_tool_desc>(size, [](L l, ent_tool_desc* d) {
+                return ent_tool_read_desc(l.scene, l.tool, d);
+            }));
         add("ent_tool_read_feedback", out_struct_with_size<ent_tool_feedback>(size, [](L l, ent_tool_feedback* f) {
                 return ent_tool_read_feedback(l.scene, l.tool, f);
             }));

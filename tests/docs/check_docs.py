@@ -2,17 +2,18 @@
 # SPDX-License-Identifier: Apache-2.0
 """Checks that the documentation says what the code does.
 
-    check_docs.py --root SOURCE_DIR CHECK [--library LIBENTERON] [--run "NAME=COMMAND"]
+    check_docs.py --root SOURCE_DIR CHECK [--table ENTERON_SCENE_TABLE] [--run "NAME=COMMAND"]
                   [--not-run NAME REASON]
 
 CHECK is one of:
   header     every function a public header exports (declared with an ENT_*API macro in
              include/enteron/*.h) has a doc comment (/** ... */) right above it;
-  json_keys  every key the JSON loader accepts, at every level, is in its section of
+  json_keys  every key of the scene's description table (lib/scene/scene_table.h: the
+             JSON loader reads by it), at every level, is in its section of
              docs/scene-json.md, and so is every value of a key that takes a choice of
              names; and every message `PATH must be one of "a", "b", got "x"` the page
-             quotes is the loader's own for that value (needs --library, the built
-             libenteron);
+             quotes lists the table's choices for that key (needs --table, the built
+             enteron_scene_table that prints it);
   links      every relative link and image of README.md and docs/*.md leads to a file or
              folder that exists, and its #anchor to a heading (or an <a name>/id) there;
   doc_paths  every docs/*.md that a header, a source file or a document names (in a
@@ -29,19 +30,16 @@ CHECK is one of:
              the run printed, character for character; where the row says its figures
              "depend on the machine", any number stands for any number.
 
-The JSON keys come from the loader itself, not from reading its source: a document with an
-unknown key is refused with the keys allowed at that place ("unknown key "x" in intestine
-(expected one of: length, radius, ...)"), the message users see. Asking the built library
-at each level finds every key, whatever shape the loader's code takes, and cannot list a
-key the loader does not accept.
+The JSON keys come from the table itself, printed by tests/docs/print_scene_table.cpp: a
+new row (a new key) without its line in the documentation fails here.
 
 Python 3 standard library only. Prints one line per problem and exits 1 if there is any.
 """
 import argparse
-import ctypes
 import json
 import os
 import re
+import subprocess
 import sys
 
 
@@ -160,74 +158,11 @@ def check_header(root):
 
 # ---------------------------------------------------------------- JSON keys
 
-PROBE = "zz_undocumented_probe"
-UNKNOWN_KEY = re.compile(r"unknown key \"" + PROBE + r"\" .*\(expected one of: (.*)\)$")
-CHOICES = re.compile(r"must be one of ((?:\"[^\"]*\"(?:, )?)+), got \"" + PROBE + "\"")
-
-
-class Loader:
-    """Asks the library's JSON loader, through the C API, what it accepts."""
-
-    def __init__(self, library):
-        self.lib = ctypes.CDLL(library)
-        self.lib.ent_scene_create_json.argtypes = [ctypes.c_char_p, ctypes.c_size_t,
-                                                   ctypes.POINTER(ctypes.c_void_p)]
-        self.lib.ent_scene_create_json.restype = ctypes.c_int32
-        self.lib.ent_last_error.restype = ctypes.c_char_p
-        self.lib.ent_scene_destroy.argtypes = [ctypes.c_void_p]
-
-    def error(self, document):
-        """The loader's message for this document, or None if it makes a scene."""
-        text = json.dumps(document).encode()
-        scene = ctypes.c_void_p()
-        if self.lib.ent_scene_create_json(text, len(text), ctypes.byref(scene)) == 0:
-            self.lib.ent_scene_destroy(scene)
-            return None
-        return self.lib.ent_last_error().decode()
-
-    def keys(self, place):
-        """The keys allowed in the object that place(object) puts in a document, or None
-        if the loader does not read an object with keys there."""
-        match = UNKNOWN_KEY.search(self.error(place({PROBE: 0})) or "")
-        if not match:
-            return None
-        return [key for key in match.group(1).split(", ") if key]
-
-    def choices(self, place):
-        """The names allowed for the value that place(value) puts in a document, or []."""
-        match = CHOICES.search(self.error(place(PROBE)) or "")
-        return re.findall(r"\"([^\"]*)\"", match.group(1)) if match else []
-
-
-def discover(loader, place, name, found):
-    """Fills found[name] with the keys the loader accepts in the object that place(object)
-    puts in a document, and the named values of those keys; then the same for every object,
-    array of objects, or array of typed objects (an obstacle's "type") below it. False if
-    the loader reads no object with keys there."""
-    keys = loader.keys(place)
-    if keys is None:
-        return False
-    entry = found.setdefault(name, {"keys": set(), "choices": {}})
-    entry["keys"].update(keys)
-    for key in keys:
-        child = f"{name}.{key}" if name else key
-        inside = lambda value, key=key: place({key: value})  # noqa: E731
-        element = lambda value, key=key: place({key: [value]})  # noqa: E731
-        if discover(loader, inside, child, found) or discover(loader, element, child, found):
-            continue
-        kinds = loader.choices(lambda value, element=element: element({"type": value}))
-        if kinds:
-            typed = found.setdefault(child, {"keys": set(), "choices": {}})
-            typed["keys"].add("type")
-            typed["choices"]["type"] = kinds
-            for kind in kinds:
-                discover(loader, lambda value, element=element, kind=kind: element({"type": kind, **value}),
-                         child, found)
-            continue
-        values = loader.choices(inside)
-        if values:
-            entry["choices"][key] = values
-    return True
+def read_table(program):
+    """The scene table's keys, as print_scene_table prints them: path -> {"keys": [...],
+    "choices": {key: [names]}}."""
+    output = subprocess.run([program], check=True, capture_output=True, text=True).stdout
+    return json.loads(output)
 
 
 def sections(text):
@@ -241,17 +176,12 @@ def sections(text):
     return result
 
 
-def check_json_keys(root, library):
+def check_json_keys(root, table_program):
     problems = Problems()
-    if not library:
-        problems.add("json_keys needs --library (the built libenteron)")
+    if not table_program:
+        problems.add("json_keys needs --table (the built enteron_scene_table)")
         return problems.report("")
-    loader = Loader(library)
-    found = {}
-    if not discover(loader, lambda value: value, "", found):
-        problems.add(f"the loader's answer to an unknown top-level key is not the expected message: "
-                     f"{loader.error({PROBE: 0})!r}")
-        return problems.report("")
+    found = read_table(table_program)
     doc_path = os.path.join(root, "docs", "scene-json.md")
     by_heading = sections(read(doc_path))
     keys = values = 0
@@ -266,15 +196,15 @@ def check_json_keys(root, library):
         for key in sorted(entry["keys"]):
             keys += 1
             if f"`{key}`" not in section:
-                problems.add(f"docs/scene-json.md, section {heading}: the loader accepts the key "
+                problems.add(f"docs/scene-json.md, section {heading}: the table has the key "
                              f"\"{key}\" ({name + '.' if name else ''}{key}), which is not documented there")
         for key, choices in sorted(entry["choices"].items()):
             for choice in choices:
                 values += 1
                 if f"\"{choice}\"" not in section:
-                    problems.add(f"docs/scene-json.md, section {heading}: the loader accepts "
+                    problems.add(f"docs/scene-json.md, section {heading}: the table has "
                                  f"{key} \"{choice}\", which is not documented there")
-    quoted = check_quoted_choices(loader, read(doc_path), problems)
+    quoted = check_quoted_choices(found, read(doc_path), problems)
     return problems.report(f"{keys} JSON keys and {values} named values in {len(found)} places, "
                            f"each in its section of docs/scene-json.md; {quoted} quoted choice messages, "
                            "each the loader's")
@@ -283,34 +213,25 @@ def check_json_keys(root, library):
 QUOTED_CHOICE = re.compile(r"`(([\w.\[\]]+) must be one of (?:\"[^\"]*\"(?:, )?)+, got \"([^\"]*)\")`")
 
 
-def document_at(path, value):
-    """The document that puts value at a path like environment[0].type: {"environment":
-    [{"type": value}]}; None for a path this cannot build (an index other than 0)."""
-    tokens = re.findall(r"([^.\[\]]+)((?:\[\d+\])*)", path)
-    document = value
-    for key, indices in reversed(tokens):
-        for index in reversed(re.findall(r"\[(\d+)\]", indices)):
-            if index != "0":
-                return None
-            document = [document]
-        document = {key: document}
-    return document
-
-
-def check_quoted_choices(loader, text, problems):
-    """Every `PATH must be one of "a", ..., got "x"` the page quotes is what the loader says
-    for x at PATH: a list of choices that lost a newer one (an obstacle type) is caught."""
+def check_quoted_choices(table, text, problems):
+    """Every `PATH must be one of "a", ..., got "x"` the page quotes lists the choices the
+    table has for the key at PATH, in its order: a list that lost a newer choice (an
+    obstacle type) is caught."""
     count = 0
     for number, line, _ in markdown_lines(text):
         for match in QUOTED_CHOICE.finditer(line):
-            message, path, value = match.groups()
-            document = document_at(path, value)
-            if document is None:
+            message, path, _ = match.groups()
+            parts = re.sub(r"\[\d+\]", "", path).split(".")
+            entry = table.get(".".join(parts[:-1]))
+            choices = entry["choices"].get(parts[-1]) if entry else None
+            if choices is None:
+                problems.add(f"docs/scene-json.md:{number}: quotes `{message}`, but the table has no choice at {path}")
                 continue
             count += 1
-            said = loader.error(document) or "(no error)"
-            if message not in said:
-                problems.add(f"docs/scene-json.md:{number}: quotes `{message}`, the loader says `{said}`")
+            quoted = re.findall(r'"([^"]*)"', message.split(" must be one of ", 1)[1].rsplit(", got ", 1)[0])
+            if quoted != list(choices):
+                problems.add(f"docs/scene-json.md:{number}: quotes the choices of {path} as {quoted}, "
+                             f"the table has {list(choices)}")
     return count
 
 
@@ -509,7 +430,7 @@ def check_example_outputs(root, runs, not_run):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--root", required=True)
-    parser.add_argument("--library")
+    parser.add_argument("--table")
     parser.add_argument("--run", action="append", default=[], metavar="NAME=COMMAND")
     parser.add_argument("--not-run", nargs=2, action="append", default=[], metavar=("NAME", "REASON"))
     parser.add_argument("check", choices=["header", "json_keys", "links", "doc_paths", "readme_example",
@@ -519,7 +440,7 @@ def main():
     if args.check == "header":
         return check_header(root)
     if args.check == "json_keys":
-        return check_json_keys(root, args.library)
+        return check_json_keys(root, args.table)
     if args.check == "links":
         return check_links(root)
     if args.check == "doc_paths":

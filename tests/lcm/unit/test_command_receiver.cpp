@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "command_receiver.h"
+#include "lcm/command_receiver.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 constexpr int64_t kMs = 1000000;
@@ -149,4 +149,4 @@ TEST_F(CommandReceiverTest, TheFirstRejectionOfEachReasonIsLoggedThenTheyAreSumm
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "enteron/enteron_lcm.h"
-#include "message_check.h"
+#include "lcm/message_check.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 template <class Message>
@@ -147,4 +147,4 @@ TEST(MessageCheck, UnknownTypesAreNamed) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -8,9 +8,9 @@
 #include <cstring>
 #include <vector>
 
-#include "state_digest.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 void flip(double& value, int bit) {
@@ -56,4 +56,4 @@ TEST(StateDigest, DependsOnOrderAndCount) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "tool_safety.h"
+#include "lcm/tool_safety.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 constexpr int64_t kMs = 1000000;  // ns
@@ -204,4 +204,4 @@ TEST_F(ToolSafetyTest, GraspIsALevelActedOnOnlyWhenItChanges) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -9,11 +9,11 @@
 #include <cstdint>
 #include <thread>
 
-#include "latest_mailbox.h"
-#include "spsc_queue.h"
-#include "wakeup.h"
+#include "lcm/latest_mailbox.h"
+#include "lcm/spsc_queue.h"
+#include "lcm/wakeup.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 TEST(SpscQueue, HoldsItsCapacityInOrderThenRefuses) {
@@ -154,4 +154,4 @@ TEST(Wakeup, NotifyWakesAWaiterAndWorkAlreadyThereIsNotSleptOn) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "workspace_mapping.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 // A device reporting millimetres, its x axis along the scene's y (a quarter turn about z),
@@ -66,4 +66,4 @@ TEST(WorkspaceMapping, TorqueIsTheMomentOfTheMappedForce) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm
