@@ -562,7 +562,7 @@ double ToolsForce::external_work_bound() const {
     return work;
 }
 
-bool ToolsForce::begin_step(const mechanics::State& state, double dt) {
+bool ToolsForce::take_commands(const mechanics::State& state, double dt) {
     bool grasp_changed = false;
     for (std::size_t i = 0; i < tools_.size(); ++i) {
         Tool& tool = tools_[i];

@@ -4,7 +4,7 @@
 // each contact touches four consecutive control points, so its linearisation goes into the
 // implicit system.
 //
-// Commands: at the start of each step (begin_step) each tool takes what its mailbox holds
+// Commands: at the start of each step (take_commands) each tool takes what its mailbox holds
 // (tool_channels.h): a new pose, a grasp or a release. At the end (end_step) it writes its
 // output (wrench, grasp, contacts, stiffness, poses, passivity) for the scene to publish.
 //
@@ -45,11 +45,11 @@
 #include "collision/tool_proxy.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/bordered_system.h"
-#include "mechanics/effect.h"
+#include "mechanics/driven_effect.h"
 
 namespace enteron::collision {
 
-class ToolsForce final : public mechanics::Effect {
+class ToolsForce final : public mechanics::DrivenEffect {
 public:
     // How fast a grasp draws the held point in to the tool's surface, m/s: a grasp taken
     // from a distance starts slack (no jolt for the device) and tightens by at most
@@ -73,7 +73,7 @@ public:
     // Takes each tool's commands (a grasp picks the axis point nearest the tip, within
     // reach, as the tool rests); true if a grasp or release was made. The tools then move
     // towards their targets over the dt seconds of the step.
-    bool begin_step(const mechanics::State& state, double dt) override;
+    bool take_commands(const mechanics::State& state, double dt) override;
     void begin_attempt() override;
     // Accepted: the tools rest at their targets, a slipped grasp is let go and the wrench
     // of the step goes through the passivity observer. Not: the targets stay for the next

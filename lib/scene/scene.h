@@ -1,5 +1,6 @@
-// A simulated scene: the intestine axis, the effects its description names, an integrator,
-// the stability guard, and the snapshot it publishes for readers.
+// A simulated scene: the intestine axis and the effects its description names (assembly),
+// the changes made to them between steps, the stepper that steps them
+// (mechanics/stepper.h), and the snapshot it publishes for readers.
 //
 // step() has the strong guarantee: it either advances the state and publishes it, or
 // throws enteron::Error with the state exactly as before (counters of the failed attempt
@@ -27,10 +28,8 @@
 #include "collision/tool.h"
 #include "collision/tool_channels.h"
 #include "mechanics/dynamics.h"
-#include "mechanics/integrator.h"
 #include "mechanics/rigid_frames.h"
-#include "mechanics/stability_guard.h"
-#include "mechanics/state.h"
+#include "mechanics/stepper.h"
 #include "scene/scene_config.h"
 #include "scene/snapshot.h"
 #include "scene/validate.h"
@@ -104,7 +103,7 @@ public:
     // for an obstacle added later.
     const StartClearance& start_clearance() const { return start_clearance_; }
     // The control points now (x y z each, m): the driving thread only.
-    const std::pmr::vector<double>& positions() const { return state_.q; }
+    const std::pmr::vector<double>& positions() const { return stepper_.state().q; }
     std::size_t control_points() const { return model_.control_points; }
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
@@ -121,10 +120,6 @@ public:
     uint64_t fingerprint() const;
 
 private:
-    // One attempt at dt in `substeps` equal substeps; false if the guard rejects it.
-    bool try_step(double dt, std::size_t substeps);
-    // The message of a step the guard could not save (before the state is restored).
-    std::string unstable_message(double dt, std::size_t substeps);
     // Collision sphere spacing at rest, m.
     double sphere_spacing() const;
     // The shared collision spheres, made on first use (a scene without contacts has none).
@@ -153,15 +148,12 @@ private:
     void refuse_clamped_end_point(std::size_t point, const char* change);
     // Adds a tool, creating the tools effect with the first; no refinalize.
     std::size_t add_tool_effect_only(const collision::ToolConfig& tool);
-    // Bounds, substep limit and energies after the set of effects changed.
+    // Bounds, substep limit and energies after the set of effects changed (Stepper::effects_changed).
     void refinalize();
     // Fills a free snapshot slot from the current state and publishes it.
     void publish();
     // The contact effects' last evaluations into a slot: tools, obstacles, then self-contacts.
     void publish_contacts(Snapshot& slot) const;
-    // The scene's own section of a saved state, and the sections of what it holds.
-    void save_sections(StateWriter& out) const;
-    void restore_sections(StateReader& in);
 
     std::pmr::memory_resource* memory_;
     Logger logger_;
@@ -174,16 +166,12 @@ private:
     collision::ToolChannels tool_channels_;        // the tools effect uses them: before dynamics_
     mechanics::RigidFrames frames_;                // obstacles' poses, followed by attachments: before dynamics_
     mechanics::Dynamics dynamics_;
-    Owned<mechanics::Integrator> integrator_;
-    mechanics::State state_;
-    mechanics::State backup_;  // the state before the current step, for rollbacks
-    double explicit_substep_limit_;
+    mechanics::Stepper stepper_;  // steps dynamics_ with frames_: after both
     double rest_length_;
     double radius_;
     CollisionConfig collision_;
     std::size_t obstacles_ = 0;
     StartClearance start_clearance_;
-    mechanics::StabilityGuard guard_;
     SceneStats stats_;
     SnapshotPublisher& published_;
     // The logs of the contact effects, by ContactKind (null: no such effect).

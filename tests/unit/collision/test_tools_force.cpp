@@ -60,7 +60,7 @@ struct Bench {
     // the tool's output.
     std::vector<double> step(const enteron::mechanics::State& state, ToolOutput* output) {
         std::vector<double> force(state.q.size(), 0.0);
-        tools.begin_step(axis.state, kStep);
+        tools.take_commands(axis.state, kStep);
         tools.begin_attempt();
         tools.evaluate(state, force.data(), nullptr);
         tools.evaluation_used(kStep, nullptr);  // one explicit evaluation over the whole step
@@ -132,7 +132,7 @@ TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
     enteron::mechanics::State at_end = bench.axis.state;
     at_end.time = bench.axis.state.time + kStep;  // where the tool has reached the new pose
     std::vector<double> force(at_end.q.size(), 0.0);
-    bench.tools.begin_step(bench.axis.state, kStep);
+    bench.tools.take_commands(bench.axis.state, kStep);
     bench.tools.begin_attempt();
     bench.tools.evaluate(at_end, force.data(), nullptr);
     // The grasp slipped: no force on the bowel (the tool is far above it) and no energy
