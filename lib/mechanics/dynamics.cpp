@@ -332,10 +332,4 @@ void Dynamics::add_layout(Fingerprint& fingerprint) const {
     fingerprint.add(uint64_t{pinned_ != nullptr});
 }
 
-Effect* Dynamics::find_effect(EffectId id) {
-    for (Owned<Effect>& effect : effects_)
-        if (effect->id() == id) return effect.get();
-    return nullptr;
-}
-
 }  // namespace enteron::mechanics

@@ -49,8 +49,6 @@ public:
     // applies them after, their time counted as `owner`'s. Not owned: they must outlive
     // every call to forces().
     void add_shared_loads(SharedLoads* loads, EffectId owner);
-    // The effect with this id, or null.
-    Effect* find_effect(EffectId id);
     // The pins, or null before the first.
     PinnedPoints* pins() { return pinned_.get(); }
     // Factors the mass matrix (with the pins) and bounds the explicit stable substep.

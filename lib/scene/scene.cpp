@@ -115,12 +115,12 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
                                                config.damping->bend};
         dynamics_.add_effect(make_owned<DampingForce>(memory, model_, coefficients, memory));
     }
-    if (config.gravity) dynamics_.add_effect(make_owned<GravityForce>(memory, model_, *config.gravity, memory));
+    if (config.gravity) gravity_ = &dynamics_.add_effect(make_owned<GravityForce>(memory, model_, *config.gravity, memory));
     if (config.mesentery) {
         const MesenteryConfig& m = *config.mesentery;
         const MesenteryParameters parameters{m.root_start, m.root_end, m.attachments, m.stiffness,
                                              m.rest_length};
-        dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state, memory));
+        mesentery_ = &dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state, memory));
     }
     if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), frames_,
@@ -139,8 +139,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
         if (obstacle.kind == collision::ObstacleKind::mesh)
             validate_obstacle(obstacle, name, names, state.q.data(), n, &start_clearance_);
         warn_mesh(obstacle, name, logger_);
-        if (environment() == nullptr) add_environment(make_effect_environment());
-        environment()->add_obstacle(obstacle);
+        add_to_environment(obstacle);
         ++obstacles_;
     }
     if (config.pinned)
@@ -152,11 +151,9 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
             if (obstacle) attach_clamped_ends_only(end, obstacle);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision) {
-        auto effect = make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state,
-                                                              memory, contact_loads(EffectId::self_collision));
-        const collision::ContactLog* log = &effect->contact_log();
-        dynamics_.add_effect(std::move(effect));
-        contact_logs_[static_cast<std::size_t>(collision::ContactKind::self)] = log;
+        const collision::SelfContactForce& self = dynamics_.add_effect(make_owned<collision::SelfContactForce>(
+            memory, collision_spheres(), collision_.contact, state, memory, contact_loads(EffectId::self_collision)));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::self)] = &self.contact_log();
     }
 
     published_.reserve_tools(tool_channels_.size());
@@ -178,14 +175,7 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     collision::EnvironmentForce::prepare(prepared, radius_, memory_);
     published_.reserve_obstacles(obstacles_ + 1);
     validate_obstacle(prepared, name, names, stepper_.state().q.data(), model_.control_points, &start_clearance_);
-    collision::EnvironmentForce* env = environment();
-    if (env == nullptr) {
-        auto effect = make_effect_environment();
-        effect->add_obstacle(prepared);
-        add_environment(std::move(effect));
-    } else {
-        env->add_obstacle(prepared);
-    }
+    add_to_environment(prepared);
     add_to_fingerprint(description_, obstacle);
     warn_mesh(prepared, name, logger_);
     const std::size_t index = obstacles_++;
@@ -194,36 +184,41 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     return index;
 }
 
-Owned<collision::EnvironmentForce> Scene::make_effect_environment() {
-    return make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, frames_,
-                                                   stepper_.state(), memory_, contact_loads(EffectId::environment));
+void Scene::add_to_environment(const collision::Obstacle& prepared) {
+    if (environment_ != nullptr) {
+        environment_->add_obstacle(prepared);
+        return;
+    }
+    // The first obstacle: the effect is added to the dynamics only once it holds it, so that
+    // nothing changes if that throws.
+    auto effect = make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, frames_,
+                                                          stepper_.state(), memory_,
+                                                          contact_loads(EffectId::environment));
+    effect->add_obstacle(prepared);
+    environment_ = &dynamics_.add_effect(std::move(effect));
+    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = &environment_->contact_log();
 }
 
-void Scene::add_environment(Owned<collision::EnvironmentForce> effect) {
-    const collision::ContactLog* log = &effect->contact_log();
-    dynamics_.add_effect(std::move(effect));
-    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = log;
-}
-
-collision::EnvironmentForce* Scene::environment() {
-    return static_cast<collision::EnvironmentForce*>(dynamics_.find_effect(EffectId::environment));
-}
-
-collision::EnvironmentForce& Scene::environment_with(std::size_t index) const {
-    auto* env = const_cast<Scene*>(this)->environment();
-    if (env == nullptr || env->obstacle(index) == nullptr)
+void Scene::require_obstacle(std::size_t index) const {
+    if (environment_ == nullptr || environment_->obstacle(index) == nullptr)
         throw Error(ErrorCode::not_found, "obstacle " + std::to_string(index) + " does not exist (" +
                                               (index < obstacles_ ? std::string("it was removed")
                                                                   : "the scene has had " + std::to_string(obstacles_) +
                                                                         " obstacles") +
                                               ")");
-    return *env;
 }
 
-std::size_t Scene::obstacle_count() const {
-    auto* env = const_cast<Scene*>(this)->environment();
-    return env != nullptr ? env->live_count() : 0;
+collision::EnvironmentForce& Scene::environment_with(std::size_t index) {
+    require_obstacle(index);
+    return *environment_;
 }
+
+const collision::EnvironmentForce& Scene::environment_with(std::size_t index) const {
+    require_obstacle(index);
+    return *environment_;
+}
+
+std::size_t Scene::obstacle_count() const { return environment_ != nullptr ? environment_->live_count() : 0; }
 
 const collision::Obstacle& Scene::obstacle(std::size_t index) const { return *environment_with(index).obstacle(index); }
 
@@ -247,20 +242,18 @@ void Scene::remove_obstacle(std::size_t index) {
 }
 
 mechanics::RigidPose Scene::obstacle_pose(std::size_t index) const {
-    auto* env = const_cast<Scene*>(this)->environment();
-    return frames_.pose(env->frame_of(index));
+    return frames_.pose(environment_->frame_of(index));
 }
 
 void Scene::set_gravity(const Vec3& gravity) {
-    auto* effect = static_cast<GravityForce*>(dynamics_.find_effect(EffectId::gravity));
-    if (effect == nullptr) {
-        dynamics_.add_effect(make_owned<GravityForce>(memory_, model_, gravity, memory_));
+    if (gravity_ == nullptr) {
+        gravity_ = &dynamics_.add_effect(make_owned<GravityForce>(memory_, model_, gravity, memory_));
         changed_between_steps();
         return;
     }
     // Gravity bounds no stiffness: only the guard's energy reference moves (no allocation,
     // so a table may tilt a little before every step).
-    effect->set_gravity(gravity);
+    gravity_->set_gravity(gravity);
     stepper_.energy_changed();
     publish();
 }
@@ -297,10 +290,9 @@ bool Scene::unpin_point(std::size_t point) {
 }
 
 void Scene::attach_mesentery_only(std::optional<std::size_t> obstacle) {
-    auto* mesentery = static_cast<MesenteryForce*>(dynamics_.find_effect(EffectId::mesentery));
-    if (mesentery == nullptr) throw Error(ErrorCode::not_found, "the scene has no mesentery to attach");
+    if (mesentery_ == nullptr) throw Error(ErrorCode::not_found, "the scene has no mesentery to attach");
     const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : MesenteryForce::kNoFrame;
-    mesentery->attach(&frames_, frame, stepper_.state().time);
+    mesentery_->attach(&frames_, frame, stepper_.state().time);
 }
 
 void Scene::attach_mesentery(std::optional<std::size_t> obstacle) {
@@ -337,15 +329,12 @@ void Scene::changed_between_steps() {
 }
 
 std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
-    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
-    if (tools == nullptr) {
-        auto effect = make_owned<collision::ToolsForce>(memory_, collision_spheres(), collision_.contact,
-                                                        stepper_.state(), tool_channels_, memory_);
-        tools = effect.get();
-        dynamics_.add_effect(std::move(effect));
-        contact_logs_[static_cast<std::size_t>(collision::ContactKind::tool)] = &tools->contact_log();
+    if (tools_ == nullptr) {
+        tools_ = &dynamics_.add_effect(make_owned<collision::ToolsForce>(
+            memory_, collision_spheres(), collision_.contact, stepper_.state(), tool_channels_, memory_));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::tool)] = &tools_->contact_log();
     }
-    return tools->add_tool(tool);
+    return tools_->add_tool(tool);
 }
 
 std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
@@ -358,8 +347,7 @@ std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
 }
 
 void Scene::remove_tool(std::size_t index) {
-    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
-    tools->remove_tool(index);
+    tools_->remove_tool(index);
     publish();
 }
 
@@ -420,9 +408,9 @@ void Scene::publish() {
     const std::pmr::vector<collision::ToolOutput>& tools = tool_channels_.outputs();
     slot->tools.assign(tools.begin(), tools.end());  // reserved when the tools were added
     slot->obstacles.resize(obstacles_);              // reserved when the obstacles were added
-    const collision::EnvironmentForce* env = obstacles_ > 0 ? environment() : nullptr;
     for (std::size_t i = 0; i < obstacles_; ++i)
-        slot->obstacles[i] = ObstacleOutput{env->obstacle(i) != nullptr, frames_.pose(env->frame_of(i))};
+        slot->obstacles[i] =
+            ObstacleOutput{environment_->obstacle(i) != nullptr, frames_.pose(environment_->frame_of(i))};
     publish_contacts(*slot);
     published_.publish(slot);
 }

@@ -34,6 +34,14 @@
 #include "scene/snapshot.h"
 #include "scene/validate.h"
 
+namespace enteron::collision {
+class ToolsForce;
+}  // namespace enteron::collision
+namespace enteron::mechanics {
+class GravityForce;
+class MesenteryForce;
+}  // namespace enteron::mechanics
+
 namespace enteron::scene {
 
 class Scene {
@@ -128,14 +136,14 @@ private:
     // made on first use and registered with the dynamics, their time counted as the
     // `owner` of that first use.
     collision::SphereLoads& contact_loads(mechanics::EffectId owner);
-    // The environment effect, made with the first obstacle; Error(not_found) for an index
-    // with no obstacle.
-    collision::EnvironmentForce* environment();
-    collision::EnvironmentForce& environment_with(std::size_t index) const;
-    // The environment effect made (with no obstacle yet); added to the dynamics with its
-    // contact log.
-    Owned<collision::EnvironmentForce> make_effect_environment();
-    void add_environment(Owned<collision::EnvironmentForce> effect);
+    // Adds a prepared obstacle to the environment effect, making the effect (and its contact
+    // log) with the first.
+    void add_to_environment(const collision::Obstacle& prepared);
+    // Error(not_found) for an index with no obstacle (never added, or removed).
+    void require_obstacle(std::size_t index) const;
+    // The environment effect, which holds obstacle `index`, or Error(not_found).
+    collision::EnvironmentForce& environment_with(std::size_t index);
+    const collision::EnvironmentForce& environment_with(std::size_t index) const;
     // A change between steps that changed the stored energy: the guard measures it again
     // and the change is published.
     void changed_between_steps();
@@ -167,6 +175,12 @@ private:
     mechanics::RigidFrames frames_;                // obstacles' poses, followed by attachments: before dynamics_
     mechanics::Dynamics dynamics_;
     mechanics::Stepper stepper_;  // steps dynamics_ with frames_: after both
+    // The effects the changes between steps reach, as assembly added them (owned by
+    // dynamics_; null while the scene has none).
+    collision::EnvironmentForce* environment_ = nullptr;
+    collision::ToolsForce* tools_ = nullptr;
+    mechanics::GravityForce* gravity_ = nullptr;
+    mechanics::MesenteryForce* mesentery_ = nullptr;
     double rest_length_;
     double radius_;
     CollisionConfig collision_;
