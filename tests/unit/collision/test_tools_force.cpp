@@ -36,12 +36,6 @@ constexpr double kStep = 1e-3;  // s
 struct Bench {
     Bench() : axis(straight(21, 0.02)), spheres(axis.make_spheres()), channels(memory), tools(spheres, contact, axis.state, channels, memory) {}
 
-    static std::vector<double> straight(std::size_t n, double spacing) {
-        std::vector<double> q;
-        for (std::size_t i = 0; i < n; ++i) q.insert(q.end(), {spacing * double(i), 0.0, 0.0});
-        return q;
-    }
-
     // A tool along +x from x = -0.1 to 0.5 (the whole bowel under its shaft), its axis
     // `height` above the bowel's.
     static ToolConfig lying_tool(double height, double max_force) {
