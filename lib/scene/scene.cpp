@@ -263,6 +263,7 @@ void Scene::pin_point_only(std::size_t point, std::optional<std::size_t> obstacl
     if (dynamics_.pins() == nullptr)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory_, std::vector<uint32_t>{}, frames_, solver_.max_speed, memory_));
     dynamics_.pins()->pin(static_cast<uint32_t>(point), frame, stepper_.state());
+    stepper_.state_set_from_outside();  // the pin stopped the point
 }
 
 void Scene::refuse_clamped_end_point(std::size_t point, const char* change) {

@@ -107,11 +107,6 @@ public:
     // allocates nothing.
     void remove_tool(std::size_t index);
 
-    // How deep beyond an obstacle's surface the bowel may be and still start (validate.h),
-    // for an obstacle added later.
-    const StartClearance& start_clearance() const { return start_clearance_; }
-    // The control points now (x y z each, m): the driving thread only.
-    const std::pmr::vector<double>& positions() const { return stepper_.state().q; }
     std::size_t control_points() const { return model_.control_points; }
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
@@ -185,6 +180,8 @@ private:
     double radius_;
     CollisionConfig collision_;
     std::size_t obstacles_ = 0;
+    // How deep beyond an obstacle's surface the bowel may be and still start (validate.h): an
+    // obstacle added later is checked against it.
     StartClearance start_clearance_;
     SceneStats stats_;
     SnapshotPublisher& published_;

@@ -4,7 +4,8 @@
 // from exactly the step's start with twice the substeps; a step that stays unstable leaves
 // everything (the state, the integrator's history, the effects, the frames) as it was, so
 // that the next step gives the bits it would have given without it; a bad dt is refused
-// with nothing changed; a saved stepper restored into another continues to the bit.
+// with nothing changed; a state set from outside restarts a multistep integrator; a saved
+// stepper restored into another continues to the bit.
 #include "mechanics/stepper.h"
 
 #include <gtest/gtest.h>
@@ -202,6 +203,23 @@ TEST(Stepper, ABadDtIsRefusedWithNothingChanged) {
     EXPECT_TRUE(bench.log.empty()) << "no hook ran";
     EXPECT_EQ(bench.stepper.counters().steps, 1u);
     EXPECT_EQ(bench.stepper.counters().substeps, 1u);
+}
+
+// A state set from outside (a pin stopped a point) restarts bdf2: its next step is implicit
+// Euler's from that state, not an extrapolation of the motion before.
+TEST(Stepper, AStateSetFromOutsideRestartsAMultistepIntegrator) {
+    Bench restarted(IntegratorKind::bdf2), going_on(IntegratorKind::bdf2), euler(IntegratorKind::implicit_euler);
+    for (int k = 0; k < 5; ++k) {
+        ASSERT_TRUE(restarted.stepper.step(kDt));
+        ASSERT_TRUE(going_on.stepper.step(kDt));
+    }
+    euler.stepper.state().assign(restarted.stepper.state());
+    restarted.stepper.state_set_from_outside();
+    ASSERT_TRUE(restarted.stepper.step(kDt));
+    ASSERT_TRUE(going_on.stepper.step(kDt));
+    ASSERT_TRUE(euler.stepper.step(kDt));
+    EXPECT_TRUE(same_bits(restarted.stepper.state(), euler.stepper.state()));
+    EXPECT_FALSE(same_bits(going_on.stepper.state(), euler.stepper.state())) << "bdf2 goes on at second order";
 }
 
 // What the next step reads, saved and restored into a stepper of the same scene: both go on
