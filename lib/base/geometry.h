@@ -31,6 +31,9 @@ inline Vec3 normalized_or(const Vec3& a, const Vec3& fallback) {
     return n > 1e-300 ? Vec3((1.0 / n) * a) : fallback;
 }
 
+// a a^T.
+inline Mat3 outer(const Vec3& a) { return a * a.transpose(); }
+
 // Point i of a packed x y z array, read-only or writable.
 inline Eigen::Map<const Vec3> point_at(const double* xyz, std::size_t i) {
     return Eigen::Map<const Vec3>(xyz + 3 * i);

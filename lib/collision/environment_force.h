@@ -48,7 +48,7 @@ public:
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override { summary_add(summary); }
     double external_work_bound() const override;
-    bool begin_step(const mechanics::State& state, double dt) override;
+    void begin_step(double dt) override;
     void begin_attempt() override { largest_power_ = 0.0; }
     // Which obstacles were removed, their friction and the contacts of the last evaluation
     // (what it publishes): the contacts are found again from the positions and frames.

@@ -42,7 +42,7 @@ public:
     double potential_energy(const State& state) const override;
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
     double external_work_bound() const override { return 2.0 * largest_power_ * step_dt_; }
-    bool begin_step(const State& state, double dt) override;
+    void begin_step(double dt) override;
     void begin_attempt() override { largest_power_ = 0.0; }
 
     // Between steps: the root follows frame `frame` of `frames` (outliving this) from where

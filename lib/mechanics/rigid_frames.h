@@ -68,7 +68,7 @@ public:
     // Where the frame rests between steps (where the last accepted step left it).
     const RigidPose& pose(std::size_t frame) const { return frames_[frame].current; }
 
-    // Step hooks (Scene::step): the step of dt seconds starting at time t0, then whether it
+    // Step hooks (Stepper::step, stepper.h): the step of dt seconds starting at time t0, then whether it
     // was accepted (the frames rest at their targets) or not (they stay, targets kept).
     void begin_step(double t0, double dt);
     void end_step(bool accepted);
