@@ -60,7 +60,7 @@ edit include/enteron/enteron.h \
     '^(    double time_s; +/\*\*< simulated time\. \*/\n)' \
     '\1#if ENTERON_ABI_VARIANT == 2 /* inserted_field */\n    double inserted_by_abi_test;\n#endif\n'
 edit include/enteron/enteron.h \
-    '^(    double length_m; +/\*\*< rest length of the axis[^\n]*\n)' \
+    '^(    double length_m; +/\*\*< rest length of the axis.*?\*/\n)' \
     '\1#if ENTERON_ABI_VARIANT == 2 /* inserted_field */\n    double inserted_by_abi_test;\n#endif\n'
 edit include/enteron/enteron.h \
     '^(    uint64_t last_step_ns; [^\n]*\n)' \
