@@ -173,7 +173,8 @@ ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_
 
 ENT_API ent_status ent_scene_read_desc(const ent_scene* scene, ent_scene_desc* out) {
     return enteron::capi::guarded([&] {
-        const enteron::capi::SceneHandle& handle = enteron::capi::live_handle(scene);
+        const enteron::capi::SceneCall call(scene);
+        const enteron::capi::SceneHandle& handle = call.handle();
         enteron::capi::require(out, "out");
         enteron::capi::check_scene_desc_size(out->struct_size);
         ent_scene_desc desc = handle.description;

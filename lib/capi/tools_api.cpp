@@ -110,7 +110,8 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
 
 ENT_API ent_status ent_tool_read_desc(const ent_scene* scene, int32_t tool, ent_tool_desc* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const enteron::capi::SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
         const enteron::collision::ToolChannels& channels = handle.scene->tool_channels();

@@ -114,7 +114,7 @@ TEST(PinnedPoints, AnAttachedPointFollowsItsFrameAtBoundedSpeed) {
     EXPECT_NEAR(velocity.norm(), pins.speed_limit(), 1e-12);
     EXPECT_GT(velocity.y(), 0.99 * velocity.norm());
     // The work bound: twice the largest power of the pinned rows' forces, times the step.
-    pins.begin_step(state, dt);
+    pins.begin_step(dt);
     pins.begin_attempt();
     std::vector<double> force(3 * kPoints, 0.0);
     point_at(force.data(), 1) = Vec3(0.0, 0.0, 4.0);  // 4 N on the attached point
