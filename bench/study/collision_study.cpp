@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collision accuracy: how deep the bowel sinks into the cavity walls and into itself in
 // the dense pile, against the collision sphere spacing (R/4 to R) and the contact
 // stiffness, with the cost of a 1 ms step.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mechanics accuracy: the error of the axis against a converged reference, for each knob
 // (control points N, integrator, time step), with the cost of a 1 kHz step.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared pieces of the accuracy study (bench/study): options, scenes from JSON through the
 // public C API, stepping with per-step timing, axis sampling and CSV output.
 // Like a simulator vendor, the study uses nothing but include/enteron/enteron.h.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The accuracy study: what each accuracy knob of Enteron buys and what it costs in time.
 // Writes CSV files into --out; bench/study/report.py turns them into plots, a markdown
 // table and checks. scripts/study builds and runs both.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenes shared by the collision, skin and effect parts of the study.
 #pragma once
 

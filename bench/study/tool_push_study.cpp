@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collision accuracy at the tool: a grasper presses a bowel lying on the floor and slides
 // along it, against the collision sphere spacing and the contact stiffness.
 // The tool is a direct capsule (JSON "mode": "direct"): the bowel meets it where it is put,

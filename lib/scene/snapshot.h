@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The published state of a scene: an immutable copy made after each step, read by any
 // number of threads (queries, skins, the LCM bridge) while the stepping thread goes on.
 //
@@ -41,13 +42,13 @@ struct SceneStats {
     uint64_t last_step_ns = 0;
     double rest_length = 0.0;  // m, of the axis (constant)
     // What the last step did (every attempt) and the slow paths so far (ent_stats): the
-    // scene's run, not its state (a restore leaves them).
+    // stepper's counts (mechanics::StepCounters) and the effects' (Effect::add_work).
     uint32_t last_step_attempts = 0;
     uint32_t last_step_substeps = 0;
     uint64_t max_step_ns = 0;
     uint64_t late_steps = 0;        // wall time over the dt they simulated
     uint64_t subdivided_steps = 0;  // accepted after more than one attempt
-    mechanics::StepWork work;       // the effects' counts (effect.h)
+    mechanics::StepWork work;
 };
 
 // The contacts of the last evaluation, as the scene published them.

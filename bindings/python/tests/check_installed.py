@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Installs the build into a staging prefix (cmake --install) and imports the installed
 package from a clean interpreter, with neither ENTERON_LIBRARY nor the source tree in
 sight: it must load the installed library found next to the package.
