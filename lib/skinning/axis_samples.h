@@ -54,6 +54,7 @@ public:
     // of curvature), 1/m; the phantoms' that of their end. Only if built with
     // Curvature::compute.
     const Vec3& curvature(std::size_t i) const { return curvature_[i]; }
+    bool has_curvature() const { return !position_.empty() && curvature_.size() == position_.size(); }
 
 private:
     // Positions and tangents of the real samples k = 0 .. intervals_, at arc_length_of(k).

@@ -82,7 +82,8 @@ void ConvolutionSkin::rebuild() {
     evaluations_ = 0;
     const double length = table_.total_length();
     skeleton_.build(table_, points_.data(), axis_count(), AxisSamples::intervals_for(length, settings_.skeleton_spacing),
-                    settings_.window + settings_.skeleton_spacing, AxisSamples::Curvature::skip);
+                    settings_.window + settings_.skeleton_spacing,
+                    settings_.contact_surfaces ? AxisSamples::Curvature::compute : AxisSamples::Curvature::skip);
     const std::size_t even_intervals = ring_intervals(length);
     if (settings_.ring_chord_error > 0.0) {
         // Levels of detail: rings closer where the axis bends (ring_placement.h), their
@@ -129,13 +130,21 @@ void ConvolutionSkin::rebuild() {
         std::fill(radius_.begin(), radius_.end(), R);
     }
 
+    // The other folds, on the skeleton's polyline, for rays reaching up to 1.5 R.
+    if (settings_.contact_surfaces) folds_.build(skeleton_, R, 1.5 * R);
+    resize_buffer(deformed_, n * S);
+    touching_rings_ = 0;
+    RingContacts::Ring ring;
+    ring.tube = 0;
+    ring.radius = R;
+    ring.rays = S;
+    ring.cosine = grid_.cosines();
+    ring.sine = grid_.sines();
     for (std::size_t k = 0; k < n; ++k) {
         const double s = rings_.arc_length(k);
         gather_window(s);
         const Vec3 centre = rings_.position(k);
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
-        const auto u = float(u_[k]);
-        const std::size_t row = grid_.body_row(k);
         // The bend of the axis here, for the iso-value of each ray (bend_calibration.h).
         const Vec3 bend = rings_.curvature(k);
         const double curvature = bend.norm();
@@ -149,15 +158,31 @@ void ConvolutionSkin::rebuild() {
             const double c = -(grid_.cosine(j) * bend_n + grid_.sine(j) * bend_b);
             double unused = 0.0;
             const double iso = iso_ / BendCalibration::scale(bend_row, c, &unused);
-            const double r = solve_ray(centre, direction, radius_[k * S + j], iso);
-            radius_[k * S + j] = r;
+            radius_[k * S + j] = solve_ray(centre, direction, radius_[k * S + j], iso);
+        }
+        // Contacts and the neighbouring rings.
+        ring.centre = centre;
+        ring.normal = nrm;
+        ring.binormal = bin;
+        ring.tangent = rings_.tangent(k);
+        ring.curvature = bend;
+        ring.arc_length = s;
+        ring.previous_centre = k > 0 ? &rings_.position(k - 1) : nullptr;
+        ring.next_centre = k + 1 < n ? &rings_.position(k + 1) : nullptr;
+        if (contacts_.deform(folds_, ring, &radius_[k * S], &deformed_[k * S]).touched) ++touching_rings_;
+        const auto u = float(u_[k]);
+        const std::size_t row = grid_.body_row(k);
+        for (std::size_t j = 0; j < S; ++j) {
+            const Vec3 direction = grid_.cosine(j) * nrm + grid_.sine(j) * bin;
             const std::size_t v = grid_.vertex(row, j);
-            store_vec3(mesh_.positions, v, centre + r * direction);
+            store_vec3(mesh_.positions, v, centre + deformed_[k * S + j] * direction);
             mesh_.u[v] = u;
         }
     }
 
-    // Caps: hemispheres scaled, angle by angle, to the end ring's solved radius.
+    // Caps: hemispheres scaled, angle by angle, to the end ring's radius, cut to contacts.
+    resize_buffer(cap_free_, S);
+    resize_buffer(cap_deformed_, S);
     for (std::size_t row = 0; row < grid_.rows(); ++row) {
         const bool first = row <= grid_.cap_rings();
         if (!first && row < grid_.body_row(n - 1) + 1) continue;
@@ -167,7 +192,7 @@ void ConvolutionSkin::rebuild() {
         const float u = first ? 0.0f : 1.0f;
         if (row == 0 || row + 1 == grid_.rows()) {
             double mean = 0.0;
-            for (std::size_t j = 0; j < S; ++j) mean += radius_[k * S + j];
+            for (std::size_t j = 0; j < S; ++j) mean += deformed_[k * S + j];
             mean /= double(S);
             const std::size_t v = grid_.vertex(row, 0);
             store_vec3(mesh_.positions, v, centre + (first ? -mean : mean) * t);
@@ -175,10 +200,22 @@ void ConvolutionSkin::rebuild() {
             continue;
         }
         const double phi = grid_.cap_angle(row);
+        ring.centre = centre;
+        ring.normal = nrm;
+        ring.binormal = bin;
+        ring.tangent = t;
+        ring.arc_length = rings_.arc_length(k);
+        ring.tilt = phi;
+        ring.keep_area = false;
+        ring.previous_centre = ring.next_centre = nullptr;
+        std::copy_n(&deformed_[k * S], S, cap_free_.begin());
+        contacts_.deform(folds_, ring, cap_free_.data(), cap_deformed_.data());
+        ring.tilt = 0.0;
+        ring.keep_area = true;
         for (std::size_t j = 0; j < S; ++j) {
             const Vec3 direction = std::cos(phi) * (grid_.cosine(j) * nrm + grid_.sine(j) * bin) + std::sin(phi) * t;
             const std::size_t v = grid_.vertex(row, j);
-            store_vec3(mesh_.positions, v, centre + radius_[k * S + j] * direction);
+            store_vec3(mesh_.positions, v, centre + cap_deformed_[j] * direction);
             mesh_.u[v] = u;
         }
     }

@@ -15,12 +15,20 @@
 // at distance R, so a straight tube has radius exactly R. The level of detail is the number
 // of segments around and the ring spacing: even, or (with a chord-error tolerance) closer
 // where the axis bends, from ring_spacing on straight parts (ring_placement.h).
+//
+// Contacts: each ring's free radii (the solved rays, kept for the next frame's warm start)
+// are then cut to the contact surfaces of the other folds, bulged to keep the ring's
+// cross-section and kept short of the neighbouring rings (ring_contacts.h); the caps' rows
+// are cut to the contacts too (no bulge). Without contact surfaces only the fold-over
+// limits apply.
 #pragma once
 
 #include <vector>
 
 #include "skinning/axis_samples.h"
 #include "skinning/bend_calibration.h"
+#include "skinning/fold_contacts.h"
+#include "skinning/ring_contacts.h"
 #include "skinning/ring_grid.h"
 #include "skinning/ring_placement.h"
 #include "skinning/rotation_minimizing_frames.h"
@@ -36,6 +44,8 @@ public:
     double iso_value() const { return iso_; }
     // Total field evaluations of the last update (for the benchmark's cost counters).
     std::size_t last_field_evaluations() const { return evaluations_; }
+    // Rings of the last update cut to a contact surface.
+    std::size_t last_touching_rings() const { return touching_rings_; }
 
 private:
     void rebuild() override;
@@ -53,7 +63,12 @@ private:
     RingGrid grid_;
     std::vector<Vec3> window_;               // segment end points, pairs
     RingPlacement placement_;
-    std::vector<double> radius_, previous_;  // solved ray length per (body ring, segment)
+    std::vector<double> radius_, previous_;  // solved (free) ray length per (body ring, segment)
+    std::vector<double> deformed_;           // after the contacts and fold-over limits, per (body ring, segment)
+    std::vector<double> cap_free_, cap_deformed_;  // one cap row's rays
+    FoldContacts folds_;
+    RingContacts contacts_;
+    std::size_t touching_rings_ = 0;
     std::vector<double> u_, previous_u_;     // arc length / length of each body ring
     std::size_t evaluations_ = 0;
 };

@@ -45,11 +45,6 @@ int32_t ceil_int(double x) {
 
 float lane_sum(float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
-Vec3 any_perpendicular(Vec3 t) {
-    const Vec3 axis = std::fabs(t.x()) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    return normalized_or(t.cross(axis), Vec3{0, 0, 1});
-}
-
 }  // namespace
 
 PointSkeletonSkin::PointSkeletonSkin(const SkinSettings& settings) : Skin(settings) {

@@ -21,6 +21,9 @@ struct SkinSettings {
     // Tube, convolution: keep the vertex count and the triangle indices while the axis moves
     // (skin.h). Point_skeleton: ignored (its topology follows the surface).
     bool stable_topology = true;
+    // Folds that touch meet on contact surfaces, with a bulge that keeps the volume
+    // (contact_profile.h); false: their surfaces pass through each other.
+    bool contact_surfaces = true;
 };
 
 }  // namespace enteron::skinning
