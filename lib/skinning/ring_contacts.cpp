@@ -34,7 +34,7 @@ bool RingContacts::measure_levels(const FoldContacts& folds, const Ring& ring, c
     const std::size_t n = ring.rays;
     const double spacing = 2.0 * t_max * std::sin(kPi / double(n));
     assign_buffer(level_, n, 1e30);
-    resize_buffer(gradient_, n);
+    assign_buffer(gradient_, n, Vec3(Vec3::Zero()));
     bool any = false;
     for (std::size_t a = 0; a < folds_; ++a) {
         const double radius = folds.radius(anchors_[a]), delta = spacing / radius;
@@ -86,6 +86,7 @@ RingContacts::Result RingContacts::deform(const FoldContacts& folds, const Ring&
         free_[j] = free[j];
     }
     // 1. The other folds near the ring, and their level on each ray at its free radius.
+    measured_ = false;
     folds_ = folds.empty() ? 0 : folds.near(ring.centre, ring.tube, ring.arc_length, anchors_, kMaxFolds);
     if (folds_ == 0) {
         for (std::size_t j = 0; j < n; ++j) out[j] = limited(j, free[j]);
@@ -97,11 +98,12 @@ RingContacts::Result RingContacts::deform(const FoldContacts& folds, const Ring&
     double t_max = 0.0;
     for (std::size_t j = 0; j < n; ++j) t_max = std::max(t_max, free[j]);
     const double touching = t_max / ring.radius, farthest = (1.0 + kMaxBulgeReach) * touching;
-    if (!measure_levels(folds, ring, free, t_max, touching)) {
+    if (!measure_levels(folds, ring, free, t_max, touching) && !ring.measure_all) {
         for (std::size_t j = 0; j < n; ++j) out[j] = limited(j, free[j]);
         return result;
     }
     measure_levels(folds, ring, free, t_max, farthest);
+    measured_ = true;
     resize_buffer(rays_, n);
     resize_buffer(cut_, n);
     for (std::size_t j = 0; j < n; ++j) {

@@ -53,6 +53,7 @@ public:
         std::size_t rays = 0;
         double tilt = 0.0;               // end caps: the rays' angle towards the tangent, rad
         bool keep_area = true;           // bulge to keep the cross-section (body rings)
+        bool measure_all = false;        // measure the folds' level on every ray they may bulge, touching or not
         // Centres of the neighbouring rings (fold-over limits), or null at an end.
         const Vec3* previous_centre = nullptr;
         const Vec3* next_centre = nullptr;
@@ -68,6 +69,14 @@ public:
     // Deforms the ring: free[j] is ray j's free radius t0 (m), out[j] receives its radius.
     // With no folds (folds empty) only the fold-over limits apply.
     Result deform(const FoldContacts& folds, const Ring& ring, const double* free, double* out);
+
+    // After deform: the nearest fold's level o at ray j's free point, and its gradient (1/m);
+    // at least (1 + kMaxBulgeReach) t_max / R_A (with a zero gradient) where no fold may
+    // bring it lower or it was not measured (a ring that touches nothing, without
+    // measure_all).
+    double level(std::size_t j) const { return measured_ ? level_[j] : 1e30; }
+    const Vec3& gradient(std::size_t j) const { return gradient_[j]; }
+    const Vec3& direction(std::size_t j) const { return direction_[j]; }
 
 private:
     // The level of the nearest other fold at p as seen from free radius t0 (x of
@@ -86,6 +95,7 @@ private:
 
     FoldContacts::Anchor anchors_[kMaxFolds];
     std::size_t folds_ = 0;
+    bool measured_ = false;  // level_ and gradient_ hold the last ring's
     std::vector<Vec3> direction_;
     std::vector<double> wedge_;     // per ray: half the sine of the angle to the next ray
     std::vector<double> bend_;      // per ray: k . d_j
