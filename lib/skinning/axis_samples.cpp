@@ -38,6 +38,28 @@ Vec3 AxisSamples::curvature_vector(const double* points_xyz, std::size_t count, 
     return speed2 > 0.0 ? Vec3((1.0 / speed2) * (dd - dd.dot(t) * t)) : Vec3::Zero();
 }
 
+Vec3 AxisSamples::tangent_at(double s) const {
+    const std::size_t last = position_.size() - 1;
+    std::size_t i = 0;
+    if (arc_.empty()) {
+        i = std::size_t(std::clamp(std::floor(s / spacing_ + double(phantoms_)), 0.0, double(last - 1)));
+    } else {
+        i = std::size_t(std::upper_bound(arc_.begin(), arc_.end(), s) - arc_.begin());
+        i = std::clamp<std::size_t>(i, 1, last) - 1;
+    }
+    const double span = arc_length(i + 1) - arc_length(i);
+    const double w = span > 0.0 ? std::clamp((s - arc_length(i)) / span, 0.0, 1.0) : 0.0;
+    return normalized_or((1.0 - w) * tangent_[i] + w * tangent_[i + 1], tangent_[i]);
+}
+
+Vec3 AxisSamples::mean_bend(double s, double half) const {
+    const Vec3 turn = tangent_at(s + half) - tangent_at(s - half);
+    const double chord = turn.norm();
+    if (!(chord > 0.0) || !(half > 0.0)) return Vec3::Zero();
+    const double angle = 2.0 * std::asin(std::min(1.0, 0.5 * chord));
+    return (angle / (2.0 * half * chord)) * turn;
+}
+
 std::size_t AxisSamples::intervals_for(double length, double spacing) {
     return std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(length / spacing)));
 }

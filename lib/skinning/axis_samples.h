@@ -56,6 +56,16 @@ public:
     const Vec3& curvature(std::size_t i) const { return curvature_[i]; }
     bool has_curvature() const { return !position_.empty() && curvature_.size() == position_.size(); }
 
+    // The unit tangent at arc length s (interpolated between samples, normalised), and the
+    // mean bend of the axis over [s - half, s + half]: its turning angle over 2 half, in
+    // the direction of t(s + half) - t(s - half), 1/m. Exact on an arc (the turning angle
+    // from the chord of the tangents, 2 asin(|dt| / 2)); the mean curvature elsewhere.
+    // Unlike the curvature at a point, it is continuous in s where the spline's curvature
+    // jumps (at its control points, C1 but not C2): a ring sliding across one sees the
+    // bend change gradually. (s +- half within the samples, phantoms included.)
+    Vec3 tangent_at(double s) const;
+    Vec3 mean_bend(double s, double half) const;
+
 private:
     // Positions and tangents of the real samples k = 0 .. intervals_, at arc_length_of(k).
     template <typename ArcLengthOf>

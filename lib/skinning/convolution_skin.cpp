@@ -93,9 +93,9 @@ void ConvolutionSkin::rebuild() {
         rings_.build_at(table_, points_.data(), axis_count(),
                         placement_.place(skeleton_, R, settings_.ring_spacing, min_spacing, settings_.ring_chord_error,
                                          level_step),
-                        AxisSamples::Curvature::compute);
+                        AxisSamples::Curvature::skip);
     } else {
-        rings_.build(table_, points_.data(), axis_count(), even_intervals, 0.0, AxisSamples::Curvature::compute);
+        rings_.build(table_, points_.data(), axis_count(), even_intervals, 0.0, AxisSamples::Curvature::skip);
     }
     const std::size_t n = rings_.size();
     frames_.build(&rings_.position(0), &rings_.tangent(0), n);
@@ -140,13 +140,16 @@ void ConvolutionSkin::rebuild() {
     ring.rays = S;
     ring.cosine = grid_.cosines();
     ring.sine = grid_.sines();
+    // The free rays of every ring.
     for (std::size_t k = 0; k < n; ++k) {
         const double s = rings_.arc_length(k);
         gather_window(s);
         const Vec3 centre = rings_.position(k);
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
-        // The bend of the axis here, for the iso-value of each ray (bend_calibration.h).
-        const Vec3 bend = rings_.curvature(k);
+        // The bend of the axis here, for the iso-value of each ray (bend_calibration.h): its
+        // mean over the window, which changes gradually as rings slide along the axis (the
+        // spline's curvature at a point jumps at its control points).
+        const Vec3 bend = skeleton_.mean_bend(s, settings_.window);
         const double curvature = bend.norm();
         const BendCalibration::Row bend_row = bend_.row(curvature);
         const double inverse_curvature = curvature > 0.0 ? 1.0 / curvature : 0.0;
@@ -160,13 +163,17 @@ void ConvolutionSkin::rebuild() {
             const double iso = iso_ / BendCalibration::scale(bend_row, c, &unused);
             radius_[k * S + j] = solve_ray(centre, direction, radius_[k * S + j], iso);
         }
-        // Contacts and the neighbouring rings.
+    }
+    // Contacts and the neighbouring rings.
+    for (std::size_t k = 0; k < n; ++k) {
+        const Vec3 centre = rings_.position(k);
+        const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
         ring.centre = centre;
         ring.normal = nrm;
         ring.binormal = bin;
         ring.tangent = rings_.tangent(k);
-        ring.curvature = bend;
-        ring.arc_length = s;
+        ring.arc_length = rings_.arc_length(k);
+        ring.curvature = skeleton_.mean_bend(ring.arc_length, settings_.window);
         ring.previous_centre = k > 0 ? &rings_.position(k - 1) : nullptr;
         ring.next_centre = k + 1 < n ? &rings_.position(k + 1) : nullptr;
         if (contacts_.deform(folds_, ring, &radius_[k * S], &deformed_[k * S]).touched) ++touching_rings_;

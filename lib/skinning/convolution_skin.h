@@ -16,10 +16,10 @@
 // of segments around and the ring spacing: even, or (with a chord-error tolerance) closer
 // where the axis bends, from ring_spacing on straight parts (ring_placement.h).
 //
-// Contacts: each ring's free radii (the solved rays, kept for the next frame's warm start)
-// are then cut to the contact surfaces of the other folds, bulged to keep the ring's
-// cross-section and kept short of the neighbouring rings (ring_contacts.h); the caps' rows
-// are cut to the contacts too (no bulge). Without contact surfaces only the fold-over
+// Contacts: once every ring's free radii are solved (the rays, kept for the next frame's
+// warm start), each ring is cut to the contact surfaces of the other folds, bulged to keep
+// its cross-section and kept short of the neighbouring rings (ring_contacts.h); the caps'
+// rows are cut to the contacts too (no bulge). Without contact surfaces only the fold-over
 // limits apply.
 #pragma once
 

@@ -111,7 +111,9 @@ void PointSkeletonSkin::load_skeleton() {
     resize_buffer(bend_axes_, n);
     const double R = settings_.radius;
     for (std::size_t j = 0; j < n; ++j) {
-        const Vec3& bend = skeleton_.curvature(j);
+        // The mean bend over the window: gradual as the points slide along the axis (the
+        // spline's curvature at a point jumps at its control points).
+        const Vec3 bend = skeleton_.mean_bend(skeleton_.arc_length(j), settings_.window);
         const double curvature = bend.norm();
         bend_rows_[j] = bend_.row(curvature);
         bend_axes_[j] = curvature > 0.0 ? Vec3((1.0 / (curvature * R)) * bend) : Vec3::Zero();
@@ -270,8 +272,8 @@ void PointSkeletonSkin::prepare_contacts() {
         ring.normal = frames_.normal(k);
         ring.binormal = frames_.binormal(k);
         ring.tangent = skeleton_.tangent(k);
-        ring.curvature = skeleton_.curvature(k);
         ring.arc_length = skeleton_.arc_length(k);
+        ring.curvature = skeleton_.mean_bend(ring.arc_length, settings_.window);
         bulge_reach_[m] = contacts_.deform(folds_, ring, free, out).bulge_reach;
         for (std::size_t j = 0; j < kContactRays; ++j) {
             ContactRaySample& sample = contact_rays_[m * kContactRays + j];
@@ -458,8 +460,6 @@ void PointSkeletonSkin::project_vertices() {
     const std::size_t first = skeleton_.phantoms(), last = first + skeleton_.intervals();
     const double last_step2 = kLastStep * R * kLastStep * R;
     std::size_t evaluations = 0;
-    // Where marching cubes put the vertices: untangle_creases() may move some back.
-    lattice_positions_.assign(mesh_.positions.begin(), mesh_.positions.end());
     for (std::size_t i = 0; i < seeds_.size(); ++i) {
         Vec3 p{mesh_.positions[3 * i], mesh_.positions[3 * i + 1], mesh_.positions[3 * i + 2]};
         double d2 = 0.0;
@@ -487,6 +487,7 @@ void PointSkeletonSkin::project_vertices() {
             k = nearest_from(p, k, &d2);
             if (step2 < last_step2) break;
         }
+
         const Vec3 n = normalized_or(-1.0 * g, Vec3{0, 0, 1});
         // u: project p on the axis polyline next to its nearest skeleton point, the foot
         // w of the way from point a to a + 1.
@@ -520,39 +521,6 @@ void PointSkeletonSkin::project_vertices() {
         mesh_.v[i] = float(turns_around(p - foot, frame_normal, frame_binormal));
     }
     evaluations_ += evaluations;
-    untangle_creases();
-}
-
-void PointSkeletonSkin::untangle_creases() {
-    // Where two folds meet, marching cubes samples the crease between them (the field
-    // switches from one fold's window to the other's), and the corners of a triangle there
-    // may project onto different folds' surfaces and pass each other: the triangle turns
-    // to face against its corners' normals. Its corners go back to where marching cubes put
-    // them, on the lattice edges; again, a few times, since a corner put back may turn a
-    // neighbour. Only turned triangles are touched: none on a smooth surface. (Some
-    // remain: cells that a crease cuts near a corner, whose lattice triangles turn too;
-    // docs/skinning.md.)
-    const auto at = [&](const std::vector<float>& buffer, uint32_t i) {
-        return Vec3{buffer[3 * i], buffer[3 * i + 1], buffer[3 * i + 2]};
-    };
-    const auto turned = [&](std::size_t t) {
-        const uint32_t* c = &mesh_.indices[3 * t];
-        const Vec3 a = at(mesh_.positions, c[0]), b = at(mesh_.positions, c[1]), d = at(mesh_.positions, c[2]);
-        const Vec3 facing = at(mesh_.normals, c[0]) + at(mesh_.normals, c[1]) + at(mesh_.normals, c[2]);
-        return (b - a).cross(d - a).dot(facing) < 0.0;
-    };
-    for (int pass = 0; pass < 4; ++pass) {
-        reserve_with_headroom(turned_, std::size_t{64});
-        turned_.clear();
-        for (std::size_t t = 0; t < mesh_.triangle_count(); ++t)
-            if (turned(t)) turned_.push_back(uint32_t(t));
-        if (turned_.empty()) return;
-        for (uint32_t t : turned_)
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t v = mesh_.indices[3 * std::size_t(t) + std::size_t(k)];
-                std::copy_n(&lattice_positions_[3 * v], 3, &mesh_.positions[3 * v]);
-            }
-    }
 }
 
 void PointSkeletonSkin::rebuild() {

@@ -89,8 +89,6 @@ private:
     void splat();
     void evaluate_band();
     void project_vertices();
-    // Moves the corners of triangles turned against their normals back onto the lattice.
-    void untangle_creases();
 
     double iso_ = 0.0;
     BendCalibration bend_;
@@ -111,8 +109,6 @@ private:
     SparseVoxelGrid grid_;
     MarchingCubes cubes_;
     std::vector<int32_t> seeds_;  // per vertex: nearest skeleton point of its edge's inside corner
-    std::vector<float> lattice_positions_;  // the vertices where marching cubes put them
-    std::vector<uint32_t> turned_;          // untangle_creases: triangles turned against their normals
 
     // Contacts (empty without contact surfaces).
     static constexpr std::size_t kContactRays = 16;

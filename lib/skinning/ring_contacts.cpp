@@ -165,7 +165,7 @@ RingContacts::Result RingContacts::deform(const FoldContacts& folds, const Ring&
                 }
             }
             result.bulge_reach = w;
-            result.short_area = std::max(0.0, -excess(w));
+            if (!(f_hi > 0.0)) result.short_area = std::max(0.0, -excess(w));  // even the largest bulge falls short
             std::copy(trial_.begin(), trial_.end(), cut_.begin());
         }
     }
