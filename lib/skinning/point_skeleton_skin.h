@@ -57,6 +57,7 @@ public:
     double iso_value() const { return iso_; }
     // Marching cubes make new triangles every update, whatever the settings.
     bool stable_topology() const override { return false; }
+    bool rebuilds_whole_mesh() const override { return true; }
     std::size_t skeleton_points() const { return skeleton_.intervals() + 1; }
     std::size_t band_blocks() const { return grid_.block_count(); }
     std::size_t cells_visited() const { return cubes_.cells_visited(); }

@@ -15,8 +15,8 @@ void Skin::keep_previous() {
     // The table refers to its points' buffer: both move together.
     points_.swap(previous_points_);
     std::swap(table_, previous_table_);
-    if (!stable_topology()) {
-        std::swap(mesh_, previous_mesh_);  // rebuilt whole every update
+    if (rebuilds_whole_mesh()) {
+        std::swap(mesh_, previous_mesh_);
         return;
     }
     previous_mesh_.positions.assign(mesh_.positions.begin(), mesh_.positions.end());

@@ -42,15 +42,19 @@ public:
     uint64_t topology_changes() const { return topology_changes_; }
     // Whether this skin keeps its topology while the axis moves (see above).
     virtual bool stable_topology() const { return settings_.stable_topology; }
+    // Whether every update rebuilds every buffer of the mesh, indices included (marching
+    // cubes); the ring skins rewrite the positions every update and the rest with the
+    // topology.
+    virtual bool rebuilds_whole_mesh() const { return false; }
     // The axis of the last update.
     const double* axis_points() const { return points_.data(); }
     std::size_t axis_count() const { return points_.size() / 3; }
     const spline::ArcLengthTable& arc_length() const { return table_; }
 
     // The update before the last (for the motion metrics), once there were two: its mesh
-    // (positions always; indices and u as they were) and its axis. With stable topology
-    // only the positions are copied each update (the indices and u when they change); a
-    // skin whose topology changes every update keeps the whole mesh by swapping buffers.
+    // (positions always; indices and u as they were) and its axis. The ring skins copy
+    // only the positions each update (the indices and u when they change); a skin that
+    // rebuilds its whole mesh every update keeps the old one by swapping buffers.
     bool has_previous() const { return has_previous_; }
     const Mesh& previous_mesh() const { return previous_mesh_; }
     const double* previous_axis_points() const { return previous_points_.data(); }
