@@ -1153,10 +1153,11 @@ typedef struct ent_skin_desc {
      *  over at bends tighter than R, whatever this says. Added after stable_topology: a caller built against an
      *  older, smaller ent_skin_desc gets 1. */
     int32_t contact_surfaces;
-    /** point_skeleton, convolution: 0 (default) places the skeleton points / segment ends evenly,
-     *  skeleton_spacing_radii apart. Above 0 (in R, up to 0.1) they follow the axis' curvature: closer where it
-     *  bends, so that the polyline departs from the axis by at most this (its chord's sag), from
-     *  skeleton_spacing_radii on straight parts down to an eighth of it. Added with contact_surfaces: an older,
+    /** convolution: 0 (default) places the segment ends evenly, skeleton_spacing_radii apart. Above 0 (in R, up to
+     *  0.1) they follow the axis' curvature: closer where it bends, so that the polyline departs from the axis by
+     *  at most this (its chords' sag), from skeleton_spacing_radii on straight parts down to an eighth of it (e.g.
+     *  skeleton_spacing_radii 1 with 0.005: on a gently folded bowel the accuracy of even R / 4 for less time;
+     *  docs/skinning.md). point_skeleton: ignored (its points stay even). Added with contact_surfaces: an older,
      *  smaller ent_skin_desc gets 0. */
     double skeleton_chord_error_radii;
 } ent_skin_desc;

@@ -27,10 +27,11 @@ public:
     // The intervals whose step is closest to `spacing` along `length` (both m), at least 1.
     static std::size_t intervals_for(double length, double spacing);
 
-    // Samples the spline at the given arc lengths (increasing, from 0 to the total length;
-    // no phantoms), e.g. rings placed closer where the axis bends (ring_placement.h).
+    // Samples the spline at the given arc lengths (increasing, from 0 to the total length),
+    // e.g. rings or skeleton points placed closer where the axis bends (ring_placement.h),
+    // with phantoms over `extension` beyond each end at that end's own spacing.
     void build_at(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                  const std::vector<double>& arc_lengths, Curvature curvature);
+                  const std::vector<double>& arc_lengths, Curvature curvature, double extension = 0.0);
 
     std::size_t size() const { return position_.size(); }  // all samples, phantoms included
     std::size_t phantoms() const { return phantoms_; }        // phantom samples before (and after) the axis
@@ -72,6 +73,9 @@ private:
     void sample(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
                 ArcLengthOf arc_length_of, Curvature curvature);
 
+    // The phantoms beyond each end (phantoms_ of them), at each end's spacing.
+    void extend_ends(const double* points_xyz, std::size_t count, double first_spacing, double last_spacing,
+                     Curvature curvature);
     // dt/ds of the spline at parameter s, from its first derivative d there and t = d / |d|.
     static Vec3 curvature_vector(const double* points_xyz, std::size_t count, double s, const Vec3& d,
                                  const Vec3& t);
@@ -79,7 +83,7 @@ private:
     std::vector<Vec3> position_;
     std::vector<Vec3> tangent_;
     std::vector<Vec3> curvature_;
-    std::vector<double> arc_;  // arc length of each sample when uneven (build_at), else empty
+    std::vector<double> arc_;  // arc length of each sample (phantoms included) when uneven (build_at), else empty
     std::size_t phantoms_ = 0;
     std::size_t intervals_ = 0;
     double spacing_ = 0.0;

@@ -8,12 +8,27 @@
 
 namespace enteron::skinning {
 
+namespace {
+
+// Skeleton points follow the curvature down to this fraction of skeleton_spacing.
+constexpr double kFinestSkeleton = 1.0 / 8.0;
+
+}  // namespace
+
+double ConvolutionSkin::skeleton_spacing_for(double curvature) const {
+    const double h = settings_.skeleton_spacing;
+    if (!(settings_.skeleton_chord_error > 0.0)) return h;
+    return RingPlacement::spacing_for(curvature, 0.0, settings_.skeleton_chord_error, kFinestSkeleton * h, h);
+}
+
 ConvolutionSkin::ConvolutionSkin(const SkinSettings& settings) : Skin(settings) {
     // Calibration: the windowed field of a skeleton (chords of the skeleton spacing along an
-    // arc of curvature k, clipped to [-D, D]) at distance R from it, in direction c.
-    const double D = settings_.window, h = settings_.skeleton_spacing, R = settings_.radius;
-    const auto pieces = static_cast<std::size_t>(std::ceil(2.0 * D / h));
+    // arc of curvature k, clipped to [-D, D]; with a curvature-following skeleton, the
+    // spacing it takes on that arc) at distance R from it, in direction c.
+    const double D = settings_.window, R = settings_.radius;
     auto window_field = [&](double k, double c) {
+        const double h = skeleton_spacing_for(k);
+        const auto pieces = static_cast<std::size_t>(std::ceil(2.0 * D / h));
         const Vec3 p = BendCalibration::point_off_arc(R, c);
         double sum = 0.0;
         for (std::size_t i = 0; i < pieces; ++i) {
@@ -27,17 +42,28 @@ ConvolutionSkin::ConvolutionSkin(const SkinSettings& settings) : Skin(settings) 
 }
 
 void ConvolutionSkin::gather_window(double s) {
-    const double D = settings_.window, h = skeleton_.spacing();
-    const double e = double(skeleton_.phantoms());
-    const double last = double(skeleton_.size() - 1);
-    const double first_index = std::clamp(std::floor((s - D) / h + e), 0.0, last);
-    const double last_index = std::clamp(std::ceil((s + D) / h + e), 0.0, last);
+    // The skeleton segments over [s - D, s + D], those at the ends clipped there.
+    const double D = settings_.window;
+    const std::size_t last = skeleton_.size() - 1;
+    std::size_t first_index = 0;
+    if (skeleton_intervals_ == 0) {  // even: by arithmetic
+        const double h = skeleton_.spacing(), e = double(skeleton_.phantoms());
+        first_index = std::size_t(std::clamp(std::floor((s - D) / h + e), 0.0, double(last)));
+    } else {
+        std::size_t lo = 0, hi = last;  // the last sample at or before s - D
+        while (hi - lo > 1) {
+            const std::size_t mid = (lo + hi) / 2;
+            (skeleton_.arc_length(mid) <= s - D ? lo : hi) = mid;
+        }
+        first_index = lo;
+    }
     window_.clear();
-    for (auto i = std::size_t(first_index); i < std::size_t(last_index); ++i) {
-        const double s0 = skeleton_.arc_length(i);
-        Vec3 a = skeleton_.position(i), b = skeleton_.position(i + 1);
-        const Vec3 d = b - a;
-        const double lo = std::max(0.0, (s - D - s0) / h), hi = std::min(1.0, (s + D - s0) / h);
+    for (std::size_t i = first_index; i < last; ++i) {
+        const double s0 = skeleton_.arc_length(i), s1 = skeleton_.arc_length(i + 1);
+        if (s0 >= s + D) break;
+        const Vec3 a = skeleton_.position(i), d = skeleton_.position(i + 1) - a;
+        const double span = s1 - s0;
+        const double lo = std::max(0.0, (s - D - s0) / span), hi = std::min(1.0, (s + D - s0) / span);
         if (!(hi > lo)) continue;
         window_.push_back(a + lo * d);
         window_.push_back(a + hi * d);
@@ -81,18 +107,32 @@ void ConvolutionSkin::rebuild() {
     const std::size_t S = settings_.segments;
     evaluations_ = 0;
     const double length = table_.total_length();
-    skeleton_.build(table_, points_.data(), axis_count(), AxisSamples::intervals_for(length, settings_.skeleton_spacing),
-                    settings_.window + settings_.skeleton_spacing,
-                    settings_.contact_surfaces ? AxisSamples::Curvature::compute : AxisSamples::Curvature::skip);
+    const auto skeleton_curvature = settings_.contact_surfaces ? AxisSamples::Curvature::compute : AxisSamples::Curvature::skip;
+    skeleton_intervals_ = 0;
+    if (settings_.skeleton_chord_error > 0.0) {
+        // The skeleton follows the curvature (ring_placement.h with a radius of 0): chords
+        // within skeleton_chord_error of the axis, from skeleton_spacing down to an eighth.
+        const double h = settings_.skeleton_spacing;
+        bends_.build(table_, points_.data(), axis_count(), AxisSamples::intervals_for(length, 0.5 * std::min(R, h)), 0.0,
+                     AxisSamples::Curvature::skip);
+        const std::vector<double>& arcs =
+            skeleton_placement_.place(bends_, 0.0, h, kFinestSkeleton * h, settings_.skeleton_chord_error, 0);
+        skeleton_.build_at(table_, points_.data(), axis_count(), arcs, skeleton_curvature, settings_.window + h);
+        skeleton_intervals_ = arcs.size() - 1;
+    } else {
+        skeleton_.build(table_, points_.data(), axis_count(), AxisSamples::intervals_for(length, settings_.skeleton_spacing),
+                        settings_.window + settings_.skeleton_spacing, skeleton_curvature);
+    }
     const std::size_t even_intervals = ring_intervals(length);
     if (settings_.ring_chord_error > 0.0) {
         // Levels of detail: rings closer where the axis bends (ring_placement.h), their
         // count in steps of a sixteenth of the even count when the topology is to stay.
         const double min_spacing = std::max(0.05 * R, settings_.ring_spacing / 16.0);
         const std::size_t level_step = settings_.stable_topology ? (even_intervals + 15) / 16 : 0;
+        // (From the skeleton when it is even; else from the bends' even samples.)
         rings_.build_at(table_, points_.data(), axis_count(),
-                        placement_.place(skeleton_, R, settings_.ring_spacing, min_spacing, settings_.ring_chord_error,
-                                         level_step),
+                        placement_.place(skeleton_intervals_ == 0 ? skeleton_ : bends_, R, settings_.ring_spacing,
+                                         min_spacing, settings_.ring_chord_error, level_step),
                         AxisSamples::Curvature::skip);
     } else {
         rings_.build(table_, points_.data(), axis_count(), even_intervals, 0.0, AxisSamples::Curvature::skip);

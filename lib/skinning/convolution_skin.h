@@ -12,7 +12,9 @@
 // safeguarded Newton iterations on the local field, starting from the radius it had in
 // the previous frame (temporal coherence: usually one or two field evaluations). The
 // iso-value is calibrated numerically at construction: the field of a straight skeleton
-// at distance R, so a straight tube has radius exactly R. The level of detail is the number
+// at distance R, so a straight tube has radius exactly R. The skeleton's points are evenly
+// spaced, or (with a chord-error tolerance) closer where the axis bends, from
+// skeleton_spacing on straight parts (ring_placement.h with a radius of 0). The level of detail is the number
 // of segments around and the ring spacing: even, or (with a chord-error tolerance) closer
 // where the axis bends, from ring_spacing on straight parts (ring_placement.h).
 //
@@ -46,11 +48,16 @@ public:
     std::size_t last_field_evaluations() const { return evaluations_; }
     // Rings of the last update cut to a contact surface.
     std::size_t last_touching_rings() const { return touching_rings_; }
+    // Skeleton points (segment ends) of the last update on the axis, phantoms excluded.
+    std::size_t skeleton_points() const { return skeleton_.intervals() + 1; }
 
 private:
     void rebuild() override;
     // Gathers the clipped skeleton segments of the window around arc length s.
     void gather_window(double s);
+    // The skeleton's spacing on a bend of curvature k (1/m): skeleton_spacing, or with a
+    // curvature-following skeleton the spacing it takes there.
+    double skeleton_spacing_for(double curvature) const;
     double field(Vec3 p) const;
     // Distance along the ray from origin where the field crosses the iso-value.
     double solve_ray(Vec3 origin, Vec3 direction, double start, double iso);
@@ -58,6 +65,9 @@ private:
     double iso_ = 0.0;
     BendCalibration bend_;
     AxisSamples skeleton_;
+    std::size_t skeleton_intervals_ = 0;  // intervals of a curvature-following skeleton; 0 when even
+    AxisSamples bends_;                   // even samples for placing a curvature-following skeleton
+    RingPlacement skeleton_placement_;
     AxisSamples rings_;
     RotationMinimizingFrames frames_;
     RingGrid grid_;

@@ -223,4 +223,26 @@ TEST(Skins, ConvolutionAdaptiveRingsCutTheFacetErrorOfABendWithFewerTriangles) {
     EXPECT_EQ(c.last_field_evaluations(), c.mesh().vertex_count() - 2 - 2 * 4 * 48);
 }
 
+TEST(Skins, ConvolutionSkeletonFollowingTheCurvatureIsAsAccurateWithFewerPoints) {
+    // A U-turn of radius 1.5 R between straight legs: segment ends R apart on the legs,
+    // closer on the bend (chords within 0.002 R of the axis), against even ones R / 4 apart
+    // and R apart.
+    const auto q = skin_test::u_turn_axis(0.2, 3.0 * R, 0.25 * R);
+    SkinSettings fine = defaults(SkinMethod::convolution), coarse = fine, following = fine;
+    coarse.skeleton_spacing = R;
+    following.skeleton_spacing = R;
+    following.skeleton_chord_error = 0.002 * R;
+    ConvolutionSkin a(fine), b(coarse), c(following);
+    const SkinMetrics even_fine = skin_and_measure(a, q), even_coarse = skin_and_measure(b, q),
+                      follows = skin_and_measure(c, q);
+    EXPECT_LT(follows.radius_error_max, even_coarse.radius_error_max);
+    EXPECT_LT(follows.radius_error_rms, 1.1 * even_fine.radius_error_rms + 1e-4);
+    EXPECT_LT(c.skeleton_points(), a.skeleton_points() / 2);
+    EXPECT_GT(c.skeleton_points(), b.skeleton_points());
+    EXPECT_TRUE(follows.watertight);
+    // Warm starts hold on the uneven skeleton: the same axis again, one evaluation a vertex.
+    c.update(q.data(), q.size() / 3);
+    EXPECT_EQ(c.last_field_evaluations(), c.mesh().vertex_count() - 2 - 2 * 4 * 16);
+}
+
 }  // namespace
