@@ -16,6 +16,17 @@
 // (ring_spacing_radii) against rings closer where the axis bends
 // (ring_chord_error_radii, at most R apart), at 16 segments: error against triangles.
 //
+// Contacts (docs/skinning.md): every row has the contact measures of ent_skin_metrics as
+// counters (overlap_pct: the deepest vertex inside another fold's skin, % of R;
+// overlap_area_mm2; tube_overlap_pct: inside another fold's ideal tube; gap_pct: the contact
+// surfaces' largest gap; shape_volume_pct; free_rms_pct: the radius error away from
+// contacts and bends tighter than R), and <pile>/<method>/default_no_contacts the same skin
+// with contact_surfaces 0, for the cost of the contacts. <pile>/convolution/skeleton_*: the
+// skeleton following the curvature (skeleton_spacing_radii h, skeleton_chord_error_radii e)
+// against even ones. popping/<pile>/<method>: a tool sweeps through the settled pile, the
+// skin updated every 16 ms of simulation: the largest motion of a vertex beyond the motion
+// of its axis point between two updates (excess_pct, % of R), over 40 updates.
+//
 // marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
 // (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
 // grid: the point-skeleton field of the settled demo pile (the library's internals, not the
@@ -33,6 +44,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -75,6 +87,8 @@ struct Resolution {
     uint32_t segments;
     double ring_spacing, skeleton_spacing, voxel_size;
     double ring_chord_error = 0.0;
+    int32_t contact_surfaces = 1;
+    double skeleton_chord_error = 0.0;
 };
 constexpr Resolution kResolutions[] = {
     {"coarse", 8, 1.0, 0.5, 0.5},
@@ -99,6 +113,8 @@ ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resoluti
     desc.skeleton_spacing_radii = resolution.skeleton_spacing;
     desc.voxel_size_radii = resolution.voxel_size;
     desc.ring_chord_error_radii = resolution.ring_chord_error;
+    desc.contact_surfaces = resolution.contact_surfaces;
+    desc.skeleton_chord_error_radii = resolution.skeleton_chord_error;
     ent_skin* skin = nullptr;
     if (ent_skin_create(scene, &desc, &skin) != ENT_OK || ent_skin_update(skin) != ENT_OK ||
         ent_skin_update(skin) != ENT_OK) {
@@ -144,8 +160,65 @@ void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pil
         state.counters["blended"] = m.blended_vertices;
         state.counters["inverted"] = m.inverted_triangles;
         state.counters["watertight"] = m.watertight;
+        state.counters["overlap_pct"] = 100.0 * m.overlap_depth_max;
+        state.counters["overlap_area_mm2"] = 1e6 * m.overlap_area_m2;
+        state.counters["tube_overlap_pct"] = 100.0 * m.tube_overlap_depth_max;
+        state.counters["gap_pct"] = 100.0 * m.contact_gap_max;
+        state.counters["shape_volume_pct"] = 100.0 * m.shape_volume_error;
+        state.counters["free_rms_pct"] = 100.0 * m.free_radius_error_rms;
     }
     ent_skin_destroy(skin);
+}
+
+// A tool sweeps through the settled pile while the skin follows at 60 Hz: the largest
+// motion of a vertex beyond the motion of its axis point between two updates.
+void popping_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method) {
+    for (auto _ : state) {
+        ent_scene* scene = enteron::bench::settle_pile(*pile);
+        ent_skin* skin = scene != nullptr ? make_skin(scene, method, kDefault) : nullptr;
+        if (skin == nullptr) {
+            state.SkipWithError(ent_last_error());
+            ent_scene_destroy(scene);
+            return;
+        }
+        // The tool: vertical, from one side of the pile to the other 2 R above its floor.
+        double box[6];
+        enteron::bench::axis_bounds(scene, box);
+        ent_tool_desc tool;
+        ent_tool_desc_default(&tool);
+        tool.max_force_N = 8.0;
+        const double y = 0.5 * (box[1] + box[4]), z = box[2] + 2.0 * kRadius;
+        tool.position_m[0] = box[0] - 2.0 * kRadius;
+        tool.position_m[1] = y;
+        tool.position_m[2] = z;
+        int32_t id = -1;
+        const double identity[4] = {1.0, 0.0, 0.0, 0.0};
+        double excess = 0.0, motion = 0.0;
+        constexpr int kFrames = 40;
+        if (ent_tool_add(scene, &tool, &id) == ENT_OK) {
+            for (int frame = 1; frame <= kFrames; ++frame) {
+                for (int step = 0; step < 16; ++step) {
+                    const double a = double((frame - 1) * 16 + step) / (kFrames * 16.0);
+                    const double p[3] = {box[0] - 2.0 * kRadius + a * (box[3] - box[0] + 4.0 * kRadius), y, z};
+                    ent_tool_set_pose(scene, id, p, identity);
+                    ent_scene_step(scene, 1e-3);
+                }
+                ent_skin_update(skin);
+                struct ent_skin_metrics m;
+                std::memset(&m, 0, sizeof m);
+                m.struct_size = sizeof m;
+                if (ent_skin_metrics(skin, &m) == ENT_OK) {
+                    excess = std::max(excess, m.vertex_excess_motion_max);
+                    motion = std::max(motion, m.vertex_motion_max);
+                }
+            }
+        }
+        state.counters["excess_pct"] = 100.0 * excess;
+        state.counters["motion_pct"] = 100.0 * motion;
+        state.counters["updates"] = kFrames;
+        ent_skin_destroy(skin);
+        ent_scene_destroy(scene);
+    }
 }
 
 // ---- meshes for people ----------------------------------------------------------------
@@ -339,6 +412,33 @@ int main(int argc, char** argv) {
                 benchmark::RegisterBenchmark(name.c_str(), skin_benchmark, &pile, method.id, resolution)
                     ->Unit(benchmark::kMillisecond);
             }
+    // Contacts: the default skins without contact surfaces, for their cost; the convolution's
+    // skeleton following the curvature.
+    for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) {
+        const std::string prefix = &pile == &enteron::bench::kSkinPiles[0] ? "skin" : pile.name;
+        for (const Method& method : kMethods) {
+            if (method.id == ENT_SKIN_TUBE) continue;  // no contact surfaces
+            Resolution without = kDefault;
+            without.contact_surfaces = 0;
+            benchmark::RegisterBenchmark((prefix + "/" + method.name + "/default_no_contacts").c_str(), skin_benchmark,
+                                         &pile, method.id, without)
+                ->Unit(benchmark::kMillisecond);
+        }
+        for (const auto& [h, e] : {std::pair{1.0, 0.0}, {1.0, 0.01}, {1.0, 0.005}, {1.0, 0.002}, {0.5, 0.002}}) {
+            char name[96];
+            std::snprintf(name, sizeof name, "%s/convolution/skeleton_h%.2f_e%.3f", prefix.c_str(), h, e);
+            Resolution follows = kDefault;
+            follows.skeleton_spacing = h;
+            follows.skeleton_chord_error = e;
+            benchmark::RegisterBenchmark(name, skin_benchmark, &pile, ENT_SKIN_CONVOLUTION, follows)
+                ->Unit(benchmark::kMillisecond);
+        }
+        for (const Method& method : kMethods)
+            benchmark::RegisterBenchmark((std::string("popping/") + pile.name + "/" + method.name).c_str(),
+                                         popping_benchmark, &pile, method.id)
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(1);
+    }
     // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
     for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
         char name[64];

@@ -74,6 +74,18 @@ inline ent_scene* settle_pile(const SkinPile& pile) {
     return scene;
 }
 
+// The box around the axis of `scene` (sampled every R / 8 or so): min x y z, max x y z, m.
+inline void axis_bounds(const ent_scene* scene, double box[6]) {
+    std::vector<double> points(3 * 2000);
+    for (int c = 0; c < 3; ++c) box[c] = 1e300, box[c + 3] = -1e300;
+    if (ent_scene_axis(scene, 2000, points.data()) != ENT_OK) return;
+    for (std::size_t i = 0; i < 2000; ++i)
+        for (int c = 0; c < 3; ++c) {
+            box[c] = std::min(box[c], points[3 * i + std::size_t(c)]);
+            box[c + 3] = std::max(box[c + 3], points[3 * i + std::size_t(c)]);
+        }
+}
+
 // The skin's mesh view (ent_skin_mesh), or an empty one (vertex_count 0) on failure.
 inline ent_mesh_view mesh_of(const ent_skin* skin) {
     ent_mesh_view view;

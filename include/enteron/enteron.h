@@ -1300,8 +1300,8 @@ struct ent_skin_metrics {
     /** RMS radius error (like radius_error_rms) over the vertices nothing may deform: farther than 1.75 R from any
      *  other fold's axis, where the axis (R either way) bends with a radius above R. */
     double free_radius_error_rms;
-    /** Largest distance a vertex moved since the update before (the same vertex while the topology is unchanged,
-     *  else its distance to the previous mesh, at most 1). */
+    /** Largest distance from a vertex to the previous update's mesh: how far the surface moved there (a vertex
+     *  sliding along the surface does not count), at most 1. */
     double vertex_motion_max;
     /** Largest amount by which a vertex moved farther than its own axis point A(u) since the update before
      *  (popping: a change of the surface the axis under it does not explain). */

@@ -228,7 +228,6 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
                 previous.points_xyz = sk.previous_axis_points();
                 previous.count = sk.previous_axis_count();
                 previous.table = &sk.previous_arc_length();
-                previous.same_vertices = sk.same_vertices_as_previous();
             }
             const enteron::skinning::SkinMetrics m =
                 enteron::skinning::measure_skin(sk.mesh(), sk.axis_points(), sk.axis_count(), sk.arc_length(),

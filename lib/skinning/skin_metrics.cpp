@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <memory>
 #include <unordered_map>
 
 #include "base/geometry.h"
@@ -367,22 +366,16 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         }
     }
 
-    // Motion since the previous update.
-    if (previous != nullptr && previous->mesh != nullptr && previous->mesh->vertex_count() > 0 && previous->table != nullptr) {
-        const Mesh& before = *previous->mesh;
-        const bool same = previous->same_vertices && before.vertex_count() == m.vertices;
-        std::unique_ptr<TriangleGrid> before_triangles;
-        if (!same) before_triangles = std::make_unique<TriangleGrid>(before, 0.25 * R);
+    // Motion since the previous update: each vertex's distance to the previous mesh (the
+    // surface's change, whether or not the vertices are the same), beyond its axis point's.
+    if (previous != nullptr && previous->mesh != nullptr && previous->mesh->triangle_count() > 0 &&
+        previous->table != nullptr) {
+        const TriangleGrid before(*previous->mesh, 0.25 * R);
         const double before_length = previous->table->total_length();
         for (std::size_t i = 0; i < m.vertices; ++i) {
-            const Vec3 v = vertex_at(mesh.positions, i);
-            double motion = 0.0;
-            if (same) {
-                motion = (v - vertex_at(before.positions, i)).norm();
-            } else {
-                const TriangleGrid::Closest closest = before_triangles->closest(v, R, [](std::size_t) { return true; });
-                motion = closest.found ? std::fabs(closest.distance) : R;  // at least R
-            }
+            const TriangleGrid::Closest closest =
+                before.closest(vertex_at(mesh.positions, i), R, [](std::size_t) { return true; });
+            const double motion = closest.found ? std::fabs(closest.distance) : R;  // at least R
             const double u = mesh.u[i];
             const Vec3 a = axis_point(points_xyz, count, table, u * length);
             const Vec3 a_before = axis_point(previous->points_xyz, previous->count, *previous->table, u * before_length);

@@ -94,7 +94,6 @@ struct PreviousFrame {
     const double* points_xyz = nullptr;
     std::size_t count = 0;
     const spline::ArcLengthTable* table = nullptr;
-    bool same_vertices = false;  // vertex i of both meshes is the same vertex (unchanged topology)
 };
 
 // Measures `mesh` around the spline of `count` control points with arc-length table

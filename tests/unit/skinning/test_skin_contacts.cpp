@@ -145,8 +145,7 @@ TEST(SkinContacts, ContactsComeAndGoWithoutPopping) {
             previous.points_xyz = skin->previous_axis_points();
             previous.count = skin->previous_axis_count();
             previous.table = &skin->previous_arc_length();
-            previous.same_vertices = skin->same_vertices_as_previous();
-            ASSERT_TRUE(previous.same_vertices);
+            ASSERT_TRUE(skin->same_vertices_as_previous());
             const SkinMetrics m =
                 measure_skin(skin->mesh(), skin->axis_points(), skin->axis_count(), skin->arc_length(), R, &previous);
             worst = std::max(worst, m.vertex_excess_motion_max);
