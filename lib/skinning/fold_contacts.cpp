@@ -11,8 +11,9 @@ namespace enteron::skinning {
 
 namespace {
 
-// Coarse samples about this far apart along the axis, in radii.
-constexpr double kCoarseSpacingRadii = 1.0;
+// Coarse samples about this far apart along the axis, in radii (a query walks at most
+// half of it along a fold).
+constexpr double kCoarseSpacingRadii = 2.0;
 
 double smoothstep(double z) { return z * z * (3.0 - 2.0 * z); }
 
@@ -120,30 +121,38 @@ void FoldContacts::build(const AxisSamples& axis, double radius, double query_ra
                 }
             }
         std::sort(found_.begin(), found_.end());
-        // One entry per run of consecutive coarse samples of one tube: its nearest to pk.
+        // One entry per pass of a fold: each local minimum, along a run of consecutive coarse
+        // samples of one tube, of the level pk sees there (distance and window penalty: a
+        // run may hold both legs of a U-turn, and the bend between them within the window).
         for (std::size_t a = 0; a < found_.size();) {
-            std::size_t b = a + 1, best = a;
-            double best_d2 = (position_[coarse_[found_[a]]] - pk).squaredNorm();
-            while (b < found_.size() && found_[b] == found_[b - 1] + 1 && tube_[coarse_[found_[b]]] == tube_[coarse_[found_[a]]]) {
-                const double d2 = (position_[coarse_[found_[b]]] - pk).squaredNorm();
-                if (d2 < best_d2) best_d2 = d2, best = b;
+            std::size_t b = a + 1;
+            while (b < found_.size() && found_[b] == found_[b - 1] + 1 && tube_[coarse_[found_[b]]] == tube_[coarse_[found_[a]]])
                 ++b;
+            const auto level = [&](std::size_t f) {
+                const std::size_t j = coarse_[found_[f]];
+                return (position_[j] - pk).norm() / radius_[j] + window_penalty(tube_[ik], arc_[ik], tube_[j], arc_[j]);
+            };
+            for (std::size_t f = a; f < b; ++f) {
+                const double here = level(f);
+                if ((f == a || here <= level(f - 1)) && (f + 1 == b || here < level(f + 1))) folds_.push_back(coarse_[found_[f]]);
             }
-            folds_.push_back(coarse_[found_[best]]);
             a = b;
         }
     }
     folds_begin_[coarse_.size()] = uint32_t(folds_.size());
 }
 
-std::size_t FoldContacts::nearest_segment(const Vec3& p, std::size_t i, SegmentPoint* nearest, double* distance2) const {
+std::size_t FoldContacts::nearest_segment(const Vec3& p, uint32_t tube, double s, std::size_t i, SegmentPoint* nearest,
+                                          double* distance2) const {
+    // Never into the query's own stretch of tube: that is not this fold.
+    const auto own = [&](std::size_t j) { return tube_[j] == tube && std::fabs(arc_[j] - s) < window_start_; };
     int last_step = 0;
     for (int steps = 0; steps < 64; ++steps) {
         const Vec3 e = position_[i + 1] - position_[i];
         const double along = (p - position_[i]).dot(e);
         int step = 0;
-        if (along < 0.0 && i > 0 && is_segment(i - 1)) step = -1;
-        else if (along > e.squaredNorm() && is_segment(i + 1)) step = 1;
+        if (along < 0.0 && i > 0 && is_segment(i - 1) && !own(i - 1)) step = -1;
+        else if (along > e.squaredNorm() && is_segment(i + 1) && !own(i + 2)) step = 1;
         if (step == 0 || step == -last_step) break;
         i += std::size_t(step);
         last_step = step;
@@ -174,7 +183,7 @@ std::size_t FoldContacts::near(const Vec3& point, uint32_t tube, double s, Ancho
         if (!is_segment(start)) --start;  // the last sample of a tube: its last segment
         SegmentPoint nearest;
         double distance2 = 0.0;
-        const std::size_t segment = nearest_segment(point, start, &nearest, &distance2);
+        const std::size_t segment = nearest_segment(point, tube, s, start, &nearest, &distance2);
         const double level = std::sqrt(distance2) / radius_[segment] + window_penalty(tube, s, tube_[segment], nearest.arc);
         // A ray point within query_radius of `point` is at least this much nearer.
         if (!(level - query_radius_ / radius_[segment] < threshold)) continue;
@@ -190,7 +199,7 @@ std::size_t FoldContacts::near(const Vec3& point, uint32_t tube, double s, Ancho
 double FoldContacts::level(const Vec3& p, uint32_t tube, double s, const Anchor& anchor, Vec3* gradient) const {
     SegmentPoint nearest;
     double distance2 = 0.0;
-    const std::size_t i = nearest_segment(p, anchor.segment, &nearest, &distance2);
+    const std::size_t i = nearest_segment(p, tube, s, anchor.segment, &nearest, &distance2);
     const double distance = std::sqrt(distance2), inverse_radius = 1.0 / radius_[i];
     *gradient = (distance > 0.0 ? inverse_radius / distance : 0.0) * (p - nearest.point);
     return distance * inverse_radius + window_penalty(tube, s, tube_[i], nearest.arc);

@@ -21,12 +21,13 @@
 // bend of radius 1.4 R with samples R / 4 apart). Both folds of a contact measure each
 // other on the same polyline, so they see the same contact surface.
 //
-// Finding the folds: samples about R apart along the axis ("coarse") are filed in a grid
+// Finding the folds: samples about 2 R apart along the axis ("coarse") are filed in a grid
 // of cells as wide as the reach; each keeps, once per build, the other folds that may
-// come within the bulge's reach of a query near it (one entry per pass of a fold: the
-// nearest coarse sample of each run of consecutive ones). A query near arc length s takes
-// the entries of the coarse sample nearest s and walks each along the polyline to the
-// segment nearest the query point.
+// come within the bulge's reach of a query near it (one entry per pass of a fold: each
+// coarse sample nearer than its neighbours along a run of consecutive ones, so that both
+// legs of a U-turn passing by count). A query near arc length s takes the entries of the
+// coarse sample nearest s and walks each along the polyline to the segment nearest the
+// query point.
 //
 // Several tubes (the "intestines" issue): every sample carries its tube and radius, a
 // segment never joins two tubes, and the window applies within a tube only. Today's skins
@@ -87,9 +88,11 @@ private:
     // o plus the window penalty for segment i, and its nearest point.
     double segment_level(const Vec3& p, uint32_t tube, double s, std::size_t i, SegmentPoint* nearest) const;
     // From segment i to the segment p projects onto (stepping while the foot falls beyond a
-    // segment's end; over a joint both ends lie beyond, and the nearer of the two is taken).
-    // Its nearest point and squared distance.
-    std::size_t nearest_segment(const Vec3& p, std::size_t i, SegmentPoint* nearest, double* distance2) const;
+    // segment's end, but not into the own window of the query (tube, s); over a joint both
+    // ends lie beyond, and the nearer of the two is taken). Its nearest point and squared
+    // distance.
+    std::size_t nearest_segment(const Vec3& p, uint32_t tube, double s, std::size_t i, SegmentPoint* nearest,
+                                double* distance2) const;
     double window_penalty(uint32_t tube, double s, uint32_t other_tube, double other_s) const;
     bool is_segment(std::size_t i) const { return i + 1 < position_.size() && tube_[i] == tube_[i + 1]; }
     uint64_t cell_key(const Vec3& p) const;
