@@ -1303,8 +1303,9 @@ struct ent_skin_metrics {
     /** Largest distance from a vertex to the previous update's mesh: how far the surface moved there (a vertex
      *  sliding along the surface does not count), at most 1. */
     double vertex_motion_max;
-    /** Largest amount by which a vertex moved farther than its own axis point A(u) since the update before
-     *  (popping: a change of the surface the axis under it does not explain). */
+    /** Largest amount by which the surface at a vertex moved farther, since the update before, than the tube
+     *  around its own axis point A(u) did (|dA(u)| + R |dt(u)|, t the axis' tangent): popping, a change of the
+     *  surface the axis under it does not explain. */
     double vertex_excess_motion_max;
     uint32_t free_vertex_count;    /**< vertices free_radius_error_rms is over. */
     /** 1 if vertex_motion_max and vertex_excess_motion_max compare with an update before (from the second update on), else 0. */

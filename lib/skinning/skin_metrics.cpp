@@ -275,6 +275,11 @@ Vec3 axis_point(const double* points, std::size_t count, const spline::ArcLength
     return spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value));
 }
 
+Vec3 axis_tangent(const double* points, std::size_t count, const spline::ArcLengthTable& table, double s) {
+    return normalized_or(spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::first)),
+                         Vec3::Zero());
+}
+
 double triangle_area(const Mesh& mesh, std::size_t t) {
     const Vec3 a = vertex_at(mesh.positions, mesh.indices[3 * t]), b = vertex_at(mesh.positions, mesh.indices[3 * t + 1]),
                c = vertex_at(mesh.positions, mesh.indices[3 * t + 2]);
@@ -367,7 +372,9 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
     }
 
     // Motion since the previous update: each vertex's distance to the previous mesh (the
-    // surface's change, whether or not the vertices are the same), beyond its axis point's.
+    // surface's change, whether or not the vertices are the same), beyond what the tube
+    // around its axis point moved there: the point's motion and R times its tangent's turn
+    // (the local tube moved rigidly).
     if (previous != nullptr && previous->mesh != nullptr && previous->mesh->triangle_count() > 0 &&
         previous->table != nullptr) {
         const TriangleGrid before(*previous->mesh, 0.25 * R);
@@ -379,8 +386,11 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
             const double u = mesh.u[i];
             const Vec3 a = axis_point(points_xyz, count, table, u * length);
             const Vec3 a_before = axis_point(previous->points_xyz, previous->count, *previous->table, u * before_length);
+            const Vec3 turn = axis_tangent(points_xyz, count, table, u * length) -
+                              axis_tangent(previous->points_xyz, previous->count, *previous->table, u * before_length);
+            const double tube_motion = (a - a_before).norm() + R * turn.norm();
             m.vertex_motion_max = std::max(m.vertex_motion_max, motion / R);
-            m.vertex_excess_motion_max = std::max(m.vertex_excess_motion_max, (motion - (a - a_before).norm()) / R);
+            m.vertex_excess_motion_max = std::max(m.vertex_excess_motion_max, (motion - tube_motion) / R);
         }
     }
 
