@@ -42,9 +42,7 @@ struct ent_skin_metrics skin_of(ent_scene* scene, int32_t method, int32_t contac
     EXPECT_EQ(desc.contact_surfaces, 1);  // the default
     desc.method = method;
     desc.contact_surfaces = contacts;
-    ent_skin* raw = nullptr;
-    EXPECT_EQ(ent_skin_create(scene, &desc, &raw), ENT_OK) << ent_last_error();
-    SkinPtr skin(raw);
+    SkinPtr skin = make_skin(scene, desc);
     EXPECT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
     return metrics(skin.get());
 }

@@ -26,9 +26,7 @@ struct ent_skin_metrics measured(ent_scene* scene, int32_t method, double ring_s
     desc.method = method;
     desc.ring_spacing_radii = ring_spacing_radii;
     desc.segments = segments;
-    ent_skin* raw = nullptr;
-    EXPECT_EQ(ent_skin_create(scene, &desc, &raw), ENT_OK) << ent_last_error();
-    SkinPtr skin(raw);
+    SkinPtr skin = make_skin(scene, desc);
     EXPECT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
     const struct ent_skin_metrics m = metrics(skin.get());
     EXPECT_EQ(m.watertight, 1) << "method " << method;

@@ -47,6 +47,11 @@ struct PressedRing {
         ring.sine = sine;
         ring.rays = kRays;
     }
+    // Every ray free at R: deformed into out.
+    RingContacts::Result deform() {
+        std::fill_n(free, kRays, R);
+        return contacts.deform(folds, ring, free, out);
+    }
     double area(const double* t) const {
         double sum = 0.0;
         for (std::size_t j = 0; j < kRays; ++j) sum += 0.5 * std::sin(2.0 * kPi / kRays) * t[j] * t[(j + 1) % kRays];
@@ -58,15 +63,16 @@ struct PressedRing {
     FoldContacts folds;
     double cosine[kRays], sine[kRays];
     RingContacts::Ring ring;
+    RingContacts contacts;
+    double free[kRays], out[kRays];
 };
 
 TEST(RingContacts, APressedRingMeetsTheOtherOnTheMidPlaneAndKeepsItsArea) {
     const double gap = 1.8 * R, half = 0.5 * gap;
     PressedRing pressed(gap);
-    double free[kRays], out[kRays];
-    std::fill_n(free, kRays, R);
-    RingContacts contacts;
-    const RingContacts::Result result = contacts.deform(pressed.folds, pressed.ring, free, out);
+    const RingContacts::Result result = pressed.deform();
+    const double* free = pressed.free;
+    const double* out = pressed.out;
     EXPECT_TRUE(result.touched);
     EXPECT_GT(result.bulge_reach, 0.0);
     EXPECT_LT(result.bulge_reach, kMaxBulgeReach);
@@ -98,10 +104,9 @@ TEST(RingContacts, APressedRingMeetsTheOtherOnTheMidPlaneAndKeepsItsArea) {
 TEST(RingContacts, APressTooDeepForTheLargestBulgeIsReportedShort) {
     const double gap = 1.2 * R, half = 0.5 * gap;
     PressedRing pressed(gap);
-    double free[kRays], out[kRays];
-    std::fill_n(free, kRays, R);
-    RingContacts contacts;
-    const RingContacts::Result result = contacts.deform(pressed.folds, pressed.ring, free, out);
+    const RingContacts::Result result = pressed.deform();
+    const double* free = pressed.free;
+    const double* out = pressed.out;
     EXPECT_EQ(result.bulge_reach, kMaxBulgeReach);
     EXPECT_GT(result.short_area, 0.0);
     EXPECT_NEAR(pressed.area(free) - pressed.area(out), result.short_area, 1e-3 * result.lost_area);
