@@ -38,7 +38,10 @@
 //
 // --mesh_dir=DIR also writes the mesh of each method at its default resolution, all of the
 // same state of the demo pile, as DIR/<method>.ply and DIR/<method>.obj
-// (scripts/render_mesh.py draws them).
+// (scripts/render_mesh.py draws them). --contact_mesh_dir=DIR writes a fold pressed 0.3 R
+// into another (two legs of a U-turn), each method with contact surfaces and without, as
+// DIR/<method>_{contacts,through}.ply (scripts/render_contacts.py draws their cross-sections
+// through the contact: docs/images/skin_contacts.png).
 #include <enteron/enteron.h>
 
 #include <benchmark/benchmark.h>
@@ -254,6 +257,59 @@ bool write_meshes(const std::string& dir) {
     return true;
 }
 
+// A fold pressed into another: the legs of a U-turn 3 R apart along -x, the middle of the
+// second (x = -0.1 m) pushed 1.3 R towards the first over 6 R either way, so that their
+// tubes overlap by 0.3 R there; each method with and without contact surfaces.
+bool write_contact_meshes(const std::string& dir) {
+    std::vector<double> q;
+    const double leg = 0.2, r = 1.5 * kRadius, step = 0.25 * kRadius, pi = 3.14159265358979323846;
+    for (double x = -leg; x < 0.0; x += step) q.insert(q.end(), {x, -r, 0.0});
+    for (int i = 0; i < 12; ++i) q.insert(q.end(), {r * std::sin(pi * i / 12), -r * std::cos(pi * i / 12), 0.0});
+    for (double x = 0.0; x >= -leg - 1e-9; x -= step) {
+        const double c = std::fabs(x + 0.1) < 6.0 * kRadius ? std::cos(0.5 * pi * (x + 0.1) / (6.0 * kRadius)) : 0.0;
+        q.insert(q.end(), {x, r - 1.3 * kRadius * c * c, 0.0});
+    }
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    desc.effects = 0;
+    desc.shape = ENT_SHAPE_POINTS;
+    desc.control_points = uint32_t(q.size() / 3);
+    desc.shape_points_xyz_m = q.data();
+    desc.radius_m = kRadius;
+    ent_scene* scene = nullptr;
+    if (ent_scene_create(&desc, &scene) != ENT_OK) return false;
+    bool ok = true;
+    for (const Method& method : kMethods)
+        for (int32_t contacts : {1, 0}) {
+            Resolution resolution = kDefault;
+            resolution.contact_surfaces = contacts;
+            ent_skin* skin = make_skin(scene, method.id, resolution);
+            const ent_mesh_view view = skin != nullptr ? enteron::bench::mesh_of(skin) : ent_mesh_view{};
+            if (skin == nullptr || view.vertex_count == 0) {
+                std::fprintf(stderr, "skin %s: %s\n", method.name, ent_last_error());
+                ent_skin_destroy(skin);
+                ok = false;
+                continue;
+            }
+            sk::Mesh mesh;
+            mesh.positions.assign(view.positions_xyz_m, view.positions_xyz_m + 3 * std::size_t(view.vertex_count));
+            mesh.normals.assign(view.normals_xyz, view.normals_xyz + 3 * std::size_t(view.vertex_count));
+            mesh.u.assign(view.axis_u, view.axis_u + view.vertex_count);
+            mesh.indices.assign(view.indices, view.indices + 3 * std::size_t(view.triangle_count));
+            ent_skin_destroy(skin);
+            const std::string path = dir + "/" + method.name + (contacts ? "_contacts.ply" : "_through.ply");
+            std::ofstream ply(path, std::ios::binary);
+            if (!sk::write_ply(mesh, ply)) {
+                std::fprintf(stderr, "cannot write %s\n", path.c_str());
+                ok = false;
+                continue;
+            }
+            std::fprintf(stderr, "wrote %s (%zu triangles)\n", path.c_str(), mesh.triangle_count());
+        }
+    ent_scene_destroy(scene);
+    return ok;
+}
+
 // ---- marching cubes against VTK on the same field ---------------------------------------
 
 // The point-skeleton field of the settled bowel at the default resolution, and the dense
@@ -391,12 +447,14 @@ void vtk_marching_cubes(benchmark::State& state, enteron::peers::VtkFilter filte
 
 int main(int argc, char** argv) {
     // Our own flag first (Google Benchmark refuses flags it does not know).
-    std::string mesh_dir;
+    std::string mesh_dir, contact_mesh_dir;
     int kept = 1;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument.rfind("--mesh_dir=", 0) == 0) {
             mesh_dir = argument.substr(std::strlen("--mesh_dir="));
+        } else if (argument.rfind("--contact_mesh_dir=", 0) == 0) {
+            contact_mesh_dir = argument.substr(std::strlen("--contact_mesh_dir="));
         } else {
             argv[kept++] = argv[i];
         }
@@ -472,6 +530,7 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     if (!mesh_dir.empty() && !write_meshes(mesh_dir)) return 1;
+    if (!contact_mesh_dir.empty() && !write_contact_meshes(contact_mesh_dir)) return 1;
     for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) {
         const ent_scene* scene = settled(pile);
         if (scene == nullptr) continue;

@@ -5,7 +5,8 @@
 // volume stays, nothing folds over; without contact surfaces the press shows as overlap.
 #include "skin_test_support.h"
 
-#include <algorithm>
+#include "../../bench/skin_piles.h"
+
 #include <cmath>
 
 using namespace capi_test;
@@ -13,28 +14,6 @@ using namespace skin_test;
 
 namespace {
 
-constexpr double kR = 0.0125;
-const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
-
-// A limp 0.6 m bowel released as a coil into a small box: after 1.5 s it lies in a pile of
-// loops resting on each other. Returns the highest point of its axis in `top`.
-ScenePtr small_pile(double top[3]) {
-    ScenePtr scene = create_json(
-        "{\"intestine\": {\"length\": 0.6, \"radius\": 0.0125, \"control_points\": 48, \"linear_density\": 0.3,"
-        " \"stretch_stiffness\": 100, \"bend_stiffness\": 2e-5,"
-        " \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, 0.05], \"helix_radius\": 0.03, \"helix_pitch\": 0.03}},"
-        " \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001}, \"gravity\": [0, 0, -9.81],"
-        " \"damping\": {\"drag\": 0.05, \"stretch\": 0.05, \"bend\": 0},"
-        " \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0.1], \"half_extents\": [0.06, 0.06, 0.1]}],"
-        " \"self_collision\": {}}");
-    if (!scene) return scene;
-    for (int i = 0; i < 1500; ++i) EXPECT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
-    const std::vector<double> q = control_points(scene.get());
-    top[2] = -1.0;
-    for (std::size_t i = 0; i < q.size(); i += 3)
-        if (q[i + 2] > top[2]) std::copy(&q[i], &q[i] + 3, top);
-    return scene;
-}
 
 struct ent_skin_metrics skin_of(ent_scene* scene, int32_t method, int32_t contacts) {
     ent_skin_desc desc;
@@ -48,23 +27,10 @@ struct ent_skin_metrics skin_of(ent_scene* scene, int32_t method, int32_t contac
 }
 
 TEST(SkinContacts, AFoldPressedByAToolMeetsTheFoldBeneath) {
-    double top[3];
-    ScenePtr scene = small_pile(top);
-    ASSERT_TRUE(scene);
-    // A vertical tool comes down on the pile's highest fold and presses it, with 8 N, into
-    // the folds beneath.
-    ent_tool_desc tool;
-    ent_tool_desc_default(&tool);
-    tool.max_force_N = 8.0;
-    std::copy(top, top + 3, tool.position_m);
-    tool.position_m[2] += 2.0 * kR;
-    int32_t id = -1;
-    ASSERT_EQ(ent_tool_add(scene.get(), &tool, &id), ENT_OK) << ent_last_error();
-    for (int i = 1; i <= 500; ++i) {
-        const double p[3] = {top[0], top[1], top[2] + 2.0 * kR - 4.0 * kR * std::min(1.0, i / 300.0)};
-        ASSERT_EQ(ent_tool_set_pose(scene.get(), id, p, kIdentity), ENT_OK) << ent_last_error();
-        ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
-    }
+    // A small pile's highest fold pressed with 8 N by a tool into the folds beneath.
+    double tip[3];
+    ScenePtr scene(enteron::bench::pressed_small_pile(tip));
+    ASSERT_TRUE(scene) << ent_last_error();
     // Pressed: the folds' tubes overlap by far more than when they rest on each other.
     const struct ent_skin_metrics through = skin_of(scene.get(), ENT_SKIN_CONVOLUTION, 0);
     ASSERT_GT(through.tube_overlap_depth_max, 0.15);
