@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Registers the ABI tests (included from tests/CMakeLists.txt), label "abi":
 #   abi_check        the built library against the committed baseline abi/libenteron.abi
 #   abi_check_bites  abi/check refuses deliberately broken copies of the library (a removed

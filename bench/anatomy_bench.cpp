@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Moving anatomy (docs/anatomy.md), through the C API only, printed as Markdown tables:
 //  1. mesh preparation: the wall time of ent_scene_add_obstacle for a closed ellipsoid mesh
 //     (an organ 20 x 14 x 10 cm) of 10k, 100k and 1M triangles, at the default voxel size

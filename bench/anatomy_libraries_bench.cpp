@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The candidate libraries for organ meshes (issue 20, docs/anatomy.md "Library"), measured
 // against each other on the same closed ellipsoid organ (20 x 14 x 10 cm) of 10k, 100k and
 // 1M triangles, one thread each:
@@ -8,9 +9,10 @@
 //    (collision/mesh_distance_field.h, built with Embree's queries): what a step reads.
 //    Build time (wall and CPU), memory (heap growth during the build, glibc's count), and
 //    query time for points near the surface (within 1 cm) and far from it (10-30 cm).
-//  - mesh files: tinyobjloader (OBJ only), assimp (OBJ, PLY) and CGAL's polygon soup readers
-//    (OBJ, PLY; what libenteron uses, scene/mesh_file.h) reading the same mesh written as an
-//    ASCII OBJ and an ASCII PLY.
+//  - mesh files: tinyobjloader (OBJ only), assimp (OBJ, PLY), CGAL's polygon soup readers
+//    (OBJ, PLY; what libenteron used, LGPL-3.0-or-later) and libenteron's own readers
+//    (scene/mesh_readers.h) reading the same mesh written as an ASCII OBJ, an ASCII PLY
+//    and a binary PLY: CPU time, the median of several rounds that alternate the readers.
 // What each adds to libenteron.so's dependencies is measured outside this program
 // (bench/results/anatomy_libraries.md gives the command). Built only when every candidate is
 // installed (scripts/install-deps installs them). Reported, not asserted. Run:
@@ -23,6 +25,7 @@
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
 #include <assimp/Importer.hpp>
 #include <openvdb/openvdb.h>
@@ -30,6 +33,7 @@
 #include <openvdb/tools/MeshToVolume.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -237,30 +241,51 @@ void write_ply(const TriangleMesh& m, const std::string& path) {
     std::fclose(f);
 }
 
-// Wall ms of one read and the triangles it found (0: failed).
-std::string read_row(const std::function<std::size_t()>& read) {
-    const double start = wall_s();
-    const std::size_t triangles = read();
-    char text[64];
-    std::snprintf(text, sizeof text, "%.0f (%zu)", 1e3 * (wall_s() - start), triangles);
-    return text;
+// The same as binary little-endian PLY (float coordinates, int indices), as scanners and
+// CAD tools write it.
+void write_binary_ply(const TriangleMesh& m, const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    std::fprintf(f, "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face %zu\nproperty list uchar int vertex_indices\nend_header\n",
+                 m.vertex_count(), m.triangle_count());
+    for (double coordinate : m.vertices) {
+        const float value = static_cast<float>(coordinate);
+        std::fwrite(&value, sizeof value, 1, f);
+    }
+    for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+        const unsigned char corners = 3;
+        const int32_t index[3] = {int32_t(m.indices[3 * t]), int32_t(m.indices[3 * t + 1]), int32_t(m.indices[3 * t + 2])};
+        std::fwrite(&corners, 1, 1, f);
+        std::fwrite(index, sizeof index, 1, f);
+    }
+    std::fclose(f);
 }
 
-void readers(const TriangleMesh& mesh, const std::string& directory) {
-    const std::string obj = directory + "/organ.obj", ply = directory + "/organ.ply";
+// One way of reading a file: the triangles it found (0: it failed or cannot read it).
+struct Reader {
+    const char* name;
+    std::function<std::size_t(const std::string& path)> read;
+    bool reads_ply;
+};
+
+// CPU ms of each reader on each file, the median of `rounds` rounds; each round reads every
+// file with every reader in turn, so that the machine's load falls on all of them alike.
+void readers(const TriangleMesh& mesh, const std::string& directory, int rounds) {
+    const std::string obj = directory + "/organ.obj", ply = directory + "/organ.ply", binary = directory + "/organ_binary.ply";
     write_obj(mesh, obj);
     write_ply(mesh, ply);
-    const auto tinyobj_read = [&] {
+    write_binary_ply(mesh, binary);
+    const auto tinyobj_read = [](const std::string& path) {
         tinyobj::attrib_t attrib;
         std::vector<tinyobj::shape_t> shapes;
         std::vector<tinyobj::material_t> materials;
         std::string warning, error;
-        if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, obj.c_str(), nullptr, true)) return std::size_t{0};
+        if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, path.c_str(), nullptr, true)) return std::size_t{0};
         std::size_t count = 0;
         for (const tinyobj::shape_t& s : shapes) count += s.mesh.num_face_vertices.size();
         return count;
     };
-    const auto assimp_read = [&](const std::string& path) {
+    const auto assimp_read = [](const std::string& path) {
         Assimp::Importer importer;
         const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
         if (scene == nullptr) return std::size_t{0};
@@ -268,16 +293,45 @@ void readers(const TriangleMesh& mesh, const std::string& directory) {
         for (unsigned i = 0; i < scene->mNumMeshes; ++i) count += scene->mMeshes[i]->mNumFaces;
         return count;
     };
-    const auto cgal_read = [&](const std::string& path) {
+    const auto cgal_read = [](const std::string& path) {
+        std::vector<CGAL::Simple_cartesian<double>::Point_3> points;
+        std::vector<std::vector<std::size_t>> polygons;
+        if (!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false))) return std::size_t{0};
+        return polygons.size();
+    };
+    const auto enteron_read = [](const std::string& path) {
         return enteron::scene::read_mesh_file(path, 1.0, "organ", enteron::ErrorCode::invalid_argument).triangle_count();
     };
-    std::printf("| tinyobjloader 2.0rc10 | %zu | %s | cannot |\n", mesh.triangle_count(), read_row(tinyobj_read).c_str());
-    std::printf("| assimp 5.2 | %zu | %s | %s |\n", mesh.triangle_count(), read_row([&] { return assimp_read(obj); }).c_str(),
-                read_row([&] { return assimp_read(ply); }).c_str());
-    std::printf("| CGAL 5.5 polygon soup (libenteron) | %zu | %s | %s |\n", mesh.triangle_count(),
-                read_row([&] { return cgal_read(obj); }).c_str(), read_row([&] { return cgal_read(ply); }).c_str());
-    std::remove(obj.c_str());
-    std::remove(ply.c_str());
+    const Reader readers[] = {{"tinyobjloader 2.0rc10", tinyobj_read, false},
+                              {"assimp 5.2", assimp_read, true},
+                              {"CGAL 5.5 polygon soup (what libenteron used)", cgal_read, true},
+                              {"libenteron's own readers (scene/mesh_readers.h)", enteron_read, true}};
+    const std::string files[] = {obj, ply, binary};
+    constexpr std::size_t kReaders = std::size(readers), kFiles = std::size(files);
+    std::vector<double> cpu_ms[kReaders][kFiles];
+    std::size_t found[kReaders][kFiles] = {};
+    for (int round = 0; round < rounds; ++round)
+        for (std::size_t f = 0; f < kFiles; ++f)
+            for (std::size_t r = 0; r < kReaders; ++r) {
+                if (f > 0 && !readers[r].reads_ply) continue;
+                const double start = cpu_s();
+                found[r][f] = readers[r].read(files[f]);
+                cpu_ms[r][f].push_back(1e3 * (cpu_s() - start));
+            }
+    for (std::size_t r = 0; r < kReaders; ++r) {
+        std::printf("| %s | %zu |", readers[r].name, mesh.triangle_count());
+        for (std::size_t f = 0; f < kFiles; ++f) {
+            std::vector<double>& times = cpu_ms[r][f];
+            if (times.empty()) {
+                std::printf(" cannot |");
+                continue;
+            }
+            std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+            std::printf(" %.1f (%zu) |", times[times.size() / 2], found[r][f]);
+        }
+        std::printf("\n");
+    }
+    for (const std::string& file : files) std::remove(file.c_str());
 }
 
 }  // namespace
@@ -304,11 +358,13 @@ int main(int argc, char** argv) {
     }
     char directory[] = "/tmp/enteron_anatomy_libraries_XXXXXX";
     if (mkdtemp(directory) == nullptr) return 1;
-    std::printf("\nReading the mesh from a file, wall ms (triangles read):\n\n"
-                "| reader | triangles | ASCII OBJ | ASCII PLY |\n|---|---:|---:|---:|\n");
+    const int rounds = quick ? 3 : 7;
+    std::printf("\nReading the mesh from a file, CPU ms, median of %d rounds (triangles read):\n\n"
+                "| reader | triangles | ASCII OBJ | ASCII PLY | binary PLY |\n|---|---:|---:|---:|---:|\n",
+                rounds);
     for (const Size& size : sizes) {
         if (quick && size.rings > 201) break;
-        readers(ellipsoid(a, size.rings, size.segments), directory);
+        readers(ellipsoid(a, size.rings, size.segments), directory, rounds);
     }
     rmdir(directory);
     return 0;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # What each candidate library for organ meshes would add to libenteron.so's run-time
 # dependencies (docs/anatomy.md, bench/results/anatomy_libraries.md): its DT_NEEDED entries,
 # and the shared objects it loads (itself and ldd's closure) that a C++ library loads anyway

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The 6 m small bowel that the step benchmarks share, as a C description, and small
 // helpers around the C API. Through the public header only.
 #pragma once

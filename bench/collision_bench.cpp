@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wall time of one ent_scene_step(scene, 1 ms) of the 6 m small bowel piled in the
 // abdominal cavity with every effect on: stretch, bend, damping, gravity, mesentery,
 // environment (the inside of a 30 cm box), self-collision (spheres of radius R every R/2

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cost and accuracy of each skinning method on the two settled piles of bench/skin_piles.h,
 // at three resolutions, through the C API: the demo's 6 m bowel (dropped as a helix into the
 // abdominal cavity, held by its mesentery, its folds piled on each other with

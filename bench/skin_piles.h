@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The two settled piles the skins are measured on (skin benchmark, accuracy study, tests),
 // and how tightly each one bends. Through the public C API only.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wall time of one ent_scene_step(scene, 1 ms) for the 6 m small bowel with every
 // mechanical effect (stretch, bend, damping, gravity, mesentery), per integrator and per
 // number of control points. Through the C API only.

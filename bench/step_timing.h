@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-step wall-time samples and their summary, shared by the benchmarks and the peers:
 // a 1 kHz haptic loop cares about the median and the slow steps, not the mean.
 #pragma once

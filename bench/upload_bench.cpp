@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What stable topology saves a renderer per frame (docs/skinning.md, "A mesh a GPU can
 // keep"), in time: the tube and the convolution skins of the settled demo pile
 // (bench/skin_piles.h), at their default resolution (16 segments, rings every R / 2) and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Install rules for libenteron: the shared library (with its SONAME symlink and namelink),
 # the public header, a CMake package (enteron::enteron) and a relocatable pkg-config file.
 # Included from lib/CMakeLists.txt after the `enteron` target is defined.

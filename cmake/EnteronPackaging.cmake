@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Debian packages with CPack (docs/building.md, "Debian packages"): one package per install
 # component, named after the SONAME where it holds a shared library (Debian policy 8.1).
 # Included last from the top-level CMakeLists.txt, once every install rule is known.
@@ -11,11 +12,20 @@
 #   LcmDevelopment  libenteron-lcm-dev  enteron_lcm.h, libenteron_lcm.so, the CMake package's
 #                                       component lcm, enteron_lcm.pc, the .lcm types
 #   LcmPrograms     enteron-lcm         bin/enteron-lcm-server, bin/enteron-lcm-replay
-# (The Python packages, component Python, are not packaged.)
+#   with the bindings (ENTERON_PYTHON_BINDING, ENTERON_CSHARP_BINDING), architecture all:
+#   Python          python3-enteron     the package enteron in /usr/lib/python3/dist-packages
+#   CSharp          libenteron-cil      Enteron.dll (+ .config, .xml) in /usr/lib/cli/enteron,
+#                                       enteron-sharp.pc (Debian's CLI policy names it -cil)
 #
 # `scripts/package` configures a tree for the prefix /usr and runs cpack; tests/packaging
-# unpacks the packages and builds a consumer against them. Every package carries
+# unpacks the packages and builds a consumer against them, and installs the bindings'
+# packages into a scratch root to use them (check_bindings.sh). Every package carries
 # /usr/share/doc/<package>/copyright and changelog.Debian.gz, as Debian policy asks.
+# The maintainer is a placeholder (the .invalid domain never resolves) until the owners
+# name one: give ENTERON_PACKAGE_MAINTAINER in the build tree's cache (cmake
+# -DENTERON_PACKAGE_MAINTAINER="Name <address>" build/package, then scripts/package). It
+# fills the Maintainer field, the Debian changelog's signature and the copyright file's
+# Upstream-Contact.
 set(ENTERON_PACKAGE_MAINTAINER "Enteron developers <dev@enteron.invalid>"
     CACHE STRING "The Maintainer field of the Debian packages (name <address>)")
 set(ENTERON_PACKAGE_RELEASE "1" CACHE STRING "The Debian revision of the packages (version <project version>-<this>)")
@@ -58,6 +68,9 @@ set(_enteron_debian_dir "${PROJECT_BINARY_DIR}/debian")
 set(ENTERON_PACKAGE_VERSION "${PROJECT_VERSION}-${ENTERON_PACKAGE_RELEASE}")
 string(TIMESTAMP ENTERON_PACKAGE_DATE "%a, %d %b %Y %H:%M:%S +0000" UTC)  # honours SOURCE_DATE_EPOCH
 configure_file("${PROJECT_SOURCE_DIR}/cmake/debian/changelog.in" "${_enteron_debian_dir}/changelog" @ONLY)
+# The copyright file, machine-readable (DEP-5): the project's licence (ENTERON_LICENSE,
+# Apache-2.0) and what the packages carry of others' (docs/building.md, "Licences").
+configure_file("${PROJECT_SOURCE_DIR}/cmake/debian/copyright.in" "${_enteron_debian_dir}/copyright" @ONLY)
 find_program(ENTERON_GZIP gzip REQUIRED)
 execute_process(COMMAND "${ENTERON_GZIP}" -9nc "${_enteron_debian_dir}/changelog"
                 OUTPUT_FILE "${_enteron_debian_dir}/changelog.Debian.gz" COMMAND_ERROR_IS_FATAL ANY)
@@ -87,14 +100,15 @@ endfunction()
 
 set(CPACK_COMPONENTS_ALL "")
 set(ENTERON_DEBIAN_PACKAGES "")
-# enteron_debian_package(COMPONENT NAME SECTION SUMMARY DESCRIPTION [LIBRARY]
+# enteron_debian_package(COMPONENT NAME SECTION SUMMARY DESCRIPTION [LIBRARY] [ARCHITECTURE_ALL]
 #                        [DEPENDS component...] [EXTRA_DEPENDS text] [RECOMMENDS text]):
 # the component becomes the package NAME. LIBRARY: it holds a shared library (an ldconfig
-# trigger). DESCRIPTION is the long description, one paragraph; DEPENDS are other
-# components of this project, EXTRA_DEPENDS what dpkg-shlibdeps cannot see (libraries
-# opened with dlopen).
+# trigger). ARCHITECTURE_ALL: nothing in it depends on the processor (Python, C#).
+# DESCRIPTION is the long description, one paragraph; DEPENDS are other components of this
+# project, EXTRA_DEPENDS what dpkg-shlibdeps cannot see (libraries opened with dlopen, the
+# interpreter of a binding).
 macro(enteron_debian_package)
-  cmake_parse_arguments(_package "LIBRARY" "COMPONENT;NAME;SECTION;SUMMARY;DESCRIPTION;EXTRA_DEPENDS;RECOMMENDS"
+  cmake_parse_arguments(_package "LIBRARY;ARCHITECTURE_ALL" "COMPONENT;NAME;SECTION;SUMMARY;DESCRIPTION;EXTRA_DEPENDS;RECOMMENDS"
                         "DEPENDS" ${ARGN})
   string(TOUPPER "${_package_COMPONENT}" _package_upper)
   list(APPEND CPACK_COMPONENTS_ALL ${_package_COMPONENT})
@@ -106,12 +120,15 @@ macro(enteron_debian_package)
   set(CPACK_COMPONENT_${_package_upper}_DEPENDS ${_package_DEPENDS})
   set(CPACK_DEBIAN_${_package_upper}_PACKAGE_DEPENDS "${_package_EXTRA_DEPENDS}")
   set(CPACK_DEBIAN_${_package_upper}_PACKAGE_RECOMMENDS "${_package_RECOMMENDS}")
+  if(_package_ARCHITECTURE_ALL)
+    set(CPACK_DEBIAN_${_package_upper}_PACKAGE_ARCHITECTURE all)
+  endif()
   if(_package_LIBRARY)
     set(CPACK_DEBIAN_${_package_upper}_PACKAGE_CONTROL_EXTRA "${_enteron_debian_dir}/triggers")
     set(CPACK_DEBIAN_${_package_upper}_PACKAGE_CONTROL_STRICT_PERMISSION ON)
   endif()
   # Only in the package: a plain `cmake --install` does not put these into the prefix.
-  install(FILES "${PROJECT_SOURCE_DIR}/cmake/debian/copyright" "${_enteron_debian_dir}/changelog.Debian.gz"
+  install(FILES "${_enteron_debian_dir}/copyright" "${_enteron_debian_dir}/changelog.Debian.gz"
     DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/${_package_NAME}"
     COMPONENT ${_package_COMPONENT} EXCLUDE_FROM_ALL)
 endmacro()
@@ -148,6 +165,19 @@ if(TARGET enteron_lcm)
   enteron_debian_package(COMPONENT LcmPrograms NAME enteron-lcm SECTION science DEPENDS LcmRuntime Runtime
     SUMMARY "real-time small intestine model for surgery simulators (LCM server)"
     DESCRIPTION "${_enteron_about} This package holds enteron-lcm-server, which runs a scene at 1 kHz and serves it over LCM, and enteron-lcm-replay, which replays a server's journal and checks it bit for bit.")
+endif()
+
+if(ENTERON_PYTHON_BINDING)
+  enteron_debian_package(COMPONENT Python NAME python3-enteron SECTION python ARCHITECTURE_ALL DEPENDS Runtime
+    EXTRA_DEPENDS "python3, python3-numpy"
+    SUMMARY "real-time small intestine model for surgery simulators (Python 3)"
+    DESCRIPTION "${_enteron_about} This package holds the Python 3 package enteron, a ctypes binding of libenteron that gives numpy arrays: import enteron works without PYTHONPATH.")
+endif()
+if(ENTERON_CSHARP_BINDING)
+  enteron_debian_package(COMPONENT CSharp NAME libenteron-cil SECTION cli-mono ARCHITECTURE_ALL DEPENDS Runtime
+    EXTRA_DEPENDS "mono-runtime (>= 6.8), libmono-corlib4.5-cil (>= 6.8)"
+    SUMMARY "real-time small intestine model for surgery simulators (C#)"
+    DESCRIPTION "${_enteron_about} This package holds Enteron.dll, the C# binding of libenteron for Mono and .NET (P/Invoke, SafeHandles, no garbage on the 1 kHz path), in /usr/lib/cli/enteron, and enteron-sharp.pc: mcs -pkg:enteron-sharp.")
 endif()
 
 include(CPack)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * enteron_abdomen: the 6 m small bowel in an abdomen made of organ meshes
  * (examples/scenes/abdomen.json: the abdominal wall, a liver and a stomach, the mesentery's

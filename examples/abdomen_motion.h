@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The motion of the abdomen scene (examples/scenes/abdomen.json), in one place for
  * enteron_abdomen (abdomen.c), enteron_demo --scene and enteron-viewer: a retractor lifts

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * enteron_demo: a 6 m small bowel dropped into the abdominal cavity, held by its mesentery,
  * then swept aside by a surgical tool.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The demo scene, shared by enteron_demo (demo.c) and enteron-viewer: a 6 m small bowel
  * dropped into the abdominal cavity, held by its mesentery, and the path of the tool that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An OpenGL 3.3 core context without a window or a display, from EGL: Mesa's surfaceless
 // platform first (any machine with libegl-mesa0: software rendering with llvmpipe, no X
 // server, no GPU), then the default display (a GPU driver's EGL). Header-only, through

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The haptic shim a haptic-device vendor would write: a 1 kHz loop that reads the device's
  * pose, hands it to the scene as the tool's pose, steps the scene by 1 ms and sends the

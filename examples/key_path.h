@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A path given by keys: a point that moves linearly from key to key in time, as a haptic
  * device's recording or a retractor's motion would, and an organ moved along one. Plain C99 (the viewer includes it from

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The smallest complete Enteron program: create a scene from JSON, step it for one
  * simulated second, read the axis, print one line. Every status is checked.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The two clock helpers the threaded examples share: seconds elapsed on CLOCK_MONOTONIC,
  * and an absolute deadline for clock_nanosleep(..., TIMER_ABSTIME, ...). Plain C99 with

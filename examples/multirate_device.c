@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* A haptic device's servo loop faster than the physics (docs/haptics.md, "Local stiffness
  * for fast servo loops"): physics at 1 kHz, a device loop at 4 kHz that renders, between
  * two physics ticks, either the last force (zero-order hold) or the local linear model

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The threads of a simulator: a physics thread steps the scene at 1 kHz, paced by the
  * wall clock, while a render thread at 60 Hz reads the axis and updates a convolution

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // score_trainee: a trainer scoring a scripted trainee, through the C++ layer (enteron.hpp).
 //
 // A bowel lies on the floor of the cavity; the trainee's grasper comes down beside it,

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Renders a skin mesh (binary PLY as lib/skinning/mesh_writers writes it, or OBJ) to a PNG
 with matplotlib: flat-shaded triangles lit from above and the front, seen from a fixed
 direction, so that pictures of several methods of the same frame compare side by side.

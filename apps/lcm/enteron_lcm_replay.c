@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * enteron-lcm-replay: replays a journal written by enteron-lcm-server --journal (or any
  * bridge with a journal_path) and checks that the scene reaches, bit for bit, the state

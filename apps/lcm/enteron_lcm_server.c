@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * enteron-lcm-server: runs a scene at 1 kHz and serves it over LCM (docs/lcm.md).
  *

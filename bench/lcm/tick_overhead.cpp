@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LCM bridge's own cost, in one process over memq (docs/lcm.md, "Latency"): the demo
 // scene (examples/lcm/scenes/demo.json, the 6 m bowel in the cavity) with its tool down in
 // the pile, sweeping, ticked at 1 kHz by this thread as a host would. Per tick:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The command-to-feedback round trip between two processes over udpm, inside a network
 # namespace made here (nothing leaves it): enteron-lcm-server runs the demo scene
 # (examples/lcm/scenes/demo.json) and the driver-side example sweeps its tool through the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mujoco_rope.h"
 
 #include "step_timing.h"

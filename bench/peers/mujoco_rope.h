@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A MuJoCo rope as a peer of the Enteron bowel, for the benchmarks and the accuracy study:
 // the same length, point count, radius, mass per length, bending stiffness, time step,
 // gravity, self-collision rule and box cavity, built from the same ent_scene_desc.

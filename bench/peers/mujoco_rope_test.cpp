@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks of the MuJoCo peer against what must hold whatever MuJoCo's contact model does:
 // the chain starts exactly on the given axis, its free fall follows g t^2 / 2 (internal
 // joint forces cannot move the centre of mass), a pinned end stays put, the

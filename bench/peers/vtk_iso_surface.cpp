@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "peers/vtk_iso_surface.h"
 
 #include <vtkFloatArray.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // VTK's iso-surface filters as peers of our marching cubes, on the same scalar field and
 // grid: vtkFlyingEdges3D (Schroeder, Maynard and Geveci 2015, VTK's fastest) and
 // vtkMarchingCubes (Lorensen and Cline's). Each runs on one thread (vtkSMPTools set to 1),

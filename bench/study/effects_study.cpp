@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Only the effects a scene names cost anything.
 //
 // 1. The cost of each effect on the 6 m pile (study_scenes.h, every effect but pinned),

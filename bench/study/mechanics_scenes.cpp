@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics_scenes.h"
 
 namespace study {
@@ -39,7 +40,15 @@ MechanicsGrid mechanics_grid(const Options& options) {
     grid.scenes = {MechanicsScene::swing, MechanicsScene::sag, MechanicsScene::drop};
     grid.reference_integrator = ENT_INTEGRATOR_RK4;
     grid.reference_timestep_s = 2e-5;
-    if (options.fast) {
+    if (options.tiny) {  // the distributed study's test: every sweep, a few seconds
+        grid.scenes = {MechanicsScene::swing, MechanicsScene::drop};
+        grid.reference_timestep_s = 1e-4;
+        grid.times_s = {0.2};
+        grid.sizes = {15, 30};
+        grid.reference_points = 60;
+        grid.dt_sweep_points = 30;
+        grid.timesteps_s = {1e-4, 1e-3};
+    } else if (options.fast) {
         grid.times_s = {0.5};
         grid.sizes = {30, 60, 120, 240};
         grid.reference_points = 240;

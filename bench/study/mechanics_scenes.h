@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenes and the grid of settings of the mechanics part of the study, shared with the
 // peers part (the same scenes in other engines, bench/peers): one definition of the bowel,
 // of each scene and of the N and time-step sweeps, so that a peer runs exactly what we run.

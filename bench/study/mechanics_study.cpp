@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mechanics accuracy: the error of the axis against a converged reference, for each knob
 // (control points N, integrator, time step), with the cost of a 1 kHz step.
 //
@@ -10,12 +11,15 @@
 // Error: RMS distance between the axis and the reference's, both sampled at kSamples
 // points evenly spaced in arc length (ent_scene_axis), at each time of the grid.
 // Cost: median wall time of one ent_scene_step, scaled to 1 ms of simulated time (what a
-// 1 kHz loop pays); a time step above 1 ms is stepped as one call of that length.
+// 1 kHz loop pays); a time step above 1 ms is stepped as one call of that length. Measured
+// over the whole run; in the distributed study (study_runs.h) over its first
+// --timing-steps steps, by the serial timing pass.
 // The explicit integrators never take a substep above their stability limit, whatever
 // the time step asked: the effective substep (simulated time / substeps) is reported.
 #include "mechanics_study.h"
 
 #include "mechanics_scenes.h"
+#include "study_runs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,12 +68,12 @@ public:
     }
 
     void run() {
-        Csv reference_csv(options_.out_dir + "/mechanics_reference.csv",
+        Csv reference_csv(csv_path(options_, "mechanics_reference.csv"),
                           {"scene", "t_s", "reference", "compared_with", "difference_m", "difference_rel",
                            "reference_wall_s"});
         // The reference axes themselves, so that a peer (bench/peers) can be measured against them.
-        Csv axes_csv(options_.out_dir + "/mechanics_reference_axes.csv", {"scene", "t_s", "index", "x_m", "y_m", "z_m"});
-        Csv csv(options_.out_dir + "/mechanics.csv",
+        Csv axes_csv(csv_path(options_, "mechanics_reference_axes.csv"), {"scene", "t_s", "index", "x_m", "y_m", "z_m"});
+        Csv csv(csv_path(options_, "mechanics.csv"),
                 {"scene", "sweep", "integrator", "control_points", "timestep_s", "substep_s", "t_s", "error_m",
                  "error_rel", "time_error_m", "next_difference_m", "us_per_ms", "rollbacks", "at_reference_N", "status"});
         for (Scene scene : scenes_) {
@@ -117,6 +121,28 @@ public:
         }
     }
 
+    static std::string run_name(const Setting& s) {
+        return format("mechanics %s %s %u %s", scene_name(s.scene), integrator_name(s.integrator), s.control_points,
+                      exact(s.timestep).c_str());
+    }
+
+    // --run NAME: false if NAME is not a mechanics run.
+    bool print_record(const std::string& name) {
+        Setting setting{};
+        if (!parse_run_name(name, setting)) return false;
+        const Run run = simulate(setting, false);
+        RunRecord record;
+        std::vector<double> axes;
+        for (const std::vector<double>& axis : run.axes) axes.insert(axes.end(), axis.begin(), axis.end());
+        record.put("axes", axes);
+        record.put("substep_s", run.substep_s);
+        record.put("rollbacks", static_cast<double>(run.rollbacks));
+        record.put("status", run.status);
+        record.put("wall_s", run.wall_s);
+        std::fputs(record.serialize().c_str(), stdout);
+        return true;
+    }
+
 private:
     struct ReferenceSetting {
         uint32_t points;
@@ -149,14 +175,78 @@ private:
     const Run& get(const Setting& setting) {
         auto found = cache_.find(setting);
         if (found != cache_.end()) return found->second;
-        Run run = simulate(setting);
+        Run run;
+        switch (run_mode(options_)) {
+            case RunMode::list:  // a run of zeros: enough for run() to name every run it needs
+                list_run(run_name(setting));
+                run.axes.assign(times_.size(), std::vector<double>(3 * kSamples, 0.0));
+                return cache_.emplace(setting, std::move(run)).first->second;
+            case RunMode::from_records:
+                run = from_record(load_run(options_, run_name(setting)));
+                run.us_per_ms = time_first_steps(setting);
+                break;
+            default:
+                run = simulate(setting, true);
+        }
         progress("mechanics %-5s %-16s N=%-4u dt=%-7g substep=%-9.3g %8.1f us/ms  %6.1f s  %s", scene_name(setting.scene),
                  integrator_name(setting.integrator), setting.control_points, setting.timestep, run.substep_s,
                  run.us_per_ms, run.wall_s, run.status.c_str());
         return cache_.emplace(setting, std::move(run)).first->second;
     }
 
-    Run simulate(const Setting& setting) const {
+    static bool parse_run_name(const std::string& name, Setting& out) {
+        const std::vector<std::string> words = name_words(name);
+        if (words.size() != 5 || words[0] != "mechanics") return false;
+        bool scene_found = false, integrator_found = false;
+        for (MechanicsScene scene : {MechanicsScene::swing, MechanicsScene::sag, MechanicsScene::drop})
+            if (words[1] == mechanics_scene_name(scene)) out.scene = scene, scene_found = true;
+        for (int32_t integrator : kIntegrators)
+            if (words[2] == integrator_name(integrator)) out.integrator = integrator, integrator_found = true;
+        out.control_points = static_cast<uint32_t>(std::strtoul(words[3].c_str(), nullptr, 10));
+        out.timestep = std::strtod(words[4].c_str(), nullptr);
+        if (!scene_found || !integrator_found || out.control_points == 0 || !(out.timestep > 0))
+            throw std::runtime_error("not a mechanics run: \"" + name + "\"");
+        return true;
+    }
+
+    Run from_record(const RunRecord& record) const {
+        Run run;
+        run.status = record.text("status");
+        run.substep_s = record.number("substep_s");
+        run.rollbacks = static_cast<uint64_t>(record.number("rollbacks"));
+        run.wall_s = record.number("wall_s");
+        const std::vector<double> axes = record.numbers("axes");
+        const std::size_t size = 3 * static_cast<std::size_t>(kSamples);
+        if (axes.size() % size != 0 || (!axes.empty() && axes.size() != size * times_.size()))
+            throw std::runtime_error("a mechanics run record with " + std::to_string(axes.size()) + " axis values");
+        for (std::size_t k = 0; k * size < axes.size(); ++k)
+            run.axes.emplace_back(axes.begin() + static_cast<long>(k * size), axes.begin() + static_cast<long>((k + 1) * size));
+        return run;
+    }
+
+    // The timing pass: the median cost of the first --timing-steps outer steps (all of them
+    // when the run has fewer), from the scene's start.
+    double time_first_steps(const Setting& setting) const {
+        const double outer = std::max(setting.timestep, kOneMs);
+        const long steps = std::min(options_.timing_steps, std::lround(times_.back() / outer));
+        std::vector<double> samples;
+        try {
+            ScenePtr scene = make_scene(mechanics_scene_json(setting.scene, setting.control_points, setting.integrator,
+                                                             setting.timestep));
+            for (long k = 0; k < steps; ++k) {
+                const double t0 = now_s();
+                check(ent_scene_step(scene.get(), outer), "ent_scene_step");
+                samples.push_back((now_s() - t0) * 1e6 * kOneMs / outer);
+            }
+        } catch (const ApiError&) {
+            return std::nan("");  // the run failed too: its status says why
+        }
+        return median(samples);
+    }
+
+    // timed: the cost of every step measured too (the serial study); otherwise the error
+    // part only (--run), and us_per_ms stays NaN.
+    Run simulate(const Setting& setting, bool timed) const {
         Run run;
         const double start = now_s();
         const double outer = std::max(setting.timestep, kOneMs);
@@ -168,14 +258,14 @@ private:
             for (double t : times_) {
                 const long target = std::lround(t / outer);
                 for (; done < target; ++done) {
-                    const double t0 = now_s();
+                    const double t0 = timed ? now_s() : 0.0;
                     check(ent_scene_step(scene.get(), outer), "ent_scene_step");
-                    samples.push_back((now_s() - t0) * 1e6 * kOneMs / outer);
+                    if (timed) samples.push_back((now_s() - t0) * 1e6 * kOneMs / outer);
                 }
                 run.axes.push_back(sample_axis(scene.get(), kSamples));
             }
             const ent_stats stats = scene_stats(scene.get());
-            run.us_per_ms = median(samples);
+            if (timed) run.us_per_ms = median(samples);
             run.substep_s = stats.time_s / static_cast<double>(stats.substeps);
             run.rollbacks = stats.rollbacks;
         } catch (const ApiError& error) {
@@ -200,5 +290,9 @@ private:
 }  // namespace
 
 void run_mechanics_study(const Options& options) { MechanicsStudy(options).run(); }
+
+bool print_mechanics_run(const Options& options, const std::string& name) {
+    return MechanicsStudy(options).print_record(name);
+}
 
 }  // namespace study

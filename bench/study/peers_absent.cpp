@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The peers part in a build without MuJoCo (ENTERON_BENCH_MUJOCO off or libmujoco-dev
 // missing): nothing to run. The study still succeeds; its report says the peers were skipped.
 #include "peers_study.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Peers on the swing: MuJoCo's composite rope (bench/peers/mujoco_rope.h) on the mechanics
 // study's swinging scene (mechanics_scenes.h): the same length, radius, mass per length,
 // bending and stretch stiffness, stretch damping, drag, gravity, pinned first end, straight

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Peers in the same run: other engines on the mechanics study's swing, at the study's N
 // and time steps, timed in the same process, so that report.py can put their error
 // (against the same reference) and their cost next to ours.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Turns the CSV files of enteron_study into plots, markdown tables and checks.
 
     report.py RESULTS_DIR [--check] [--doc docs/accuracy.md] [--peers PEERS_CSV]

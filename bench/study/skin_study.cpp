@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Skin accuracy: for each skinning method and resolution, how far the mesh is from the
 // ideal tube of radius R around the axis (ent_skin_metrics: radius error RMS and max,
 // unwanted blending, volume error, watertightness), against the wall time of one

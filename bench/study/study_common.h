@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared pieces of the accuracy study (bench/study): options, scenes from JSON through the
 // public C API, stepping with per-step timing, axis sampling and CSV output.
 // Like a simulator vendor, the study uses nothing but include/enteron/enteron.h.
@@ -16,9 +17,16 @@ namespace study {
 
 struct Options {
     bool fast = false;       // small grid for ctest; full: the committed results
+    bool tiny = false;       // the smallest grid (seconds; fast where a part has no tiny one)
     std::string out_dir;     // CSV files go here
     std::vector<std::string> parts;  // empty: all parts
     bool wants(const std::string& part) const;
+    // The distributed study (study_runs.h): --list-runs, --run NAME, --runs DIR, and the
+    // outer steps of a mechanics run timed by the timing pass (--timing-steps).
+    bool list_runs = false;
+    std::string run;
+    std::string runs_dir;
+    long timing_steps = 200;
 };
 
 // Formats like printf into a std::string.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "study_scenes.h"
 
 #include <algorithm>
@@ -28,11 +29,13 @@ std::string pile_json(const PileSettings& s) {
 
 std::vector<double> pile_sphere_spacings(const Options& options) {
     const double r = kPileRadius;
+    if (options.tiny) return {r / 2};
     if (options.fast) return {r / 4, r / 2, r};
     return {r / 4, r / 2, 0.75 * r, r};
 }
 
 std::vector<double> pile_contact_stiffnesses(const Options& options) {
+    if (options.tiny) return {500, 2000};
     if (options.fast) return {250, 500, 2000};
     return {125, 250, 500, 1000, 2000, 4000};
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenes shared by the collision, skin and effect parts of the study.
 #pragma once
 
@@ -21,7 +22,7 @@ constexpr double kPileBoxHalfExtent = 0.15;     // m, the box is centred on the 
 std::string pile_json(const PileSettings& settings);
 
 // The collision knobs of the study: sphere spacings from R/4 to R (m) and contact
-// stiffnesses (N/m); fewer in fast mode.
+// stiffnesses (N/m); fewer in fast mode, fewest in tiny mode.
 std::vector<double> pile_sphere_spacings(const Options& options);
 std::vector<double> pile_contact_stiffnesses(const Options& options);
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * The driver side of the LCM bridge: what a haptic-device vendor writes to drive a running
  * enteron-lcm-server. It speaks only LCM through the C types lcm-gen makes from
@@ -110,6 +111,7 @@ typedef struct {
     long round_trips, over_one_tick;
     double force[3], largest_force;
     int32_t status;
+    int locked_out; /* the commands rejected are this device's (docs/lcm.md) */
     int grasping, grasped, held_through_lift;
 } device;
 
@@ -229,6 +231,10 @@ static void on_feedback(const lcm_recv_buf_t* buffer, const char* channel, void*
     if (feedback.tick > d->last_tick) d->last_tick = feedback.tick;
     memcpy(d->force, feedback.force_N, sizeof d->force);
     d->status = feedback.status;
+    /* Commands rejected, and the one applied is not ours: this device is the one locked out
+       (another sender keeps the tool's sequence, or the bridge refuses what we send). */
+    d->locked_out = (feedback.status & ENTERON_TOOL_FEEDBACK_T_STATUS_COMMANDS_REJECTED) != 0 &&
+                    feedback.command_seq != d->seq;
     d->grasping = feedback.grasping;
     if (feedback.grasping) d->grasped = 1;
     {
@@ -257,13 +263,19 @@ static void on_feedback(const lcm_recv_buf_t* buffer, const char* channel, void*
     }
 }
 
-static const char* status_text(int32_t status, char* text, size_t size) {
+static const char* status_text(int32_t status, int locked_out, char* text, size_t size) {
     static const char* const names[] = {"STALE", "NO_COMMAND", "FORCE_LIMITED", "RATE_LIMITED", "UNSTABLE",
-                                        "FORCE_DISABLED"};
+                                        "FORCE_DISABLED", "COMMANDS_REJECTED"};
+    static const char* const reasons[] = {"size", "fingerprint", "not finite", "zero quaternion", "unknown tool",
+                                          "out of range", "sequence"};
+    const int reason = (status & ENTERON_TOOL_FEEDBACK_T_REJECTION_MASK) >> ENTERON_TOOL_FEEDBACK_T_REJECTION_SHIFT;
     size_t i, length = 0;
     text[0] = '\0';
-    for (i = 0; i < 6; ++i)
+    for (i = 0; i < 7; ++i)
         if (status & (1 << i)) length += (size_t)snprintf(text + length, size - length, "%s%s", length ? "|" : "", names[i]);
+    if (reason >= 1 && reason <= 7 && length < size)
+        length += (size_t)snprintf(text + length, size - length, " (%s%s)", reasons[reason - 1],
+                                   locked_out ? ": ours, locked out" : "");
     if (length == 0) snprintf(text, size, "ok");
     return text;
 }
@@ -335,12 +347,12 @@ int main(int argc, char** argv) {
             if (d.next_send_ns <= t) d.next_send_ns = t + PERIOD_NS;
         }
         if (!d.quiet && t >= next_print_ns) {
-            char text[96];
+            char text[128];
             const double magnitude = sqrt(d.force[0] * d.force[0] + d.force[1] * d.force[1] + d.force[2] * d.force[2]);
             double position[3];
             const char* phase_name = script_pose(&d, 1e-9 * (double)t, position);
             printf("haptic_device: t = %5.2f s  %-8s  F = (%6.3f, %6.3f, %6.3f) N  |F| = %5.3f N  %s%s\n", 1e-9 * (double)t,
-                   phase_name, d.force[0], d.force[1], d.force[2], magnitude, status_text(d.status, text, sizeof text),
+                   phase_name, d.force[0], d.force[1], d.force[2], magnitude, status_text(d.status, d.locked_out, text, sizeof text),
                    d.grasping ? "  grasping" : "");
             fflush(stdout);
             next_print_ns += 1000000000LL / PRINTS_PER_SECOND;

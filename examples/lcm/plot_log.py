@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Plots a recorded LCM session of Enteron: the force a device was sent, and the latency.
 
     lcm-logger session.lcmlog          (while enteron-lcm-server and a device run)

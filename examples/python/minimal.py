@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The minimal example in Python: create a scene from a dict, step one simulated second,
 read the axis and the stats, print one line.
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Skins in Python: step a scene, update a convolution skin, read its mesh as numpy arrays
-that view the library's buffers (no copy) and measure it against the ideal tube.
+copied from the library's buffers (they stay valid after the next update) and measure it
+against the ideal tube.
 
     PYTHONPATH=bindings/python python3 examples/python/skin.py
 """

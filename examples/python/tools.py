@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Tools in Python: a surgical tool pushes a bowel lying on the floor aside, and the force
 the bowel exerts on it is read back after every step, as a haptic device would render it.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the organ meshes of examples/scenes/abdomen.json (examples/scenes/organs/*.obj).
 
 The meshes are made here, not segmented from a scan: smooth closed surfaces with the

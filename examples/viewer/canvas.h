@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where a frame is drawn: a multisampled offscreen framebuffer, resolved for reading back
 // (PNG, video) and for showing in a window. The window and --headless draw the same way.
 #pragma once

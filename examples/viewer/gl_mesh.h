@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Triangle and line meshes on the GPU, and the unit shapes the scene is drawn with. Every
 // program reads the same attribute locations, so any mesh works with any program.
 #pragma once

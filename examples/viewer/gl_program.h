@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A linked GLSL program and its uniforms (OpenGL 3.3 core, through libepoxy).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the panels plot and summarise, fed once a frame from the session: the force on
 // each tool over the last seconds (every step, its largest magnitude per plot point, so
 // no peak is lost), the step times of the last second (median and largest), the frame

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LatestValue<T>: one thread publishes values, another takes the newest; neither ever
 // waits for the other. A triple buffer: the writer fills its own slot and swaps it with
 // the shared middle slot in one atomic exchange; the reader swaps its slot with the middle

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene simulated in this process: the library, a physics thread that alone steps the
 // scene, and a skin that the render thread alone updates from the published snapshot.
 // The render thread makes every call of this class.

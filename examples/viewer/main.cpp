@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // enteron-viewer: see the bowel move and push it with the mouse (docs/viewer.md).
 //
 //   enteron-viewer [SCENE.json] [options]      with no scene: the demo scene
@@ -34,6 +35,8 @@ const char kUsage[] =
     "                      on the demo scene); abdomen: the retractor lifting the liver and the grasper\n"
     "                      of examples/scenes/abdomen.json (its default: the retractor alone in a window)\n"
     "  --skin METHOD       tube, point_skeleton or convolution (default convolution)\n"
+    "  --laparoscope       look through a 30-degree laparoscope from the umbilical port, its\n"
+    "                      light at its tip (key V switches; docs/viewer.md)\n"
     "  --ui MODE           full (panels), hud (a small overlay) or none (default: full; headless: hud)\n"
     "  --rate R            slow motion: simulated seconds per wall second, (0, 1] (default 1)\n"
     "  --lcm URL           show the session of an enteron-lcm-server there instead of a scene here\n"
@@ -83,6 +86,8 @@ int main(int argc, char** argv) {
             return kExitOk;
         } else if (arg == "--headless") {
             headless = true;
+        } else if (arg == "--laparoscope") {
+            settings.laparoscope = true;
         } else if (arg == "--seconds") {
             if (int bad = number(1e-3, 3600.0, options.seconds)) return bad;
         } else if (arg == "--start") {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The physics thread of a local session: the one thread that steps the scene. It steps at
 // the scene's pace in real time (scaled by a rate for slow motion), or, for frame-exact
 // captures, as fast as it can up to a gate the render thread moves. It never takes a lock

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "renderer.h"
 
 #include <Eigen/Geometry>
@@ -287,9 +288,18 @@ void Renderer::draw(const SceneView& view, const Camera& camera, int width_px, i
     upload_frame(view);
 
     glViewport(0, 0, width_px, height_px);
-    if (view.toggles.shadows) prepare_shadow_map(view);
+    // Through the laparoscope its light at the tip is the only one: no key light, no shadow
+    // map, a black cavity beyond the light's reach.
+    const bool scope = camera.scope();
+    const bool shadows = view.toggles.shadows && !scope;
+    if (shadows) prepare_shadow_map(view);
 
-    clear_background(width_px, height_px);
+    if (scope) {
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    } else {
+        clear_background(width_px, height_px);
+    }
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glEnable(GL_DEPTH_TEST);
@@ -301,7 +311,12 @@ void Renderer::draw(const SceneView& view, const Camera& camera, int width_px, i
     surface_.set("eye", eye_);
     surface_.set("key_direction", key_direction_);
     surface_.set("axis_length", static_cast<float>(view.layout->length_m));
-    surface_.set("shadows", view.toggles.shadows ? 1 : 0);
+    surface_.set("shadows", shadows ? 1 : 0);
+    surface_.set("scope", scope ? 1 : 0);
+    surface_.set("view_direction", Eigen::Vector3f(camera.forward().cast<float>()));
+    // The scope's round field: a circle a little taller than the picture, as on a monitor.
+    surface_.set("scope_circle",
+                 Eigen::Vector3f(0.5f * float(width_px), 0.5f * float(height_px), 0.55f * float(height_px)));
     surface_.set("shadow_map", 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, shadow_texture_);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Draws one frame of the scene with OpenGL 3.3 core: the bowel's skin shaded with its
 // normals, the obstacles where they are now (organ meshes translucent, so that the bowel
 // under them shows; a cavity's wall seen from inside), the tools' capsules, the force on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The two ways the viewer runs: in a window (GLFW), in real time; or --headless, offscreen
 // (EGL), frame-exact at a fixed rate in simulated time. Both draw into a Canvas and can
 // write the frames, a video and screenshots (FrameOutputs).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
 

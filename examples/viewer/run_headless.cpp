@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer without a display (--headless): an OpenGL 3.3 core context from EGL on Mesa's
 // surfaceless platform (examples/egl_offscreen_context.h; software rendering with llvmpipe:
 // no X server, no GPU), frames drawn into a Canvas at a fixed rate in simulated time. The

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer in a window: GLFW 3 for the window and the input, the frame drawn into a
 // Canvas and shown; the physics runs on its own thread in real time meanwhile.
 #define GLFW_INCLUDE_NONE

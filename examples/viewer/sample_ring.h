@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SampleRing<T, N>: a wait-free single-producer single-consumer queue of N slots. The
 // physics thread pushes one sample per step (the force on each tool, the step time); the
 // render thread drains them all once a frame, so the plots see every step, not one in

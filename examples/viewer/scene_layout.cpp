@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene_layout.h"
 
 #include <enteron/enteron.h>
@@ -140,10 +141,14 @@ void frame_on_cavity(SceneLayout& layout) {
     // The camera frames the cavity if there is one, else it is framed on the first frame
     // by the bowel itself (scene_size_m 0).
     layout.scene_size_m = 0.0;
+    layout.port_known = false;
     for (const ObstacleShape& obstacle : layout.obstacles) {
         if (obstacle.kind == ENT_OBSTACLE_BOX_INSIDE) {
             for (int c = 0; c < 3; ++c) layout.scene_center_m[c] = obstacle.position_m[c] + obstacle.center_m[c];
             layout.scene_size_m = 2.0 * *std::max_element(obstacle.half_extents_m, obstacle.half_extents_m + 3);
+            for (int c = 0; c < 3; ++c) layout.port_m[c] = layout.scene_center_m[c];
+            layout.port_m[2] += obstacle.half_extents_m[2];
+            layout.port_known = true;
             return;
         }
         if (obstacle.kind == ENT_OBSTACLE_MESH && obstacle.mesh && obstacle.mesh->cavity) {
@@ -153,6 +158,10 @@ void frame_on_cavity(SceneLayout& layout) {
             for (int c = 0; c < 3; ++c)
                 layout.scene_center_m[c] = obstacle.position_m[c] + 0.5 * (wall.low_m[c] + wall.high_m[c]);
             layout.scene_size_m = std::max(wall.high_m[0] - wall.low_m[0], wall.high_m[2] - wall.low_m[2]);
+            // The umbilicus: the dome's top above the centre (a supine abdomen, +z anterior).
+            for (int c = 0; c < 3; ++c) layout.port_m[c] = layout.scene_center_m[c];
+            layout.port_m[2] = obstacle.position_m[2] + wall.high_m[2];
+            layout.port_known = true;
             return;
         }
     }

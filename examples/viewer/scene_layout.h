@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the viewer draws besides the bowel, read from the scene's JSON description: the
 // tube radius, the obstacles, the tools' capsules, the mesentery's root, the number of
 // collision spheres. The C API has no call that returns a scene's description, so the
@@ -61,6 +62,8 @@ struct SceneLayout {
     std::vector<ToolShape> tools;
     double scene_center_m[3] = {};    // a point the camera should look at
     double scene_size_m = 0.3;        // and how much it should see
+    double port_m[3] = {};            // the umbilical port: the cavity's top above its centre
+    bool port_known = false;          // false: no cavity
 };
 
 // Reads the layout of a JSON description that ent_scene_create_json accepted. False (with

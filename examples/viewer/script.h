@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scripted session: what a user's hands would do, at given simulated times, so that
 // pictures, videos and tests can be made without anyone at the mouse. One event a line:
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the picture comes from and where the tool commands go. The viewer draws whatever a
 // Session gives it once a frame and sends it the tools' targets; it does not know whether
 // the scene runs here (LocalSession: a physics thread and a skin in this process) or

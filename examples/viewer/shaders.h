@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The GLSL 3.30 core programs: lit surfaces (with the key light's shadow), flat lines, and
 // the shadow map's depth pass. Colours are linear; the fragment shaders
 // write sRGB.
@@ -36,7 +37,9 @@ void main() {
 // gives tissue its wet highlights), a key light from above casts the shadows that show
 // how high the tool is, and a sky/ground ambient term keeps the shadows from going black.
 // Tissue gets "wrap" diffuse lighting: light bleeding past the terminator, as in
-// translucent flesh.
+// translucent flesh. Through the laparoscope (scope = 1) its light at the tip is the only
+// one: it falls off with the square of the distance and away from the optics' axis, and
+// the image is the scope's round field, black outside it.
 inline const char* const kSurfaceFragment = R"(#version 330 core
 in vec3 world_position;
 in vec3 world_normal;
@@ -53,6 +56,9 @@ uniform float wrap;             // 0: hard terminator; 0.5: soft, tissue-like
 uniform int pattern;            // 0 none, 1 the bowel's faint vessels and tint, 2 a 5 cm grid
 uniform int shadows;
 uniform sampler2DShadow shadow_map;
+uniform int scope;              // 1: seen through the laparoscope
+uniform vec3 view_direction;    // scope: unit, the optics' axis (the light's beam)
+uniform vec3 scope_circle;      // scope: the round field's centre x, y and radius, pixels
 out vec4 color;
 
 // Schlick's cheap stand-in for pow(x, shininess): a software renderer's pow is slow.
@@ -91,6 +97,18 @@ void main() {
         vec3 d = abs(fract(cell - 0.5) - 0.5) / max(fwidth(cell), vec3(1e-6)) + 1e3 * step(0.9, abs(n));
         float line = 1.0 - min(min(min(d.x, d.y), d.z), 1.0);
         albedo *= 1.0 - 0.35 * line;
+    }
+    if (scope == 1) {
+        float d = length(eye - world_position);
+        float beam = mix(0.3, 1.0, smoothstep(0.55, 0.97, dot(-v, view_direction)));
+        float light = beam * min(3.0, 0.0064 / (d * d));  // 1 at 8 cm
+        float lit = max((dot(n, v) + wrap) / (1.0 + wrap), 0.0);
+        vec3 dim = mix(vec3(0.02, 0.015, 0.015), vec3(0.03, 0.03, 0.035), 0.5 + 0.5 * n.z);
+        vec3 c = albedo * (1.25 * lit * light + dim) + vec3(specular * highlight(dot(n, v)) * light);
+        float edge = length(gl_FragCoord.xy - scope_circle.xy) - scope_circle.z;
+        c *= 1.0 - smoothstep(-4.0, 0.0, edge);
+        color = vec4(sqrt(clamp(c, 0.0, 1.0)), edge > 0.0 ? 1.0 : alpha);
+        return;
     }
     float shadow = lit_fraction(n);
     float key = max((dot(n, key_direction) + wrap) / (1.0 + wrap), 0.0) * shadow;

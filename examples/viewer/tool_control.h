@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mouse as the surgical tool. While the left button is held, the active tool's tip
 // follows the pointer on the plane that faces the camera through the tip (fixed when the
 // button went down); the wheel moves the tip along the line of sight, in depth; a key or

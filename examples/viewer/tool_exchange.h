@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the render thread asks of the tools and what they felt.
 //
 // The tool commands of the library (ent_tool_set_pose, ent_tool_grasp, ent_tool_release)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "viewer.h"
 
 #define GLFW_INCLUDE_NONE
@@ -23,6 +24,9 @@ double wall_seconds() {
 }
 
 constexpr double kNoticeSeconds = 4.0;
+// The laparoscope's tip inside the wall: 2 cm past the port, as a surgeon starts (the loops of a
+// packed abdomen come within a few centimetres of the wall).
+constexpr double kScopeInsertion_m = 0.02;
 
 }  // namespace
 
@@ -149,6 +153,18 @@ void Viewer::frame_camera() {
     if (box.isEmpty()) return;  // nothing yet: frame it on the next frame
     camera_.frame(box.center(), box.sizes().maxCoeff());
     camera_framed_ = true;
+    if (settings_.laparoscope) look_through_scope();
+}
+
+void Viewer::look_through_scope() {
+    if (!session_) return;
+    const SceneLayout& layout = session_->layout();
+    const Eigen::AlignedBox3d bowel = mesh_bounds(frame_.mesh);
+    const Eigen::Vector3d target = bowel.isEmpty() ? camera_.target() : bowel.center();
+    // The umbilical port: the cavity's top above its centre; without a cavity, 20 cm above the bowel.
+    const Eigen::Vector3d port = layout.port_known ? Eigen::Vector3d(layout.port_m[0], layout.port_m[1], layout.port_m[2])
+                                                   : Eigen::Vector3d(target + Eigen::Vector3d(0.0, 0.0, 0.2));
+    camera_.look_through_scope(port, target, kScopeInsertion_m);
 }
 
 void Viewer::update() {
@@ -269,6 +285,13 @@ void Viewer::key(int key, int mods) {
         case GLFW_KEY_H: settings_.ui = settings_.ui == UiMode::full ? UiMode::none : UiMode::full; break;
         case GLFW_KEY_P: screenshot_request_ = "enteron-viewer.png"; break;
         case GLFW_KEY_HOME: frame_camera(); break;
+        case GLFW_KEY_V:  // the laparoscope, or back to the orbit camera where it was
+            settings_.laparoscope = !settings_.laparoscope;
+            if (settings_.laparoscope)
+                look_through_scope();
+            else
+                camera_.leave_scope();
+            break;
         case GLFW_KEY_W: toggles_.wireframe = !toggles_.wireframe; break;
         case GLFW_KEY_A: toggles_.axis = !toggles_.axis; break;
         case GLFW_KEY_C: toggles_.control_points = !toggles_.control_points; break;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer itself, apart from where its pixels go (a window, or offscreen for
 // --headless): the session it shows, the camera, the mouse-driven tools, what is drawn,
 // the plots and the panels. Everything here runs on the render thread; the physics runs
@@ -33,6 +34,8 @@ struct ViewerSettings {
     // scene_motion_tool (headless; in a window the mouse is the tool).
     bool scene_motion = false;
     bool scene_motion_tool = false;
+    // Look through the laparoscope from the start (key V switches).
+    bool laparoscope = false;
 };
 
 class Viewer {
@@ -82,6 +85,9 @@ private:
     void reset();
     void set_skin(const ent_skin_desc& desc);
     void frame_camera();
+    // The laparoscope through the umbilical port (the cavity's top above its centre),
+    // looking at the bowel (docs/viewer.md).
+    void look_through_scope();
     void build_panels();
     void build_hud();
     void build_status_line(bool always);

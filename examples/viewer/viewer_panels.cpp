@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's panels (Dear ImGui): on the left the simulation's controls, the tool and its
 // force plot, what is shown and the scene's text; on the right the statistics and the
 // skin; the help; the status line along the bottom.
@@ -360,6 +361,7 @@ void Viewer::build_help() {
         {"middle or Shift+right drag", "pan"},
         {"Ctrl+wheel", "zoom"},
         {"Home", "frame the scene"},
+        {"V", "look through the 30-degree laparoscope (right drag: pivot it, Shift+right: turn its optics, Ctrl+wheel: slide it)"},
         {"Space", "pause / run"},
         {"Right", "one step"},
         {"Backspace", "reset"},

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Enteron: a real-time model of the human small intestine for surgery simulators.
  *
@@ -32,8 +33,9 @@
  * - The queries read the last published snapshot: ent_scene_axis,
  *   ent_scene_control_points, ent_scene_stats, ent_scene_effect_stats, the contacts
  *   (ent_scene_contacts, ent_scene_contact_summary), each tool's output
- *   (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state, ent_tool_read_contacts) and
- *   each obstacle's pose (ent_obstacle_pose, ent_scene_obstacle_count). A snapshot is an
+ *   (ent_tool_read_feedback, ent_tool_wrench, ent_tool_state, ent_tool_read_contacts),
+ *   each obstacle's pose (ent_obstacle_pose, ent_scene_obstacle_count) and the exposure of a
+ *   target (ent_scene_exposure; one thread at a time per ent_exposure). A snapshot is an
  *   immutable copy of the state made at creation, after each driving call and at the end
  *   of every step (a step that fails publishes the same state with its work counters).
  *   Any number of threads may query at the same time as each other and as the step; each
@@ -43,12 +45,19 @@
  *   stepping thread never waits for a copy: it publishes into a free slot of a small pool
  *   (8 slots; with up to 7 queries running at once every step is published, beyond that a
  *   publication may be skipped and the next one goes through).
- * - A skin is used by one thread at a time (its own lock, or one skin per thread); it reads
- *   the snapshots like a query, so it never waits for the step either.
- * - Lifetimes: ent_scene_destroy must not overlap any other call on that scene, and a
- *   scene (or skin) must not be used after its destroy call. A skin may outlive its
- *   scene: it shares the published snapshots and keeps working on the last state the
- *   scene published. A skin's mesh view is valid until that skin's next update or destroy.
+ * - A skin is used by one thread at a time (its own lock, or one skin per thread): a call
+ *   on a skin made while another runs on the same skin on another thread returns
+ *   ENT_ERROR_BUSY and does nothing. It reads the snapshots like a query, so it never waits
+ *   for the step either.
+ * - Lifetimes: a scene (or skin) must not be used after its destroy call returned: a call
+ *   begun after it is the caller's bug, as in any C API (the handle may be gone). A destroy
+ *   that races with calls already running on other threads is safe: those calls finish (or
+ *   fail with a status) and the last of them to return releases the memory, on its thread
+ *   (through the scene's release callback, if any; keep the callbacks' user_data valid
+ *   until then). The check costs each call two atomic operations; the step still
+ *   allocates nothing and makes no system call. A skin may outlive its scene: it shares
+ *   the published snapshots and keeps working on the last state the scene published. A
+ *   skin's mesh view is valid until that skin's next update or destroy.
  * - Different scenes are independent; the calls that take no scene (ent_version,
  *   ent_status_string, ent_last_error, ent_effect_name, the _init/_default functions)
  *   are safe from any thread. ent_last_error is per thread. Callbacks run on the thread
@@ -135,7 +144,8 @@ typedef int32_t ent_status;
 /** A bug in the library. Please report it with the message of ent_last_error(). */
 #define ENT_ERROR_INTERNAL 9
 /** Another driving call (step, add obstacle, add tool) is running on this scene on another
- *  thread; nothing was done. Added in 0.1 after the first tools. */
+ *  thread, or another call on this skin (ent_skin_update, _mesh, _metrics); nothing was
+ *  done. Added in 0.1 after the first tools. */
 #define ENT_ERROR_BUSY 10
 
 /**
@@ -248,7 +258,10 @@ typedef struct ent_scene_desc {
     uint32_t effects;
 
     /* The intestine */
-    double length_m;                    /**< rest length of the axis, m (default 6). */
+    double length_m;                    /**< rest length of the axis, m (default 6). A points shape with length_m 0
+                                             takes the length of the spline through its points, so that it starts at
+                                             rest; a length given that differs from that one by more than 1 % is used,
+                                             and logged as a warning (the bowel starts stretched or compressed). */
     double radius_m;                    /**< tube radius R, m (default 0.0125). */
     uint32_t control_points;            /**< spline control points, >= 4 (default 240). */
     double linear_density_kg_per_m;     /**< mass per unit length, kg/m (default 0.3). */
@@ -263,7 +276,8 @@ typedef struct ent_scene_desc {
     double shape_leg_spacing_m;         /**< serpentine: distance between legs, m, >= 2 R (default 0.05). */
     double shape_helix_radius_m;        /**< helix: radius, m (default 0.1). */
     double shape_helix_pitch_m;         /**< helix: rise per turn, m, >= 2 R (default 0.03). */
-    const double* shape_points_xyz_m;   /**< points: control_points x 3 coordinates, m. */
+    const double* shape_points_xyz_m;   /**< points: control_points x 3 coordinates, m (the library reads exactly
+                                             that many: a binding fills both from one array). */
 
     /* Solver */
     int32_t integrator;                 /**< ENT_INTEGRATOR_* (default implicit Euler). */
@@ -383,9 +397,39 @@ ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callba
                                               ent_scene** out_scene);
 
 /**
+ * The description the scene was created from, as an ent_scene_desc, whether it came from C
+ * or from JSON (docs/scene-json.md gives each key's C field): its values, in `effects` the
+ * effects it turned on (a stiffness of 0 reads back with its bit clear), and for an effect
+ * it left off the defaults. The arrays are not kept: shape_points_xyz_m and pinned_points
+ * are NULL and pinned_point_count 0 (ent_scene_control_points gives the points), callbacks
+ * NULL. What changed since (ent_scene_set_gravity, obstacles, tools, pins, a mesentery or a
+ * clamped end attached) and what only JSON describes (its obstacles, tools, attached pins)
+ * are not in it. So for a scene without arrays, ent_scene_create of what this gives makes
+ * the same scene. Set out->struct_size first (ent_scene_desc_default does); fields beyond
+ * an older, smaller struct_size are not written.
+ * Any thread, any time (the description never changes); never waits; allocates nothing.
+ * @code
+ *   ent_scene_desc desc;
+ *   ent_scene_desc_default(&desc);
+ *   if (ent_scene_read_desc(scene, &desc) == ENT_OK) printf("R = %g m\n", desc.radius_m);
+ * @endcode
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, destroyed scene); ENT_ERROR_VERSION
+ *         (struct_size not known); *out untouched on failure.
+ */
+ENT_API ent_status ent_scene_read_desc(const ent_scene* scene, ent_scene_desc* out);
+
+/**
  * Destroys a scene and everything it owns. NULL is ignored. Its skins stay valid: they keep
  * the last published state (and its memory) until they are destroyed too.
- * @warning No other call on this scene may run during or after this one.
+ * Calls on this scene already running on other threads when it is called (a step, a
+ * query, a tool command) finish, or fail with a status; the scene's memory is then
+ * released by the last of them as it returns, on that thread. It never waits for them.
+ * A call begun after this one returned is the caller's bug: the handle may be gone (while
+ * a skin or a call in flight still holds it, such a call gets ENT_ERROR_INVALID_ARGUMENT,
+ * "scene was destroyed"). A second destroy of a scene whose skins keep its handle does
+ * nothing.
+ * @warning Stop your other threads' calls on the scene before destroying it; the library
+ *          only makes the race harmless, it cannot make a later call valid.
  */
 ENT_API void ent_scene_destroy(ent_scene* scene);
 
@@ -776,7 +820,8 @@ typedef struct ent_tool_desc {
  * commanded pose by a virtual coupling (a spring-damper bounded by max_force_N). The bowel
  * receives what the proxy gives it; the wrench is the coupling's. Direct: the capsule is
  * where the caller puts it and its contacts are bounded together by max_force_N (the
- * behaviour before 0.2: a fast or forceful tool can pass through the tube).
+ * behaviour of the first tools, before the proxy: a fast or forceful tool can pass
+ * through the tube).
  */
 #define ENT_TOOL_MODE_PROXY 0
 #define ENT_TOOL_MODE_DIRECT 1
@@ -813,6 +858,18 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
  * @warning A driving call: one at a time per scene.
  */
 ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int32_t* out_tool);
+
+/**
+ * The settings a tool was added with (ent_tool_add, or the JSON "tools"), and the pose it
+ * was added at, its quaternion normalised: an ent_tool_desc that ent_tool_add would take.
+ * Where the tool is now: ent_tool_read_feedback. Set out->struct_size first
+ * (ent_tool_desc_default does); fields beyond an older, smaller struct_size are not written.
+ * Any thread, any time, also while another adds a tool or steps: never waits, allocates
+ * nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size not
+ *         known); ENT_ERROR_NOT_FOUND (unknown or removed tool); *out untouched on failure.
+ */
+ENT_API ent_status ent_tool_read_desc(const ent_scene* scene, int32_t tool, ent_tool_desc* out);
 
 /**
  * Sets where the tool is at the end of the next ent_scene_step: tip position (m) and
@@ -895,6 +952,10 @@ typedef struct ent_tool_feedback {
     double proxy_position_m[3];       /**< the tip of the tool in the scene (the proxy's; the commanded one in direct mode), m: what a viewer draws. */
     double commanded_position_m[3];   /**< the tip the caller commanded for that step, m. */
     double orientation_wxyz[4];       /**< the commanded orientation for that step (the proxy's too). */
+    /** 1 if max_force_N bounded the tool's force in that step (the force is the bound, not what the
+     *  contacts asked for: a device shim says so, as the LCM bridge's STATUS_FORCE_LIMITED does), else 0.
+     *  Added in 0.1 after the proxy (issue 27): not written for an older, smaller struct_size. */
+    int32_t saturated;
 } ent_tool_feedback;
 
 /**
@@ -1090,6 +1151,155 @@ typedef struct ent_tool_contacts {
 ENT_API ent_status ent_tool_read_contacts(const ent_scene* scene, int32_t tool, ent_tool_contacts* out);
 
 /* ------------------------------------------------------------------------------------ */
+/* Exposure: how much of a target the bowel hides from a viewpoint (is the area cleared?) */
+/* ------------------------------------------------------------------------------------ */
+
+/**
+ * A target prepared for ent_scene_exposure: its sample points, their weights and the work
+ * space of the query, so that each query allocates nothing. Opaque; made by
+ * ent_exposure_create for one scene.
+ */
+typedef struct ent_exposure ent_exposure;
+
+/**
+ * What to measure the exposure of. Fill it with ent_exposure_desc_default, set the target,
+ * then call ent_exposure_create; it is not retained (the arrays are copied).
+ * The target is a set of points, or a small patch of triangles on an organ (a gallbladder,
+ * the posterior wall where the right colon lies), given in the world or in an obstacle's
+ * frame, so that it moves with the organ (a liver a retractor lifts).
+ */
+typedef struct ent_exposure_desc {
+    uint32_t struct_size;           /**< sizeof(ent_exposure_desc); set by ent_exposure_desc_default. */
+    /** point_count x 3 coordinates, m, in the frame of `obstacle`: the target's points, or the
+     *  patch's vertices (default NULL). */
+    const double* points_xyz_m;
+    uint32_t point_count;           /**< 1 to 1048576 (default 0). */
+    /** triangle_count x 3 indices into the points (from 0): the target is this patch, each
+     *  triangle sampled at samples_per_edge^2 points (the centroids of its sub-triangles);
+     *  NULL: the target is the points themselves (default NULL). */
+    const uint32_t* triangles;
+    uint32_t triangle_count;        /**< triangles, 0 to 1048576; 0 with triangles NULL (default 0). */
+    /** A weight >= 0 per point (no triangles) or per triangle (a patch: it multiplies the
+     *  triangle's area); NULL: every point alike, or each triangle by its area (default NULL).
+     *  The weights must not all be zero. */
+    const double* weights;
+    uint32_t samples_per_edge;      /**< a patch: each triangle's edge cut into this many parts, 1 to 32 (default 4: 16 samples a triangle). */
+    /** The frame the points are given in: ENT_NO_OBSTACLE (the world; default) or an
+     *  obstacle's index: each query places the target where that obstacle rests in the
+     *  published state. */
+    int32_t obstacle;
+    /** The bowel's surface is taken as spheres swept along its axis sampled at this many
+     *  chords per spline segment, 1 to 64 (default 4: the chord departs from the axis by under
+     *  0.3 mm where the bowel bends at twice its radius, N = 240 on 6 m). */
+    uint32_t axis_chords_per_segment;
+} ent_exposure_desc;
+
+/**
+ * Fills the first struct_size bytes of *desc with the defaults listed above and sets
+ * desc->struct_size; nothing past struct_size is written. Call it through
+ * ent_exposure_desc_default. Added in 0.1 with the patient (issue 29).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (desc NULL); ENT_ERROR_VERSION (unknown size).
+ */
+ENT_API ent_status ent_exposure_desc_init(ent_exposure_desc* desc, uint32_t struct_size);
+
+/** Fills *desc with the defaults listed above and sets struct_size. NULL is ignored. */
+#define ent_exposure_desc_default(desc) \
+    ((void)ent_exposure_desc_init((desc), (uint32_t)sizeof(ent_exposure_desc)))
+
+/**
+ * Prepares a target for ent_scene_exposure on this scene: copies and samples it and sizes
+ * the query's work space for the scene's bowel. Allocates (about 100 bytes per sample and
+ * per chord of the axis); not on a real-time path.
+ * Thread: any thread; it reads only constants of the scene and the published obstacle count.
+ * @param out_exposure receives the prepared target; untouched on failure.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL; a count out of range; non-finite
+ *         coordinates; an index past the points; a negative or non-finite weight, or all
+ *         weights zero, or every triangle of zero area; samples_per_edge or
+ *         axis_chords_per_segment out of range: the message names the field and the
+ *         element); ENT_ERROR_NOT_FOUND (no such obstacle, or removed); ENT_ERROR_VERSION;
+ *         ENT_ERROR_OUT_OF_MEMORY.
+ */
+ENT_API ent_status ent_exposure_create(const ent_scene* scene, const ent_exposure_desc* desc,
+                                       ent_exposure** out_exposure);
+
+/**
+ * Destroys a prepared target. NULL is ignored. It may outlive its scene (it keeps no
+ * reference to it).
+ * @warning No call with this exposure may run during or after this one.
+ */
+ENT_API void ent_exposure_destroy(ent_exposure* exposure);
+
+/**
+ * The answer of ent_scene_exposure. The caller sets struct_size and, to receive them, the
+ * arrays and their capacities; the rest is written by the call.
+ */
+typedef struct ent_exposure_result {
+    uint32_t struct_size;        /**< in: sizeof(ent_exposure_result). */
+    uint32_t span_capacity;      /**< in: spans the arrays below have room for. */
+    /** in: span_capacity x 2 doubles, or NULL: receives, for each span of the bowel that hides
+     *  part of the target, its first and last u (u in [0, 1]: arc length from the first end
+     *  over the axis' length, as ent_contact.u). A span is a run of the axis whose surface
+     *  crosses a sight line to the target; runs less than one local diameter apart along the
+     *  bowel are one span (one loop). Listed along the bowel, tube by tube. */
+    double* spans_u;
+    /** in: span_capacity doubles, or NULL: receives the fraction of the target's weight each
+     *  span hides (the weight of the sight lines it crosses, over the total). Spans may hide
+     *  the same sight line: these may sum to more than 1 - visible_fraction. Moving the span
+     *  with the largest fraction clears the most. */
+    double* span_hidden_fractions;
+    /** in: span_capacity int32, or NULL: receives the tube each span belongs to (0: the
+     *  scene's one intestine). */
+    int32_t* span_intestines;
+    /** in: NULL, or an array with one double per element of the target (per point, or per
+     *  triangle of a patch): receives the fraction of that element seen, 0 to 1. */
+    double* element_visible;
+    double visible_fraction;     /**< out: the weight of the target seen over its total weight, 0 to 1. */
+    uint32_t span_count;         /**< out: spans that hide part of the target; above span_capacity only the first span_capacity are written. */
+    uint32_t samples;            /**< out: sample points of the target (points, or triangles x samples_per_edge^2). */
+    uint32_t hidden_samples;     /**< out: of those, hidden by the bowel. */
+    double time_s;               /**< out: simulated time of the published state measured. */
+    uint64_t steps;              /**< out: its successful step count (as ent_stats.steps). */
+} ent_exposure_result;
+
+/**
+ * How much of a target the bowel leaves in sight from a viewpoint (the laparoscope's tip):
+ * the weighted fraction of the target's sample points whose straight sight line from the
+ * viewpoint does not pass through the bowel, a tube of its radius around the axis of the
+ * last published state (the same surface the skins draw and the contacts keep apart), and
+ * the spans of the bowel that hide the rest. Only the bowel hides: organs, the target's own
+ * organ and which way its surface faces are the caller's (a point on the far side of the
+ * liver counts as seen). A viewpoint inside the bowel sees nothing.
+ * @code
+ *   ent_exposure_desc desc;
+ *   ent_exposure_desc_default(&desc);
+ *   desc.points_xyz_m = gallbladder_xyz;  desc.point_count = 40;  // on the liver's frame:
+ *   desc.obstacle = liver;
+ *   ent_exposure* target = NULL;
+ *   ent_exposure_create(scene, &desc, &target);                  // once: it allocates
+ *   double spans[8 * 2];
+ *   ent_exposure_result r = {0};
+ *   r.struct_size = sizeof r;  r.span_capacity = 8;  r.spans_u = spans;
+ *   ent_scene_exposure(scene, target, scope_tip_m, &r);          // any thread, often
+ *   printf("%.0f %% seen\n", 100 * r.visible_fraction);
+ * @endcode
+ * Cost: about 1 us of CPU per sample with the 6 m bowel piled across every sight line
+ * (0.13 ms for 97 points, 1 ms for 1009; bench/results/exposure.md), proportional to the
+ * samples. Reads the last published snapshot: any thread, also while the scene steps; never
+ * waits for the step (it pins the snapshot only while it copies the axis) and allocates
+ * nothing. An exposure is used by one thread at a time: a second call on the same exposure
+ * while one runs returns ENT_ERROR_BUSY at once and changes nothing (use one exposure per
+ * thread).
+ * @param viewpoint_m the eye, m, world frame.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, a non-finite viewpoint, spans_u NULL
+ *         with a span_capacity, an exposure made for another scene); ENT_ERROR_VERSION
+ *         (struct_size); ENT_ERROR_NOT_FOUND (the target's obstacle was removed);
+ *         ENT_ERROR_BUSY (this exposure is measuring on another thread). Nothing is written
+ *         on failure.
+ */
+ENT_API ent_status ent_scene_exposure(const ent_scene* scene, ent_exposure* exposure, const double viewpoint_m[3],
+                                      ent_exposure_result* out);
+
+/* ------------------------------------------------------------------------------------ */
 /* Skins: a closed triangle mesh of the bowel surface, for rendering                    */
 /* ------------------------------------------------------------------------------------ */
 
@@ -1196,9 +1406,11 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
  * buffers keep headroom; tests/no_alloc/skin_no_alloc.cpp checks this on a moving bowel).
  * Invalidates the previous ent_skin_mesh view.
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_OUT_OF_MEMORY (the previous
- *         mesh may then be incomplete: update again).
- * @warning Calls on one skin (update, mesh, metrics, destroy) must not race each other; use
- *          one skin per thread, or your own lock.
+ *         mesh may then be incomplete: update again); ENT_ERROR_BUSY (another thread is in
+ *         a call on this skin; nothing done).
+ * @warning Calls on one skin (update, mesh, metrics) are made by one thread at a time; use
+ *          one skin per thread, or your own lock. A call that overlaps another on the same
+ *          skin is refused with ENT_ERROR_BUSY rather than corrupting its buffers.
  */
 ENT_API ent_status ent_skin_update(ent_skin* skin);
 
@@ -1242,7 +1454,8 @@ typedef struct ent_mesh_view {
  * Points *out at the skin's mesh, without copying. Set out->struct_size first; fields
  * beyond an older, smaller struct_size are not written. Before the first update the mesh
  * is empty (counts 0, pointers NULL).
- * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size).
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
+ *         ENT_ERROR_BUSY (another thread is in a call on this skin).
  */
 ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out);
 
@@ -1323,11 +1536,16 @@ struct ent_skin_metrics {
  *   if (ent_skin_metrics(skin, &m) == ENT_OK) printf("radius RMS %.3f %%\n", 100 * m.radius_error_rms);
  * @endcode
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL); ENT_ERROR_VERSION (struct_size);
- *         ENT_ERROR_OUT_OF_MEMORY.
+ *         ENT_ERROR_OUT_OF_MEMORY; ENT_ERROR_BUSY (another thread is in a call on this skin).
  */
 ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metrics* out);
 
-/** Destroys a skin and its mesh (any view of it becomes invalid). NULL is ignored. */
+/**
+ * Destroys a skin and its mesh (any view of it becomes invalid). NULL is ignored.
+ * A call on this skin already running on another thread (an update) finishes, and the
+ * skin's memory goes as it returns; a call begun after this one returned is the caller's
+ * bug (the handle may be gone).
+ */
 ENT_API void ent_skin_destroy(ent_skin* skin);
 
 #ifdef __cplusplus

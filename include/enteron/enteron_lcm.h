@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * Enteron LCM bridge: haptic-device drivers, viewers and loggers talk to a running scene
  * over LCM (Lightweight Communications and Marshalling, https://lcm-proj.github.io).
@@ -271,8 +272,10 @@ ENT_API ent_status ent_lcm_bridge_stop(ent_lcm_bridge* bridge);
  * at received_ns on the bridge's clock: what tests and fuzzers use instead of a network.
  * The bytes go through every check a received command goes through (exact encoded size,
  * fingerprint, finite values, non-zero quaternion, existing tool, 0/1 levels, increasing
- * seq); a rejected command is counted by reason and logged, never applied. Any thread;
- * calls are serialised with the receive thread, never with the tick.
+ * seq); a rejected command is counted by reason and logged, never applied, and the tool's
+ * feedback carries STATUS_COMMANDS_REJECTED with the reason for the watchdog time
+ * (docs/lcm.md). Any thread; calls are serialised with the receive thread, never with the
+ * tick.
  * @return ENT_OK when accepted; ENT_ERROR_INVALID_ARGUMENT (NULL bridge, or bytes NULL
  *         with size > 0, or the command was rejected: the message says why).
  */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The library's geometry vocabulary: Eigen's fixed-size vectors for the
 // per-contact and per-node maths, and maps that view our own packed x y z arrays (the
 // state vectors, sphere centres) as 3-vectors without copying. One Vec3 for every layer.
@@ -29,6 +30,9 @@ inline Vec3 normalized_or(const Vec3& a, const Vec3& fallback) {
     const double n = a.norm();
     return n > 1e-300 ? Vec3((1.0 / n) * a) : fallback;
 }
+
+// a a^T.
+inline Mat3 outer(const Vec3& a) { return a * a.transpose(); }
 
 // Point i of a packed x y z array, read-only or writable.
 inline Eigen::Map<const Vec3> point_at(const double* xyz, std::size_t i) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ENTERON_HOT_KERNEL marks a function that the compiler builds twice, for the x86-64
 // baseline and for x86-64-v3 (AVX2), the dynamic loader picking the one this processor runs
 // (GCC's target_clones, an ifunc resolved by glibc). The library still runs on any x86-64,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Log lines go to the scene's callback only; without one the library is silent.
 // Formatting uses a stack buffer, so logging from the step allocates nothing.
 #pragma once

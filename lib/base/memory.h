@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Memory for one scene: every buffer a scene owns comes from its memory resource, so the
 // caller's allocator callbacks (ent_callbacks) see every byte, and a step can be checked to
 // allocate nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The saved state of a scene (ent_scene_save_state, ent_scene_restore_state): a versioned,
 // self-describing binary image, laid out in docs/scoring-and-state.md.
 //

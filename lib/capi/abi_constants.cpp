@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every ENT_* constant of enteron.h equals the internal value it stands for, so that the
 // library can pass them through with a cast: a change on either side stops the build.
 #include "base/error.h"

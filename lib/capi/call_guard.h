@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every C entry point runs its body through guarded(): exceptions become a status and a
 // message for ent_last_error(); nothing escapes into the caller's C code.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contact entry points of the C API: the published contact list, the bowel's summary
 // (largest force and stretch) and each tool's touches. Queries of the last published
 // snapshot, from any thread: they pin it only while they copy.
@@ -19,7 +20,7 @@ using enteron::Error;
 using enteron::ErrorCode;
 using enteron::capi::SceneHandle;
 using enteron::capi::guarded;
-using enteron::capi::live_handle;
+using enteron::capi::SceneCall;
 using enteron::capi::require;
 using enteron::collision::ContactKind;
 using enteron::collision::ContactRecord;
@@ -62,7 +63,8 @@ extern "C" {
 ENT_API ent_status ent_scene_contacts(const ent_scene* scene, uint32_t capacity, ent_contact* out,
                                       uint32_t* out_count) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_count, "out_count");
         // The sizes of ent_contact in released headers: only the current one so far.
         if (out != nullptr) enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_contact)}, "out[0] (ent_contact)");
@@ -89,7 +91,8 @@ ENT_API ent_status ent_scene_contacts(const ent_scene* scene, uint32_t capacity,
 
 ENT_API ent_status ent_scene_contact_summary(const ent_scene* scene, ent_contact_summary* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_contact_summary)}, "ent_contact_summary");
         const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
@@ -119,7 +122,8 @@ ENT_API ent_status ent_scene_contact_summary(const ent_scene* scene, ent_contact
 
 ENT_API ent_status ent_tool_read_contacts(const ent_scene* scene, int32_t tool, ent_tool_contacts* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_tool_contacts)}, "ent_tool_contacts");
         if (out->ranges_u == nullptr && out->range_capacity > 0)

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: Apache-2.0
 // The environment entry points of the C API: rigid obstacles around the bowel, which the
 // caller may move, re-grip and remove between steps.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -22,7 +24,7 @@ using enteron::Error;
 using enteron::ErrorCode;
 using enteron::capi::SceneHandle;
 using enteron::capi::guarded;
-using enteron::capi::live_handle;
+using enteron::capi::SceneCall;
 using enteron::capi::require;
 
 enteron::Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
@@ -157,7 +159,8 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
 
 ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_desc* desc, int32_t* out_obstacle) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require(desc, "desc");
         enteron::capi::check_struct_size(desc->struct_size, {kObstacleDescBeforeMeshes, sizeof(ent_obstacle_desc)},
                                          "ent_obstacle_desc");
@@ -181,18 +184,17 @@ ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_d
 ENT_API ent_status ent_obstacle_set_pose(ent_scene* scene, int32_t obstacle, const double position_m[3],
                                          const double orientation_wxyz[4]) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require_finite(position_m, 3, "position_m");
         require_finite(orientation_wxyz, 4, "orientation_wxyz");
-        const double norm = std::sqrt(orientation_wxyz[0] * orientation_wxyz[0] + orientation_wxyz[1] * orientation_wxyz[1] +
-                                      orientation_wxyz[2] * orientation_wxyz[2] + orientation_wxyz[3] * orientation_wxyz[3]);
-        if (!(norm > 1e-12) || !std::isfinite(norm))
-            throw Error(ErrorCode::invalid_argument, "orientation_wxyz must be a non-zero quaternion (w x y z)");
+        const std::array<double, 4> q = enteron::scene::unit_quaternion(
+            {orientation_wxyz[0], orientation_wxyz[1], orientation_wxyz[2], orientation_wxyz[3]},
+            [] { return std::string("orientation_wxyz"); }, ErrorCode::invalid_argument);
         const enteron::capi::DrivingCall driving(handle, "ent_obstacle_set_pose");
         enteron::mechanics::RigidPose pose;
         pose.position = vec3(position_m);
-        pose.orientation = Eigen::Quaterniond(orientation_wxyz[0] / norm, orientation_wxyz[1] / norm,
-                                              orientation_wxyz[2] / norm, orientation_wxyz[3] / norm);
+        pose.orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
         handle.scene->set_obstacle_pose(obstacle_index(*handle.scene, obstacle), pose);
     });
 }
@@ -200,7 +202,8 @@ ENT_API ent_status ent_obstacle_set_pose(ent_scene* scene, int32_t obstacle, con
 ENT_API ent_status ent_obstacle_set_velocity(ent_scene* scene, int32_t obstacle, const double linear_m_per_s[3],
                                              const double angular_rad_per_s[3]) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require_finite(linear_m_per_s, 3, "linear_m_per_s");
         require_finite(angular_rad_per_s, 3, "angular_rad_per_s");
         const enteron::capi::DrivingCall driving(handle, "ent_obstacle_set_velocity");
@@ -211,7 +214,8 @@ ENT_API ent_status ent_obstacle_set_velocity(ent_scene* scene, int32_t obstacle,
 
 ENT_API ent_status ent_obstacle_set_friction(ent_scene* scene, int32_t obstacle, double friction) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         if (std::isnan(friction) || std::isinf(friction))
             throw Error(ErrorCode::invalid_argument, "friction must be finite (>= 0, or negative for the scene's)");
         const enteron::capi::DrivingCall driving(handle, "ent_obstacle_set_friction");
@@ -221,7 +225,8 @@ ENT_API ent_status ent_obstacle_set_friction(ent_scene* scene, int32_t obstacle,
 
 ENT_API ent_status ent_scene_remove_obstacle(ent_scene* scene, int32_t obstacle) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_scene_remove_obstacle");
         handle.scene->remove_obstacle(obstacle_index(*handle.scene, obstacle));
     });
@@ -229,7 +234,8 @@ ENT_API ent_status ent_scene_remove_obstacle(ent_scene* scene, int32_t obstacle)
 
 ENT_API ent_status ent_scene_obstacle_count(const ent_scene* scene, uint32_t* out_count) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_count, "out_count");
         const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
         uint32_t count = 0;
@@ -241,7 +247,8 @@ ENT_API ent_status ent_scene_obstacle_count(const ent_scene* scene, uint32_t* ou
 ENT_API ent_status ent_obstacle_pose(const ent_scene* scene, int32_t obstacle, double position_m[3],
                                      double orientation_wxyz[4]) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(position_m, "position_m");
         require(orientation_wxyz, "orientation_wxyz");
         const enteron::mechanics::RigidPose pose = published_obstacle(handle, obstacle).pose;
@@ -257,7 +264,8 @@ ENT_API ent_status ent_obstacle_mesh(ent_scene* scene, int32_t obstacle, uint32_
                                      double* vertices_xyz_m, uint32_t* out_vertex_count, uint32_t triangle_capacity,
                                      uint32_t* triangles, uint32_t* out_triangle_count) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require(out_vertex_count, "out_vertex_count");
         require(out_triangle_count, "out_triangle_count");
         const enteron::capi::DrivingCall driving(handle, "ent_obstacle_mesh");
@@ -280,7 +288,8 @@ ENT_API ent_status ent_obstacle_mesh(ent_scene* scene, int32_t obstacle, uint32_
 
 ENT_API ent_status ent_scene_set_gravity(ent_scene* scene, const double gravity_m_per_s2[3]) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require_finite(gravity_m_per_s2, 3, "gravity_m_per_s2");
         const enteron::capi::DrivingCall driving(handle, "ent_scene_set_gravity");
         handle.scene->set_gravity(vec3(gravity_m_per_s2));
@@ -289,7 +298,8 @@ ENT_API ent_status ent_scene_set_gravity(ent_scene* scene, const double gravity_
 
 ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point, int32_t obstacle) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_scene_pin_point");
         enteron::scene::Scene& s = *handle.scene;
         require_control_point(s, control_point);
@@ -301,7 +311,8 @@ ENT_API ent_status ent_scene_pin_point(ent_scene* scene, uint32_t control_point,
 
 ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_point) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_scene_unpin_point");
         enteron::scene::Scene& s = *handle.scene;
         require_control_point(s, control_point);
@@ -312,7 +323,8 @@ ENT_API ent_status ent_scene_unpin_point(ent_scene* scene, uint32_t control_poin
 
 ENT_API ent_status ent_scene_attach_mesentery(ent_scene* scene, int32_t obstacle) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_scene_attach_mesentery");
         enteron::scene::Scene& s = *handle.scene;
         std::optional<std::size_t> frame;
@@ -323,7 +335,8 @@ ENT_API ent_status ent_scene_attach_mesentery(ent_scene* scene, int32_t obstacle
 
 ENT_API ent_status ent_scene_attach_clamped_end(ent_scene* scene, int32_t ends, int32_t obstacle) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         if (ends != ENT_PIN_FIRST && ends != ENT_PIN_LAST && ends != ENT_PIN_BOTH)
             throw Error(ErrorCode::invalid_argument, "ent_scene_attach_clamped_end: ends is " + std::to_string(ends) +
                                                          ", not ENT_PIN_FIRST (1), ENT_PIN_LAST (2) or ENT_PIN_BOTH (3)");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene entry points of the C API: create, destroy, step and the snapshot queries.
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ namespace {
 
 using enteron::capi::SceneHandle;
 using enteron::capi::handle_of;
-using enteron::capi::live_handle;
+using enteron::capi::SceneCall;
 
 // A validated config as a scene, after the warnings of the values no abdomen has.
 ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::SceneConfig& config,
@@ -51,6 +52,7 @@ ent_scene* make_handle(const ent_callbacks* callbacks, const enteron::scene::Sce
     }
     try {
         enteron::scene::warn_implausible(config, names, handle->logger);
+        handle->description = enteron::capi::desc_from_config(config);
         handle->scene.emplace(config, *handle->published, handle->memory, handle->logger, names);
     } catch (...) {
         enteron::capi::release(handle);
@@ -71,6 +73,11 @@ void release(SceneHandle* handle) {
         callbacks.release(callbacks.user_data, handle, sizeof(SceneHandle), alignof(SceneHandle));
     else
         ::operator delete(handle);
+}
+
+void destroy_scene(SceneHandle* handle) noexcept {
+    handle->scene.reset();
+    release(handle);
 }
 
 }  // namespace enteron::capi
@@ -120,13 +127,14 @@ ENT_API ent_status ent_scene_create_json(const char* json, size_t length, ent_sc
 ENT_API void ent_scene_destroy(ent_scene* scene) {
     if (scene == nullptr) return;
     SceneHandle* handle = handle_of(scene);
-    handle->scene.reset();
-    enteron::capi::release(handle);
+    // With calls still in flight on other threads, the last of them destroys it as it returns.
+    if (handle->calls.destroy()) enteron::capi::destroy_scene(handle);
 }
 
 ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_scene_step");
         handle.scene->step(dt_s);
     });
@@ -134,7 +142,8 @@ ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s) {
 
 ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double* points_xyz_m) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(points_xyz_m, "points_xyz_m");
         if (count < 2) throw Error(ErrorCode::invalid_argument, "count must be >= 2, got " + std::to_string(count));
         const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
@@ -146,7 +155,8 @@ ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double
 ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t capacity, double* points_xyz_m,
                                             uint32_t* out_count) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_count, "out_count");
         const uint32_t count = static_cast<uint32_t>(handle.published->control_points());
         if (points_xyz_m != nullptr && capacity < count) {
@@ -163,7 +173,8 @@ ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t cap
 
 ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         // The sizes of ent_stats in released headers; fields past an older size are not
         // written. 0.0 preview: without last_step_ns (a simulated release, see
@@ -190,7 +201,8 @@ ENT_API ent_status ent_scene_stats(const ent_scene* scene, ent_stats* out) {
 
 ENT_API ent_status ent_scene_effect_stats(const ent_scene* scene, int32_t effect, ent_effect_stats* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_effect_stats)}, "ent_effect_stats");
         if (effect < 0 || effect >= ENT_EFFECT_COUNT)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "capi/scene_desc.h"
 
 #include <cstddef>
@@ -5,6 +6,8 @@
 #include <utility>
 
 #include "capi/call_guard.h"
+#include "capi/desc_fields.h"
+#include "capi/scene_handle.h"
 #include "capi/struct_size.h"
 #include "scene/validate.h"
 
@@ -15,58 +18,74 @@ namespace {
 // Larger inputs than these are refused before anything is copied from the caller's arrays.
 constexpr uint32_t kMaxControlPoints = 100000;
 
-Vec3 vec3(const double v[3]) { return {v[0], v[1], v[2]}; }
+// The fields of ent_scene_desc that are values of the scene's table, each the row of its
+// name (scene/scene_table.cpp). The others: struct_size, effects, the arrays and their
+// counts, callbacks.
+#define SCENE_FIELD(field) ENTERON_DESC_FIELD(ent_scene_desc, field)
+const DescField<ent_scene_desc> kSceneDescFields[] = {
+    SCENE_FIELD(length_m), SCENE_FIELD(radius_m), SCENE_FIELD(control_points), SCENE_FIELD(linear_density_kg_per_m),
+    SCENE_FIELD(stretch_stiffness_N), SCENE_FIELD(bend_stiffness_N_m2),
+    SCENE_FIELD(shape), SCENE_FIELD(shape_center_m), SCENE_FIELD(shape_direction), SCENE_FIELD(shape_leg_length_m),
+    SCENE_FIELD(shape_leg_spacing_m), SCENE_FIELD(shape_helix_radius_m), SCENE_FIELD(shape_helix_pitch_m),
+    SCENE_FIELD(integrator), SCENE_FIELD(timestep_s), SCENE_FIELD(max_substeps), SCENE_FIELD(max_subdivisions),
+    SCENE_FIELD(max_speed_m_per_s),
+    SCENE_FIELD(gravity_m_per_s2),
+    SCENE_FIELD(drag_N_s_per_m2), SCENE_FIELD(stretch_damping_N_s), SCENE_FIELD(bend_damping_N_m2_s),
+    SCENE_FIELD(mesentery_root_start_m), SCENE_FIELD(mesentery_root_end_m), SCENE_FIELD(mesentery_attachments),
+    SCENE_FIELD(mesentery_stiffness_N_per_m), SCENE_FIELD(mesentery_rest_length_m),
+    SCENE_FIELD(pinned_ends), SCENE_FIELD(clamped_ends),
+    SCENE_FIELD(collision_sphere_spacing_m), SCENE_FIELD(contact_stiffness_N_per_m),
+    SCENE_FIELD(contact_damping_N_s_per_m), SCENE_FIELD(contact_friction), SCENE_FIELD(contact_slip_speed_m_per_s),
+};
+#undef SCENE_FIELD
+
+const DescBinding<ent_scene_desc>& scene_desc_fields() {
+    static const DescBinding<ent_scene_desc> binding(scene::scene_block(), kSceneDescFields);
+    return binding;
+}
+
+// The effects a description turns on by bit; the environment starts with an obstacle,
+// the tools with a tool.
+constexpr uint32_t kDescEffects = ((1u << (ENT_EFFECT_PINNED + 1)) - 1u) | ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
+
+// config with every effect a description can turn on present, those it leaves off at their
+// defaults (gravity the Earth's): what a desc's fields show whatever its bits.
+scene::SceneConfig with_every_effect(scene::SceneConfig config) {
+    if (!config.gravity) config.gravity = scene::kStandardGravity;
+    if (!config.damping) config.damping.emplace();
+    if (!config.mesentery) config.mesentery.emplace();
+    if (!config.pinned) config.pinned.emplace();
+    return config;
+}
+
+}  // namespace
+
+ent_scene_desc desc_from_config(const scene::SceneConfig& config) {
+    ent_scene_desc desc;
+    std::memset(&desc, 0, sizeof desc);
+    desc.struct_size = sizeof desc;
+    const scene::SceneConfig all = with_every_effect(config);
+    scene_desc_fields().write(&all, desc);
+    const auto bit = [](bool on, int effect) { return on ? ENT_EFFECT_BIT(effect) : 0u; };
+    desc.effects = bit(config.intestine.stretch_stiffness != 0.0, ENT_EFFECT_STRETCH) |
+                   bit(config.intestine.bend_stiffness != 0.0, ENT_EFFECT_BEND) |
+                   bit(config.damping.has_value(), ENT_EFFECT_DAMPING) |
+                   bit(config.gravity.has_value(), ENT_EFFECT_GRAVITY) |
+                   bit(config.mesentery.has_value(), ENT_EFFECT_MESENTERY) |
+                   bit(config.pinned.has_value(), ENT_EFFECT_PINNED) |
+                   bit(config.self_collision, ENT_EFFECT_SELF_COLLISION);
+    return desc;
+}
+
+namespace {
 
 // The defaults of the current ent_scene_desc, whole: those of a default SceneConfig (one
 // set for JSON and C), with gravity and damping turned on.
 ent_scene_desc default_desc() {
-    ent_scene_desc desc;
-    const scene::SceneConfig defaults;
-    const scene::IntestineConfig& intestine = defaults.intestine;
-    const scene::ShapeConfig& shape = intestine.shape;
-    const scene::DampingConfig damping;
-    const scene::MesenteryConfig mesentery;
-    std::memset(&desc, 0, sizeof desc);
-    desc.struct_size = sizeof desc;
-    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
-                   ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
-    desc.length_m = intestine.length;
-    desc.radius_m = intestine.radius;
-    desc.control_points = static_cast<uint32_t>(intestine.control_points);
-    desc.linear_density_kg_per_m = intestine.linear_density;
-    desc.stretch_stiffness_N = intestine.stretch_stiffness;
-    desc.bend_stiffness_N_m2 = intestine.bend_stiffness;
-    desc.shape = static_cast<int32_t>(shape.kind);
-    for (int c = 0; c < 3; ++c) {
-        desc.shape_center_m[c] = shape.center[c];
-        desc.shape_direction[c] = shape.direction[c];
-        desc.gravity_m_per_s2[c] = scene::kStandardGravity[c];
-        desc.mesentery_root_start_m[c] = mesentery.root_start[c];
-        desc.mesentery_root_end_m[c] = mesentery.root_end[c];
-    }
-    desc.shape_leg_length_m = shape.leg_length;
-    desc.shape_leg_spacing_m = shape.leg_spacing;
-    desc.shape_helix_radius_m = shape.helix_radius;
-    desc.shape_helix_pitch_m = shape.helix_pitch;
-    desc.integrator = static_cast<int32_t>(defaults.solver.integrator);
-    desc.timestep_s = defaults.solver.timestep;
-    desc.max_substeps = static_cast<uint32_t>(defaults.solver.max_substeps);
-    desc.max_subdivisions = static_cast<uint32_t>(defaults.solver.max_subdivisions);
-    desc.max_speed_m_per_s = defaults.solver.max_speed;
-    desc.drag_N_s_per_m2 = damping.drag;
-    desc.stretch_damping_N_s = damping.stretch;
-    desc.bend_damping_N_m2_s = damping.bend;
-    desc.mesentery_attachments = static_cast<uint32_t>(mesentery.attachments);
-    desc.mesentery_stiffness_N_per_m = mesentery.stiffness;
-    desc.mesentery_rest_length_m = mesentery.rest_length;
-    desc.pinned_ends = scene::PinnedConfig{}.ends;
-    desc.clamped_ends = scene::PinnedConfig{}.clamped;
-    desc.collision_sphere_spacing_m = defaults.collision.sphere_spacing;
-    desc.contact_stiffness_N_per_m = defaults.collision.contact.stiffness;
-    desc.contact_damping_N_s_per_m = defaults.collision.contact.damping;
-    desc.contact_friction = defaults.collision.contact.friction;
-    desc.contact_slip_speed_m_per_s = defaults.collision.contact.slip_speed;
-    return desc;
+    scene::SceneConfig defaults;
+    defaults.gravity = scene::kStandardGravity;
+    defaults.damping.emplace();
+    return desc_from_config(defaults);
 }
 
 }  // namespace
@@ -106,73 +125,33 @@ void check_callbacks(const ent_callbacks& callbacks) {
 scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
     scene::SceneConfig config;
     const auto has = [&](int effect) { return (desc.effects & ENT_EFFECT_BIT(effect)) != 0; };
-    // The effects a description turns on by bit; the environment starts with an obstacle,
-    // the tools with a tool.
-    constexpr uint32_t kDescEffects =
-        ((1u << (ENT_EFFECT_PINNED + 1)) - 1u) | ENT_EFFECT_BIT(ENT_EFFECT_SELF_COLLISION);
     if ((desc.effects & ~kDescEffects) != 0)
         throw Error(ErrorCode::invalid_argument,
                     "effects has bits of effects a description cannot turn on (environment starts with "
                     "ent_scene_add_obstacle, tools with ent_tool_add), got " + std::to_string(desc.effects));
+    if (has(ENT_EFFECT_GRAVITY)) config.gravity.emplace();
+    if (has(ENT_EFFECT_DAMPING)) config.damping.emplace();
+    if (has(ENT_EFFECT_MESENTERY)) config.mesentery.emplace();
+    if (has(ENT_EFFECT_PINNED)) config.pinned.emplace();
+    config.self_collision = has(ENT_EFFECT_SELF_COLLISION);
+    scene_desc_fields().read(desc, &config);
 
     scene::IntestineConfig& intestine = config.intestine;
-    intestine.length = desc.length_m;
-    intestine.radius = desc.radius_m;
-    intestine.control_points = desc.control_points;
-    intestine.linear_density = desc.linear_density_kg_per_m;
     // Without its bit an elasticity is off, as a zero stiffness is.
-    intestine.stretch_stiffness = has(ENT_EFFECT_STRETCH) ? desc.stretch_stiffness_N : 0.0;
-    intestine.bend_stiffness = has(ENT_EFFECT_BEND) ? desc.bend_stiffness_N_m2 : 0.0;
-
-    scene::ShapeConfig& shape = intestine.shape;
-    shape.kind = static_cast<scene::ShapeKind>(desc.shape);
-    shape.center = vec3(desc.shape_center_m);
-    shape.direction = vec3(desc.shape_direction);
-    shape.leg_length = desc.shape_leg_length_m;
-    shape.leg_spacing = desc.shape_leg_spacing_m;
-    shape.helix_radius = desc.shape_helix_radius_m;
-    shape.helix_pitch = desc.shape_helix_pitch_m;
+    if (!has(ENT_EFFECT_STRETCH)) intestine.stretch_stiffness = 0.0;
+    if (!has(ENT_EFFECT_BEND)) intestine.bend_stiffness = 0.0;
     if (desc.shape == ENT_SHAPE_POINTS && desc.control_points <= kMaxControlPoints) {
         require(desc.shape_points_xyz_m, "shape_points_xyz_m (with shape ENT_SHAPE_POINTS)");
-        shape.points.assign(desc.shape_points_xyz_m, desc.shape_points_xyz_m + 3 * std::size_t{desc.control_points});
+        intestine.shape.points.assign(desc.shape_points_xyz_m,
+                                      desc.shape_points_xyz_m + 3 * std::size_t{desc.control_points});
     }
-
-    scene::SolverConfig& solver = config.solver;
-    solver.integrator = static_cast<mechanics::IntegratorKind>(desc.integrator);
-    solver.timestep = desc.timestep_s;
-    solver.max_substeps = desc.max_substeps;
-    solver.max_subdivisions = desc.max_subdivisions;
-    solver.max_speed = desc.max_speed_m_per_s;
-
-    if (has(ENT_EFFECT_GRAVITY)) config.gravity = vec3(desc.gravity_m_per_s2);
-    if (has(ENT_EFFECT_DAMPING))
-        config.damping = scene::DampingConfig{desc.drag_N_s_per_m2, desc.stretch_damping_N_s,
-                                              desc.bend_damping_N_m2_s};
-    if (has(ENT_EFFECT_MESENTERY))
-        config.mesentery = scene::MesenteryConfig{vec3(desc.mesentery_root_start_m),
-                                                  vec3(desc.mesentery_root_end_m),
-                                                  desc.mesentery_attachments,
-                                                  desc.mesentery_stiffness_N_per_m,
-                                                  desc.mesentery_rest_length_m, std::nullopt};
-    if (has(ENT_EFFECT_PINNED)) {
-        scene::PinnedConfig pinned;
-        pinned.ends = desc.pinned_ends;
-        pinned.clamped = desc.clamped_ends;
-        if (desc.pinned_point_count > 0) {
-            if (desc.pinned_point_count > desc.control_points || desc.pinned_point_count > kMaxControlPoints)
-                throw Error(ErrorCode::invalid_argument, "pinned_point_count must be <= control_points, got " +
-                                                             std::to_string(desc.pinned_point_count));
-            require(desc.pinned_points, "pinned_points (with pinned_point_count > 0)");
-            pinned.points.assign(desc.pinned_points, desc.pinned_points + desc.pinned_point_count);
-        }
-        config.pinned = pinned;
+    if (config.pinned && desc.pinned_point_count > 0) {
+        if (desc.pinned_point_count > desc.control_points || desc.pinned_point_count > kMaxControlPoints)
+            throw Error(ErrorCode::invalid_argument, "pinned_point_count must be <= control_points, got " +
+                                                         std::to_string(desc.pinned_point_count));
+        require(desc.pinned_points, "pinned_points (with pinned_point_count > 0)");
+        config.pinned->points.assign(desc.pinned_points, desc.pinned_points + desc.pinned_point_count);
     }
-    config.self_collision = has(ENT_EFFECT_SELF_COLLISION);
-    config.collision.sphere_spacing = desc.collision_sphere_spacing_m;
-    config.collision.contact.stiffness = desc.contact_stiffness_N_per_m;
-    config.collision.contact.damping = desc.contact_damping_N_s_per_m;
-    config.collision.contact.friction = desc.contact_friction;
-    config.collision.contact.slip_speed = desc.contact_slip_speed_m_per_s;
     const scene::FieldSet given = scene::fields_apart_from_defaults(config);
     return scene::validate(std::move(config), scene::c_field_names(), given);
 }
@@ -189,6 +168,19 @@ ENT_API ent_status ent_callbacks_init(ent_callbacks* callbacks, uint32_t struct_
         std::memset(&defaults, 0, sizeof defaults);
         defaults.struct_size = struct_size;
         std::memcpy(callbacks, &defaults, struct_size);
+    });
+}
+
+ENT_API ent_status ent_scene_read_desc(const ent_scene* scene, ent_scene_desc* out) {
+    return enteron::capi::guarded([&] {
+        const enteron::capi::SceneCall call(scene);
+        const enteron::capi::SceneHandle& handle = call.handle();
+        enteron::capi::require(out, "out");
+        enteron::capi::check_scene_desc_size(out->struct_size);
+        ent_scene_desc desc = handle.description;
+        desc.struct_size = out->struct_size;
+        // An older caller's struct ends at struct_size: write nothing past it.
+        std::memcpy(out, &desc, out->struct_size);
     });
 }
 

@@ -1,6 +1,8 @@
+// SPDX-License-Identifier: Apache-2.0
 // The skin entry points of the C API: a skin wraps a lib/skinning skin, the published
 // snapshots of its scene (shared: a skin may outlive its scene) and the copy of the axis
 // it reads into.
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "capi/call_guard.h"
+#include "capi/calls_in_flight.h"
 #include "capi/scene_handle.h"
 #include "capi/struct_size.h"
 #include "scene/checked_value.h"
@@ -39,10 +42,44 @@ struct SkinHandle {
     double time_s = 0.0;
     uint64_t updates = 0;
     uint64_t last_update_ns = 0;
+    enteron::capi::CallsInFlight calls;  // on the skin, and its destroy
+    std::atomic<bool> busy{false};       // while a call runs: one at a time per skin
 };
 
-SkinHandle* handle_of(ent_skin* skin) { return reinterpret_cast<SkinHandle*>(skin); }
-const SkinHandle* handle_of(const ent_skin* skin) { return reinterpret_cast<const SkinHandle*>(skin); }
+SkinHandle* handle_of(const ent_skin* skin) { return reinterpret_cast<SkinHandle*>(const_cast<ent_skin*>(skin)); }
+
+// A call on a skin, for as long as it runs: counted in flight (calls_in_flight.h: a destroy
+// on another thread leaves the skin to the last call in flight), and alone on its skin. A
+// skin belongs to one thread at a time; a call made while another runs on the same skin on
+// another thread is refused as busy (it would read the buffers the other rewrites) instead
+// of corrupting them. `call` names the entry point, for the messages.
+class SkinCall {
+public:
+    SkinCall(const ent_skin* skin, const char* call) {
+        require(skin, "skin");
+        handle_ = handle_of(skin);
+        if (!handle_->calls.enter())
+            throw Error(ErrorCode::invalid_argument, std::string(call) + ": skin was destroyed (ent_skin_destroy)");
+        if (handle_->busy.exchange(true, std::memory_order_acquire)) {
+            if (handle_->calls.leave()) delete handle_;
+            throw Error(ErrorCode::busy, std::string(call) +
+                                             ": another thread is in a call on this skin (ent_skin_update, "
+                                             "ent_skin_mesh or ent_skin_metrics); a skin is used by one thread at "
+                                             "a time. Nothing was done: call again once it has returned");
+        }
+    }
+    ~SkinCall() {
+        handle_->busy.store(false, std::memory_order_release);
+        if (handle_->calls.leave()) delete handle_;
+    }
+    SkinCall(const SkinCall&) = delete;
+    SkinCall& operator=(const SkinCall&) = delete;
+
+    SkinHandle& handle() const { return *handle_; }
+
+private:
+    SkinHandle* handle_;
+};
 
 // A knob of the skin description, within [low, high].
 template <typename T>
@@ -152,7 +189,8 @@ ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size)
 
 ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, ent_skin** out_skin) {
     return guarded([&] {
-        SceneHandle& scene_handle = enteron::capi::live_handle(scene);
+        const enteron::capi::SceneCall call(scene);
+        SceneHandle& scene_handle = call.handle();
         require(desc, "desc");
         require(out_skin, "out_skin");
         const enteron::scene::Scene& s = *scene_handle.scene;
@@ -168,8 +206,8 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
 
 ENT_API ent_status ent_skin_update(ent_skin* skin) {
     return guarded([&] {
-        require(skin, "skin");
-        SkinHandle& h = *handle_of(skin);
+        const SkinCall call(skin, "ent_skin_update");
+        SkinHandle& h = call.handle();
         const auto start = std::chrono::steady_clock::now();
         {
             // Pin the snapshot only for the copy: the stepping thread keeps publishing.
@@ -186,10 +224,10 @@ ENT_API ent_status ent_skin_update(ent_skin* skin) {
 
 ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out) {
     return guarded([&] {
-        require(skin, "skin");
+        const SkinCall call(skin, "ent_skin_mesh");
         require(out, "out");
         check_mesh_view_size(out->struct_size);
-        const SkinHandle& h = *handle_of(skin);
+        const SkinHandle& h = call.handle();
         const enteron::skinning::Skin& sk = *h.skin;
         const enteron::skinning::Mesh& mesh = sk.mesh();
         ent_mesh_view full{};
@@ -214,10 +252,10 @@ ENT_API ent_status ent_skin_mesh(const ent_skin* skin, ent_mesh_view* out) {
 
 ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metrics* out) {
     return guarded([&] {
-        require(skin, "skin");
+        const SkinCall call(skin, "ent_skin_metrics");
         require(out, "out");
         check_skin_metrics_size(out->struct_size);
-        const SkinHandle& h = *handle_of(skin);
+        const SkinHandle& h = call.handle();
         struct ent_skin_metrics full{};
         full.struct_size = out->struct_size;
         if (h.updates > 0) {
@@ -267,7 +305,9 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
 
 ENT_API void ent_skin_destroy(ent_skin* skin) {
     if (skin == nullptr) return;
-    delete handle_of(skin);
+    SkinHandle* handle = handle_of(skin);
+    // With calls still in flight on other threads, the last of them deletes it as it returns.
+    if (handle->calls.destroy()) delete handle;
 }
 
 }  // extern "C"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Save and restore through the C API (docs/scoring-and-state.md): driving calls, since they read
 // or replace the live state of the scene, not a snapshot.
 #include <string>
@@ -9,14 +10,15 @@
 using enteron::Error;
 using enteron::ErrorCode;
 using enteron::capi::guarded;
-using enteron::capi::live_handle;
+using enteron::capi::SceneCall;
 using enteron::capi::require;
 
 extern "C" {
 
 ENT_API ent_status ent_scene_save_state(ent_scene* scene, void* buffer, size_t capacity, size_t* out_size) {
     return guarded([&] {
-        enteron::capi::SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        enteron::capi::SceneHandle& handle = call.handle();
         require(out_size, "out_size");
         const enteron::capi::DrivingCall driving(handle, "ent_scene_save_state");
         // Measured first: a buffer too small receives nothing.
@@ -32,7 +34,8 @@ ENT_API ent_status ent_scene_save_state(ent_scene* scene, void* buffer, size_t c
 
 ENT_API ent_status ent_scene_restore_state(ent_scene* scene, const void* buffer, size_t size) {
     return guarded([&] {
-        enteron::capi::SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        enteron::capi::SceneHandle& handle = call.handle();
         require(buffer, "buffer");
         const enteron::capi::DrivingCall driving(handle, "ent_scene_restore_state");
         handle.scene->restore_state(buffer, size);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Version, status strings, the per-thread last error, effect names.
 #include <cstring>
 
@@ -31,7 +32,7 @@ ENT_API const char* ent_status_string(ent_status status) {
         case ENT_ERROR_NOT_FOUND: return "not found";
         case ENT_ERROR_BUFFER_TOO_SMALL: return "buffer too small";
         case ENT_ERROR_INTERNAL: return "internal error";
-        case ENT_ERROR_BUSY: return "busy: another driving call is running on this scene";
+        case ENT_ERROR_BUSY: return "busy: another call that must not overlap is running on this scene or skin";
         default: return "unknown status";
     }
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The struct_size handshake of description structs. A struct_size is accepted only if it
 // is the size of that struct in some released header: the current one, or an older,
 // smaller one whose missing fields are then served with their defaults. Zero, garbage and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tool entry points of the C API: surgical instruments that push and grasp the bowel.
 // ent_tool_add is a driving call; the commands (pose, grasp, release) go through each
 // tool's wait-free mailbox and the outputs come from the published snapshot, so both work
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "capi/call_guard.h"
+#include "capi/desc_fields.h"
 #include "capi/driving_call.h"
 #include "capi/scene_handle.h"
 #include "capi/struct_size.h"
@@ -22,7 +24,7 @@ using enteron::Error;
 using enteron::ErrorCode;
 using enteron::capi::SceneHandle;
 using enteron::capi::guarded;
-using enteron::capi::live_handle;
+using enteron::capi::SceneCall;
 using enteron::capi::require;
 using enteron::collision::ToolMailbox;
 
@@ -55,9 +57,35 @@ PublishedTool published_tool(const SceneHandle& handle, int32_t tool) {
 }
 
 // The sizes of ent_tool_desc and ent_tool_feedback in released headers: before the fields
-// of the tool's proxy and stiffness, and now.
+// of the tool's proxy and stiffness, (the feedback) before saturated, and now.
 constexpr std::size_t kToolDescFirstSize = offsetof(ent_tool_desc, mode);
+
+// ent_tool_desc's fields, each the row of the tool's table with its name
+// (scene/scene_table.cpp); struct_size aside, all of them.
+#define TOOL_FIELD(field) ENTERON_DESC_FIELD(ent_tool_desc, field)
+const enteron::capi::DescField<ent_tool_desc> kToolDescFields[] = {
+    TOOL_FIELD(radius_m), TOOL_FIELD(length_m), TOOL_FIELD(max_force_N), TOOL_FIELD(grasp_margin_m),
+    TOOL_FIELD(grasp_stiffness_N_per_m), TOOL_FIELD(grasp_damping_N_s_per_m), TOOL_FIELD(position_m),
+    TOOL_FIELD(orientation_wxyz), TOOL_FIELD(mode), TOOL_FIELD(passivity_limiter),
+    TOOL_FIELD(coupling_stiffness_N_per_m), TOOL_FIELD(coupling_damping_N_s_per_m), TOOL_FIELD(friction),
+};
+#undef TOOL_FIELD
+
+const enteron::capi::DescBinding<ent_tool_desc>& tool_desc_fields() {
+    static const enteron::capi::DescBinding<ent_tool_desc> binding(enteron::scene::tool_block(), kToolDescFields);
+    return binding;
+}
+
+// A tool as a whole current ent_tool_desc.
+ent_tool_desc desc_of(const enteron::collision::ToolConfig& tool) {
+    ent_tool_desc desc;
+    std::memset(&desc, 0, sizeof desc);
+    desc.struct_size = sizeof desc;
+    tool_desc_fields().write(&tool, desc);
+    return desc;
+}
 constexpr std::size_t kToolFeedbackFirstSize = offsetof(ent_tool_feedback, stiffness_N_per_m);
+constexpr std::size_t kToolFeedbackProxySize = offsetof(ent_tool_feedback, saturated);
 
 // The published output of a tool that exists and is not removed.
 PublishedTool present_tool(const SceneHandle& handle, int32_t tool) {
@@ -74,30 +102,34 @@ ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size)
     return guarded([&] {
         require(desc, "desc");
         enteron::capi::check_struct_size(struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
-        const enteron::collision::ToolConfig tool;
-        ent_tool_desc defaults;
-        std::memset(&defaults, 0, sizeof defaults);
+        ent_tool_desc defaults = desc_of(enteron::collision::ToolConfig{});
         defaults.struct_size = struct_size;
-        defaults.radius_m = tool.settings.radius;
-        defaults.length_m = tool.settings.length;
-        defaults.max_force_N = tool.settings.max_force;
-        defaults.grasp_margin_m = tool.settings.grasp_margin;
-        defaults.grasp_stiffness_N_per_m = tool.settings.grasp_stiffness;
-        defaults.grasp_damping_N_s_per_m = tool.settings.grasp_damping;
-        for (int c = 0; c < 3; ++c) defaults.position_m[c] = tool.pose.position[c];
-        for (int c = 0; c < 4; ++c) defaults.orientation_wxyz[c] = tool.pose.orientation[c];
-        defaults.mode = static_cast<int32_t>(tool.settings.mode);
-        defaults.passivity_limiter = tool.settings.passivity_limiter ? 1 : 0;
-        defaults.coupling_stiffness_N_per_m = tool.settings.coupling_stiffness;
-        defaults.coupling_damping_N_s_per_m = tool.settings.coupling_damping;
-        defaults.friction = tool.settings.friction;
         std::memcpy(desc, &defaults, struct_size);
+    });
+}
+
+ENT_API ent_status ent_tool_read_desc(const ent_scene* scene, int32_t tool, ent_tool_desc* out) {
+    return guarded([&] {
+        const enteron::capi::SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
+        require(out, "out");
+        enteron::capi::check_struct_size(out->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
+        const enteron::collision::ToolChannels& channels = handle.scene->tool_channels();
+        const enteron::collision::ToolConfig* added = tool >= 0 ? channels.added(static_cast<std::size_t>(tool)) : nullptr;
+        if (added == nullptr) unknown_tool(tool, channels.size());
+        if (channels.mailbox(static_cast<std::size_t>(tool))->retired())
+            throw Error(ErrorCode::not_found, "tool " + std::to_string(tool) + " was removed");
+        ent_tool_desc desc = desc_of(*added);
+        desc.struct_size = out->struct_size;
+        // An older caller's struct ends at struct_size: write nothing past it.
+        std::memcpy(out, &desc, out->struct_size);
     });
 }
 
 ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int32_t* out_tool) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require(desc, "desc");
         enteron::capi::check_struct_size(desc->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
         const enteron::capi::DrivingCall driving(handle, "ent_tool_add");
@@ -107,25 +139,10 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
         std::memcpy(&full, desc, desc->struct_size);
         desc = &full;
         enteron::collision::ToolConfig tool;
-        tool.settings.radius = desc->radius_m;
-        tool.settings.length = desc->length_m;
-        tool.settings.max_force = desc->max_force_N;
-        tool.settings.grasp_margin = desc->grasp_margin_m;
-        tool.settings.grasp_stiffness = desc->grasp_stiffness_N_per_m;
-        tool.settings.grasp_damping = desc->grasp_damping_N_s_per_m;
-        for (int c = 0; c < 3; ++c) tool.pose.position[c] = desc->position_m[c];
-        for (int c = 0; c < 4; ++c) tool.pose.orientation[c] = desc->orientation_wxyz[c];
-        tool.settings.mode = static_cast<enteron::collision::ToolMode>(desc->mode);
-        tool.settings.coupling_stiffness = desc->coupling_stiffness_N_per_m;
-        tool.settings.coupling_damping = desc->coupling_damping_N_s_per_m;
-        tool.settings.friction = desc->friction;
-        if (desc->passivity_limiter != 0 && desc->passivity_limiter != 1)
-            throw Error(ErrorCode::invalid_argument,
-                        "passivity_limiter must be 0 or 1, got " + std::to_string(desc->passivity_limiter));
-        tool.settings.passivity_limiter = desc->passivity_limiter == 1;
+        tool_desc_fields().read(*desc, &tool);
         const enteron::scene::FieldNames& names = enteron::scene::c_field_names();
         tool = enteron::scene::validate_tool(tool, "", names);
-        enteron::scene::warn_implausible(tool.settings, "", names, handle.logger);
+        enteron::scene::warn_implausible(tool, "", names, handle.logger);
         const std::size_t index = handle.scene->add_tool(tool);
         if (out_tool != nullptr) *out_tool = static_cast<int32_t>(index);
     });
@@ -134,7 +151,8 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
 ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const double position_m[3],
                                      const double orientation_wxyz[4]) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         require(position_m, "position_m");
         require(orientation_wxyz, "orientation_wxyz");
         ToolMailbox& mailbox = mailbox_of(handle, tool);
@@ -146,16 +164,23 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 }
 
 ENT_API ent_status ent_tool_grasp(ent_scene* scene, int32_t tool) {
-    return guarded([&] { mailbox_of(live_handle(scene), tool).post_grasp(ToolMailbox::Grasp::grasp); });
+    return guarded([&] {
+        const SceneCall call(scene);
+        mailbox_of(call.handle(), tool).post_grasp(ToolMailbox::Grasp::grasp);
+    });
 }
 
 ENT_API ent_status ent_tool_release(ent_scene* scene, int32_t tool) {
-    return guarded([&] { mailbox_of(live_handle(scene), tool).post_grasp(ToolMailbox::Grasp::release); });
+    return guarded([&] {
+        const SceneCall call(scene);
+        mailbox_of(call.handle(), tool).post_grasp(ToolMailbox::Grasp::release);
+    });
 }
 
 ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double force_N[3], double torque_Nm[3]) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(force_N, "force_N");
         require(torque_Nm, "torque_Nm");
         const enteron::collision::ToolWrench wrench = present_tool(handle, tool).output.wrench;
@@ -165,7 +190,8 @@ ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double 
 
 ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t* out_grasping) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_grasping, "out_grasping");
         *out_grasping = present_tool(handle, tool).output.grasping ? 1 : 0;
     });
@@ -173,11 +199,12 @@ ENT_API ent_status ent_tool_state(const ent_scene* scene, int32_t tool, int32_t*
 
 ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, ent_tool_feedback* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
-        // The sizes of ent_tool_feedback in released headers: only the current one so far.
-        enteron::capi::check_struct_size(out->struct_size, {kToolFeedbackFirstSize, sizeof(ent_tool_feedback)},
-                                         "ent_tool_feedback");
+        enteron::capi::check_struct_size(
+            out->struct_size, {kToolFeedbackFirstSize, kToolFeedbackProxySize, sizeof(ent_tool_feedback)},
+            "ent_tool_feedback");
         const PublishedTool published = present_tool(handle, tool);
         const enteron::collision::ToolOutput& output = published.output;
         ent_tool_feedback full{};
@@ -196,13 +223,15 @@ ENT_API ent_status ent_tool_read_feedback(const ent_scene* scene, int32_t tool, 
             full.commanded_position_m[c] = output.commanded.position[c];
         }
         std::copy(output.commanded.orientation.begin(), output.commanded.orientation.end(), full.orientation_wxyz);
+        full.saturated = output.saturated ? 1 : 0;
         std::memcpy(out, &full, out->struct_size);
     });
 }
 
 ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, double K_N_per_m[9]) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(K_N_per_m, "K_N_per_m");
         const std::array<double, 9> stiffness = present_tool(handle, tool).output.stiffness;
         std::copy(stiffness.begin(), stiffness.end(), K_N_per_m);
@@ -211,7 +240,8 @@ ENT_API ent_status ent_tool_stiffness(const ent_scene* scene, int32_t tool, doub
 
 ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent_tool_stats* out) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_tool_stats)}, "ent_tool_stats");
         const PublishedTool published = present_tool(handle, tool);
@@ -231,7 +261,8 @@ ENT_API ent_status ent_tool_read_stats(const ent_scene* scene, int32_t tool, ent
 
 ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool) {
     return guarded([&] {
-        SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        SceneHandle& handle = call.handle();
         const enteron::capi::DrivingCall driving(handle, "ent_tool_remove");
         mailbox_of(handle, tool);  // NOT_FOUND for an unknown or removed tool
         handle.scene->remove_tool(static_cast<std::size_t>(tool));
@@ -240,7 +271,8 @@ ENT_API ent_status ent_tool_remove(ent_scene* scene, int32_t tool) {
 
 ENT_API ent_status ent_scene_tool_count(const ent_scene* scene, int32_t* out_count) {
     return guarded([&] {
-        const SceneHandle& handle = live_handle(scene);
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
         require(out_count, "out_count");
         *out_count = static_cast<int32_t>(handle.scene->tool_channels().present());
     });

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The point of a triangle closest to a point, and which feature of the triangle it lies on
 // (a corner, an edge or the inside): Ericson, Real-Time Collision Detection (2005), 5.1.5,
 // which tests the Voronoi regions of the corners, then of the edges, then takes the

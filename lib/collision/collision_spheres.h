@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The collision geometry of the bowel (France et al. 2002, section 2.2): spheres of the
 // intestine radius R centred on the axis, evenly spaced in arc length. Their number is
 // fixed when the scene is made (rest length / spacing), and each update spreads them over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the contacts of the bowel did in an evaluation, one record each, for the published
 // contact list (ent_scene_contacts): a trainer scores which part of the bowel a tool
 // touched, how hard and for how long.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The penalty contact law shared by every contact of the bowel (environment, self-contact,
 // tools): a normal spring on the penetration depth, a damper that acts only while the
 // surfaces approach (so contacts never pull) and fades in over the first `damping_depth` of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "collision/environment_force.h"
 
 #include <cmath>
@@ -181,10 +182,9 @@ double EnvironmentForce::potential_energy(const mechanics::State& state) const {
     return energy;
 }
 
-bool EnvironmentForce::begin_step(const mechanics::State& /*state*/, double dt) {
+void EnvironmentForce::begin_step(double dt) {
     step_dt_ = dt;
     largest_power_ = 0.0;
-    return false;
 }
 
 double EnvironmentForce::external_work_bound() const { return 2.0 * largest_power_ * step_dt_; }

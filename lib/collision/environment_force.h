@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact of the bowel with its rigid surroundings (the abdominal cavity and other organs):
 // every collision sphere against every obstacle, penalty response (contact_model.h) mapped
 // to the control points through the sphere's basis weights. A contact touches only four
@@ -47,7 +48,7 @@ public:
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
     void add_contacts(mechanics::ContactSummary& summary) const override { summary_add(summary); }
     double external_work_bound() const override;
-    bool begin_step(const mechanics::State& state, double dt) override;
+    void begin_step(double dt) override;
     void begin_attempt() override { largest_power_ = 0.0; }
     // Which obstacles were removed, their friction and the contacts of the last evaluation
     // (what it publishes): the contacts are found again from the positions and frames.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A triangle mesh prepared for contact: its signed distance field on a regular grid in the
 // obstacle's frame, built once when the obstacle is added, and read by trilinear
 // interpolation in every step (a few loads and no search).

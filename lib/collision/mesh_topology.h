@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a triangle mesh's connectivity says about it, and the pseudo-normals that sign its
 // distance field. Baerentzen and Aanaes, "Signed distance computation using the angle
 // weighted pseudonormal" (IEEE TVCG 2005): the closest point of a closed, consistently

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid shapes around the bowel: the abdominal cavity (inside of a box) and other organs
 // (planes, spheres, capsules, triangle meshes). Each reports, for a sphere of radius R, the
 // contacts it makes: depth of penetration and the unit normal pushing the sphere out.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tool's passivity observer and limiter (Hannaford and Ryu, "Time-domain passivity
 // control of haptic interfaces", IEEE Trans. Robotics and Automation 18(1), 2002). The
 // tool's port is the commanded pose and the wrench rendered on the device: in a step where

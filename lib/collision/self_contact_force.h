@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact of the bowel with itself: two collision spheres closer than 2R push apart with
 // the penalty law of contact_model.h. Spheres nearer each other along the axis than
 // pi R (at rest) are neighbours, not folds, and are skipped: on the tightest bend a tube

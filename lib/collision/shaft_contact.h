@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A collision sphere's contact with a tool's shaft (tool_shaft.h), as both tool modes make
 // it: where the sphere's centre touches the shaft (s, depth, normal), the contact law's
 // Jacobian there (contact_model.h), and how the force changes as the shaft moves rigidly

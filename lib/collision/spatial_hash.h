@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A uniform grid stored as a hash table: the candidate pairs of points closer than a cell
 // size, in O(N). Each bucket is a list threaded through the points (one index per point),
 // so a point that moved is refiled on its own (move) and the grid follows a pile from step

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contact loads of one evaluation gathered per collision sphere. A sphere in a pile
 // touches several others and the walls at once: its forces, H v products and linearised
 // blocks are summed first, and each sphere (each segment, for the blocks) then reaches the

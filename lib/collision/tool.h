@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A surgical tool as the bowel sees it: a capsule (a shaft swept by a sphere) whose tip is
 // at `position` and whose shaft runs from the tip back along the orientation's local +z
 // axis for `length` metres (the identity orientation is a vertical tool pointing down,
@@ -82,6 +83,9 @@ struct ToolOutput {
     // sum, N s, and the sum of the magnitudes, N s (how hard for how long, whatever the direction).
     Vec3 contact_impulse = Vec3::Zero();
     double contact_impulse_magnitude = 0.0;
+    // max_force bounded the tool's force in that step (in an evaluation the step used, or
+    // the wrench was clipped to it): the force is the bound, not what the contacts asked.
+    bool saturated = false;
 };
 
 // The unit local +z axis of a unit quaternion (w x y z) in world coordinates.

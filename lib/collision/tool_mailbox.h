@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a caller tells one tool between steps, from any thread: the pose to reach at the end
 // of the next step, and a grasp or a release. The stepping thread takes both at the start
 // of each step. A haptic thread at 1 kHz posts poses while the physics thread steps, and

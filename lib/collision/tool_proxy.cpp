@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "collision/tool_proxy.h"
 
 #include <cmath>
@@ -85,20 +86,12 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
         given_rate += shaft_contact_rate(contact.jacobian, touch, shaft, problem.shaft_velocity, rate);
         contacts_.push_back(contact);
     }
-    result.grasp_taut = false;
-    result.grasp_force = Vec3::Zero();
+    result.grasp = GraspSpring{};
     if (problem.grasp.holding) {
         const ProxyGrasp& g = problem.grasp;
-        const Vec3 gap = p - g.point;
-        const double length = gap.norm();
-        if (length > g.rest) {
-            const Vec3 n = gap / length;
-            const double a = g.stiffness * g.rest / length, b = g.stiffness * (1.0 - g.rest / length);
-            result.grasp_taut = true;
-            result.grasp_force = g.stiffness * (length - g.rest) * n + g.damping * (vp - g.velocity);
-            given_rate += a * n * n.transpose() + (b + g.damping * rate) * Mat3::Identity();
-        }
-        given += result.grasp_force;
+        result.grasp = grasp_spring(g.law, g.rest, p, vp, g.point, g.velocity);
+        if (result.grasp.taut) given_rate += grasp_tip_rate(result.grasp, g.law, rate);
+        given += result.grasp.force;
     }
     // The coupling and its bound.
     const Vec3 raw = problem.coupling_stiffness * (problem.target - p) + problem.coupling_damping * (problem.target_velocity - vp);
@@ -135,13 +128,13 @@ ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector
         // linear equation: one step, whatever the bound (whose Jacobian is singular along
         // a saturated force).
         const double coupling_rate = problem.coupling_stiffness + problem.coupling_damping * rate;
-        Vec3 step = touching || result.grasp_taut ? solve3<1>(jacobian, residual) : Vec3(raw_ / coupling_rate);
+        Vec3 step = touching || result.grasp.taut ? solve3<1>(jacobian, residual) : Vec3(raw_ / coupling_rate);
         if (!step.allFinite()) break;
         const double longest = kLongestContactStep * problem.reach;
         // The proxy let go: it moves along the net force on it, residual / (the stiffness
         // holding it), no farther than a Newton step may.
         const auto relaxation = [&] {
-            const double holding = coupling_rate + (problem.grasp.holding ? problem.grasp.stiffness : 0.0);
+            const double holding = coupling_rate + (problem.grasp.holding ? problem.grasp.law.stiffness : 0.0);
             const Vec3 relax = residual / holding;
             return relax.norm() > longest ? Vec3(relax * (longest / relax.norm())) : relax;
         };
@@ -184,7 +177,7 @@ ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector
     const Mat3 direct = problem.coupling_stiffness * bound_;
     const Mat3 through = (problem.coupling_stiffness + problem.coupling_damping * rate) * bound_;
     // Touching nothing, the coupling force is zero wherever the device is.
-    const bool free = contacts_.empty() && !result.grasp_taut;
+    const bool free = contacts_.empty() && !result.grasp.taut;
     result.device_stiffness = free ? Mat3::Zero() : Mat3(-(direct - through * solve3<3>(jacobian, direct)));
     return result;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tool's proxy (a god-object, Zilles and Salisbury 1995): the massless capsule the bowel
 // meets, joined to the commanded tip (the device) by a virtual coupling (Colgate et al.
 // 1995), a spring k_c and a damper b_c whose force is bounded by max_force:
@@ -24,6 +25,7 @@
 
 #include "base/geometry.h"
 #include "collision/contact_model.h"
+#include "collision/tool_grasp.h"
 #include "collision/tool_shaft.h"
 
 namespace enteron::collision {
@@ -35,15 +37,14 @@ struct ProxyCandidate {
     Vec3 velocity;
 };
 
-// The grasp, when it holds: the spring-damper of tools_force.h from the held axis point to
-// the proxy's tip (tension only, rest length `rest`).
+// The grasp, when it holds: the spring of tool_grasp.h from the held axis point to the
+// proxy's tip.
 struct ProxyGrasp {
     bool holding = false;
     Vec3 point = Vec3::Zero();     // m
     Vec3 velocity = Vec3::Zero();  // m/s
     double rest = 0.0;             // m
-    double stiffness = 0.0;        // N/m
-    double damping = 0.0;          // N s/m
+    GraspLaw law;
 };
 
 struct ProxyProblem {
@@ -77,8 +78,7 @@ struct ProxyResult {
     Vec3 velocity = Vec3::Zero();        // v_p, m/s
     Vec3 coupling_force = Vec3::Zero();  // F_c on the proxy (towards the device), N, bounded
     bool saturated = false;              // |k_c (x - p) + b_c (v_x - v_p)| > max_force
-    Vec3 grasp_force = Vec3::Zero();     // what the grasp gives the bowel, N
-    bool grasp_taut = false;
+    GraspSpring grasp;                   // the grasp's spring at p (its force on the bowel)
     Mat3 device_stiffness = Mat3::Zero();  // d(-F_c)/dx with v_x held, N/m
     int iterations = 0;
     double residual = 0.0;  // |F_c - sum of the forces given to the bowel|, N

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tool's shaft at one instant (tool.h), as the collision spheres of the bowel meet it: the
 // segment tip + s axis (s in [0, 1]) and the reach at which a sphere centre touches it (the
 // tool's radius plus the bowel's). Most spheres are far from a tool, so the test is on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The closest triangle of a mesh to a point, through Embree's bounding volume hierarchy
 // (Debian's libembree-dev; the measurements that chose it are in docs/anatomy.md). Embree
 // traverses the hierarchy; the exact point-triangle distance is ours

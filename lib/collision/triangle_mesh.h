@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A triangle mesh as the caller gave it (ent_obstacle_desc, a JSON "mesh" obstacle, an OBJ
 // or PLY file): vertex coordinates in the obstacle's frame and three vertex indices per
 // triangle, counter-clockwise seen from the side the bowel is kept on. Copied from the

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's life: creation, the tick and destruction. Its threads are in bridge_threads.cpp.
-#include "bridge.h"
+#include "lcm/bridge.h"
 
 #include <lcmtypes/enteron_session_t.h>
 
@@ -9,11 +10,11 @@
 #include <random>
 
 #include "base/error.h"
-#include "message_check.h"
-#include "scene_calls.h"
-#include "state_digest.h"
+#include "lcm/message_check.h"
+#include "lcm/scene_calls.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -72,14 +73,7 @@ void Bridge::make_scene() {
     const ent_status status = ent_scene_create_json_with(settings_.scene_json.data(), settings_.scene_json.size(),
                                                          &callbacks_.scene_callbacks(), &scene_);
     if (status != ENT_OK) throw Error(static_cast<ErrorCode>(status), std::string("scene_json: ") + ent_last_error());
-    facts_ = read_scene_facts(settings_.scene_json.data(), settings_.scene_json.size());
-    // The JSON's tools are the scene's: the first id past them must not exist.
-    int32_t grasping = 0;
-    const int32_t count = static_cast<int32_t>(facts_.tools.size());
-    if (ent_tool_state(scene_, count, &grasping) != ENT_ERROR_NOT_FOUND ||
-        (count > 0 && ent_tool_state(scene_, count - 1, &grasping) != ENT_OK))
-        throw Error(ErrorCode::internal, "the scene's tools are not the " + std::to_string(count) + " of its JSON");
-
+    facts_ = read_scene_facts(scene_);
     tools_.reserve(facts_.tools.size());
     for (const ToolFacts& tool : facts_.tools) {
         SafetyLimits limits = settings_.limits();
@@ -190,7 +184,7 @@ bool Bridge::plan_tool(std::size_t index, int64_t now_ns, int64_t utime) {
     return given;
 }
 
-bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const ent_stats& stats,
+bool Bridge::render_tool(std::size_t index, int64_t now_ns, int64_t utime, bool step_ok, const ent_stats& stats,
                          TickSummary& summary) {
     Tool& tool = tools_[index];
     const int32_t id = static_cast<int32_t>(index);
@@ -207,7 +201,11 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
         read ? Eigen::Matrix3d(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(output.stiffness_N_per_m))
              : Eigen::Matrix3d::Zero();
     ToolSafety& safety = tool.safety;
-    safety.render(scene_force, scene_torque, scene_stiffness, step_ok && read);
+    safety.render(scene_force, scene_torque, scene_stiffness, read && output.saturated != 0, step_ok && read);
+    // A device locked out (another sender keeps the sequence, a command the checks refuse)
+    // hears it here: the safety's bits and the last rejection of the watchdog time.
+    const int32_t status =
+        safety.status() | rejection_status(receiver_->recent_rejection(index, now_ns, settings_.limits().watchdog_ns));
 
     enteron_tool_feedback_t& feedback = tool.feedback;
     feedback.utime = utime;
@@ -224,7 +222,7 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
     copy3(device_pose.position, feedback.applied_position_m);
     copy_wxyz(device_pose.orientation, feedback.applied_orientation_wxyz);
     feedback.grasping = static_cast<int8_t>(grasping);
-    feedback.status = safety.status();
+    feedback.status = status;
     feedback.step_us = clamp_to_int32(static_cast<int64_t>(stats.last_step_ns / 1000));
     if (settings_.network && !feedback_.push(feedback)) BridgeCounters::add(counters_.feedback_dropped);
 
@@ -242,7 +240,7 @@ bool Bridge::render_tool(std::size_t index, int64_t utime, bool step_ok, const e
     copy3(safety.rendered_scene_force(), state.rendered_force_N);
     state.grasping = static_cast<int8_t>(grasping);
     state.jaws_closed = safety.jaws_closed() ? 1 : 0;
-    state.status = safety.status();
+    state.status = status;
     state.command_seq = feedback.command_seq;
     return read;
 }
@@ -264,7 +262,7 @@ ent_status Bridge::tick(int64_t now_ns) {
     summary.tick = tick_;
 
     for (std::size_t i = 0; i < tools_.size(); ++i)
-        calls_ok = render_tool(i, utime, step_ok, summary.stats, summary) && calls_ok;
+        calls_ok = render_tool(i, now_ns, utime, step_ok, summary.stats, summary) && calls_ok;
     queue_journal([&](JournalRecord& record) {
         record.kind = JournalRecord::Kind::step;
         enteron_journal_step_t& entry = record.step;
@@ -284,4 +282,4 @@ ent_status Bridge::tick(int64_t now_ns) {
     return calls_ok ? ENT_OK : ENT_ERROR_INTERNAL;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene served over LCM (enteron_lcm.h, docs/lcm.md): the scene, the LCM instance, the
 // tick, and the threads around it. Every exchange between the tick and the other threads
 // goes through a preallocated wait-free queue or mailbox:
@@ -22,20 +23,20 @@
 #include <thread>
 #include <vector>
 
-#include "bridge_counters.h"
-#include "bridge_settings.h"
-#include "clock.h"
-#include "command_receiver.h"
-#include "host_callbacks.h"
-#include "journal_format.h"
-#include "journal_writer.h"
-#include "latest_mailbox.h"
-#include "scene_facts.h"
-#include "spsc_queue.h"
-#include "tool_safety.h"
-#include "wakeup.h"
+#include "lcm/bridge_counters.h"
+#include "lcm/bridge_settings.h"
+#include "lcm/clock.h"
+#include "lcm/command_receiver.h"
+#include "lcm/host_callbacks.h"
+#include "lcm/journal_format.h"
+#include "lcm/journal_writer.h"
+#include "lcm/latest_mailbox.h"
+#include "lcm/scene_facts.h"
+#include "lcm/spsc_queue.h"
+#include "lcm/tool_safety.h"
+#include "lcm/wakeup.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // What the report thread needs of the last tick to publish a scene_state_t.
 struct TickSummary {
@@ -94,7 +95,8 @@ private:
 
     // Tick parts.
     bool plan_tool(std::size_t index, int64_t now_ns, int64_t utime);
-    bool render_tool(std::size_t index, int64_t utime, bool step_ok, const ent_stats& stats, TickSummary& summary);
+    bool render_tool(std::size_t index, int64_t now_ns, int64_t utime, bool step_ok, const ent_stats& stats,
+                     TickSummary& summary);
     template <class Fill>
     void queue_journal(Fill&& fill);
 
@@ -155,4 +157,4 @@ private:
     std::thread receive_thread_, publish_thread_, report_thread_, mesh_thread_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,6 +1,7 @@
-#include "bridge_counters.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/bridge_counters.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 const char* rejection_name(Rejection reason) {
     switch (reason) {
@@ -44,4 +45,4 @@ void BridgeCounters::fill(ent_lcm_stats& out) const {
     out.log_lines_dropped = get(log_lines_dropped);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's counters (ent_lcm_stats, server_status_t): plain atomics that each thread
 // adds to (relaxed: they are statistics, read once a second) and any thread reads.
 #pragma once
@@ -7,9 +8,10 @@
 
 #include "enteron/enteron_lcm.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
-// Why a command was rejected, in the order the receive thread checks.
+// Why a command was rejected, in the order the receive thread checks. In tool_feedback_t's
+// status a reason is its value + 1 (REJECTED_*) in bits 8-15.
 enum class Rejection : int {
     size,
     fingerprint,
@@ -56,4 +58,4 @@ struct BridgeCounters {
     void fill(ent_lcm_stats& out) const;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

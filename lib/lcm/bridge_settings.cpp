@@ -1,4 +1,5 @@
-#include "bridge_settings.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/bridge_settings.h"
 
 #include <cmath>
 #include <cstdio>
@@ -7,7 +8,7 @@
 #include "base/error.h"
 #include "capi/struct_size.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -113,4 +114,4 @@ SafetyLimits BridgeSettings::limits() const {
     return limits;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The settings of a bridge: ent_lcm_bridge_desc with its defaults, checked field by field
 // (a message naming the field and the value), and owned (the desc's strings are not kept).
 #pragma once
@@ -6,10 +7,10 @@
 #include <string>
 
 #include "enteron/enteron_lcm.h"
-#include "tool_safety.h"
-#include "workspace_mapping.h"
+#include "lcm/tool_safety.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 struct BridgeSettings {
     std::string scene_json;
@@ -32,4 +33,4 @@ ent_lcm_bridge_desc default_bridge_desc();
 // Throws Error(invalid_argument) or Error(version) naming the field.
 BridgeSettings bridge_settings(const ent_lcm_bridge_desc& desc);
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's threads: receive, publish, report, mesh, and the physics thread of
 // ent_lcm_bridge_start. None of them ever waits for the tick; the tick never waits for them.
 #include <lcmtypes/enteron_mesh_t.h>
@@ -16,9 +17,9 @@
 #include <future>
 
 #include "base/error.h"
-#include "bridge.h"
+#include "lcm/bridge.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -387,4 +388,4 @@ void Bridge::physics_loop() {
     }
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

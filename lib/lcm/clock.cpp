@@ -1,8 +1,9 @@
-#include "clock.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/clock.h"
 
 #include <time.h>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 int64_t read_ns(clockid_t clock) {
@@ -17,4 +18,4 @@ int64_t realtime_us() { return read_ns(CLOCK_REALTIME) / 1000; }
 
 UtimeFromMonotonic::UtimeFromMonotonic() : offset_ns_(read_ns(CLOCK_REALTIME) - read_ns(CLOCK_MONOTONIC)) {}
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

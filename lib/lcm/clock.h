@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bridge's clocks: CLOCK_MONOTONIC for everything it judges (deadlines, the watchdog,
 // command ages), CLOCK_REALTIME only for the `utime` stamps of messages (microseconds since
 // the epoch, what lcm-logger writes too).
@@ -5,7 +6,7 @@
 
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 int64_t monotonic_ns();
 int64_t realtime_us();
@@ -21,4 +22,4 @@ private:
     int64_t offset_ns_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

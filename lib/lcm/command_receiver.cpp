@@ -1,4 +1,5 @@
-#include "command_receiver.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/command_receiver.h"
 
 #include <lcmtypes/enteron_tool_command_t.h>
 
@@ -8,9 +9,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "message_check.h"
+#include "lcm/message_check.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -41,7 +42,8 @@ CommandReceiver::CommandReceiver(std::size_t tool_count, const WorkspaceMapping&
       counters_(counters),
       log_(log),
       mailboxes_(tool_count),
-      sequences_(tool_count) {}
+      sequences_(tool_count),
+      last_rejections_(std::make_unique<LastRejection[]>(tool_count)) {}
 
 Rejection CommandReceiver::check(const void* bytes, std::size_t size, AcceptedCommand& accepted, int32_t& tool,
                                  char* detail, std::size_t detail_size) const {
@@ -54,6 +56,7 @@ Rejection CommandReceiver::check(const void* bytes, std::size_t size, AcceptedCo
     enteron_tool_command_t command;
     if (enteron_tool_command_t_decode(bytes, 0, static_cast<int>(size), &command) < 0)
         return rejected_as(Rejection::size, detail, detail_size, "tool_command_t does not decode");
+    tool = command.tool;  // the tool it is for, whether accepted or not
 
     if (!all_finite(command.position_m, 3) || !all_finite(command.orientation_wxyz, 4) ||
         !all_finite(command.linear_velocity_m_per_s, 3)) {
@@ -90,7 +93,6 @@ Rejection CommandReceiver::check(const void* bytes, std::size_t size, AcceptedCo
                       kLargestPosition_m);
         return rejected_as(Rejection::out_of_range, detail, detail_size, text);
     }
-    tool = command.tool;
     accepted.seq = command.seq;
     accepted.utime = command.utime;
     accepted.scene_pose = pose;
@@ -139,8 +141,25 @@ Rejection CommandReceiver::feed(const void* bytes, std::size_t size, int64_t rec
         }
     }
     reject(reason, text);
+    note(reason, tool, received_ns);
     if (detail != nullptr && detail_size > 0) std::snprintf(detail, detail_size, "%s", text);
     return reason;
+}
+
+void CommandReceiver::note(Rejection reason, int32_t tool, int64_t received_ns) {
+    const bool named = tool >= 0 && static_cast<std::size_t>(tool) < mailboxes_.size();
+    for (std::size_t t = 0; t < mailboxes_.size(); ++t) {
+        if (named && t != static_cast<std::size_t>(tool)) continue;
+        last_rejections_[t].received_ns.store(received_ns, std::memory_order_relaxed);
+        last_rejections_[t].reason.store(static_cast<int>(reason), std::memory_order_release);
+    }
+}
+
+Rejection CommandReceiver::recent_rejection(std::size_t tool, int64_t now_ns, int64_t window_ns) const {
+    const LastRejection& last = last_rejections_[tool];
+    const auto reason = static_cast<Rejection>(last.reason.load(std::memory_order_acquire));
+    if (reason == Rejection::none) return reason;
+    return now_ns - last.received_ns.load(std::memory_order_relaxed) <= window_ns ? reason : Rejection::none;
 }
 
 void CommandReceiver::reject(Rejection reason, const char* detail) {
@@ -172,4 +191,4 @@ void CommandReceiver::log_summary(double seconds) {
                  seconds, line);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,11 +1,12 @@
-#include "host_callbacks.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/host_callbacks.h"
 
 #include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 HostCallbacks::HostCallbacks(const ent_callbacks* host, BridgeCounters& counters) : counters_(counters) {
     ent_callbacks_default(&host_);
@@ -72,4 +73,4 @@ void HostCallbacks::drain() {
     }
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The host's callbacks (ent_lcm_bridge_desc.callbacks), shared by the bridge and its
 // scene. Log lines go to the host's log callback, one call at a time; lines the scene
 // logs during a tick (a rollback of the stability guard) are queued instead and handed
@@ -14,11 +15,11 @@
 #include <mutex>
 
 #include "base/logger.h"
-#include "bridge_counters.h"
 #include "enteron/enteron.h"
-#include "spsc_queue.h"
+#include "lcm/bridge_counters.h"
+#include "lcm/spsc_queue.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class HostCallbacks {
 public:
@@ -65,4 +66,4 @@ private:
     pthread_t tick_thread_{};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The journal: an LCM log file (lcm_eventlog format, readable by lcm-logplayer, lcm-spy
 // and bindings/lcm/python/log.py) holding a session_t first, then for every tick one
 // journal_tool_t per tool (what the tool was given before the step) and one
@@ -11,7 +12,7 @@
 
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 inline constexpr const char* kJournalSessionChannel = "ENTERON_SESSION";
 inline constexpr const char* kJournalToolChannel = "ENTERON_JOURNAL_TOOL";
@@ -25,4 +26,4 @@ struct JournalRecord {
     enteron_journal_step_t step{};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,11 +1,12 @@
-#include "journal_reader.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/journal_reader.h"
 
 #include <cerrno>
 #include <cstring>
 
 #include "base/error.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -62,4 +63,4 @@ JournalReader::Next JournalReader::next(LogEvent& event, std::string& problem) {
     return Next::event;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

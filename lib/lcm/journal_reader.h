@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads an LCM log file event by event, for the replay. LCM's own reader
 // (lcm_eventlog_read_next_event) prints to stderr on a damaged file and allocates whatever
 // size a damaged header claims; this one never prints, and refuses a header whose sizes
@@ -13,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 struct LogEvent {
     int64_t number = 0;
@@ -41,4 +42,4 @@ private:
     int64_t offset_ = 0;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,4 +1,5 @@
-#include "journal_replay.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/journal_replay.h"
 
 #include <lcmtypes/enteron_session_t.h>
 
@@ -10,13 +11,13 @@
 #include <vector>
 
 #include "base/error.h"
-#include "journal_format.h"
-#include "journal_reader.h"
-#include "message_check.h"
-#include "scene_calls.h"
-#include "state_digest.h"
+#include "lcm/journal_format.h"
+#include "lcm/journal_reader.h"
+#include "lcm/message_check.h"
+#include "lcm/scene_calls.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -183,4 +184,4 @@ void replay_journal(const char* path, const ent_callbacks* callbacks, ent_lcm_re
     Replay(out).run(path, callbacks);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,4 +1,5 @@
-#include "journal_writer.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/journal_writer.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -6,7 +7,7 @@
 
 #include "base/error.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 JournalWriter::JournalWriter(const std::string& path) : path_(path) {
     errno = 0;
@@ -53,4 +54,4 @@ bool JournalWriter::write_end(const enteron_journal_step_t& last_step) {
 
 void JournalWriter::flush() { std::fflush(log_->f); }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

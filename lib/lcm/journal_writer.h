@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes the journal (journal_format.h) with LCM's lcm_eventlog API, on the report thread.
 #pragma once
 
@@ -7,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "journal_format.h"
+#include "lcm/journal_format.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class JournalWriter {
 public:
@@ -35,4 +36,4 @@ private:
     std::vector<uint8_t> buffer_;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Newest value wins" between one writer thread and one reader thread: a triple buffer.
 // The writer fills its own slot and swaps it with the middle one; the reader swaps the
 // middle one with its own when it holds something new. Neither side ever waits, locks or
@@ -8,7 +9,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 template <class T>
 class LatestMailbox {
@@ -49,4 +50,4 @@ private:
     uint8_t front_ = 2;                  // the reader's slot
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

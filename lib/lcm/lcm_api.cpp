@@ -1,19 +1,20 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C API of libenteron_lcm (include/enteron/enteron_lcm.h): checked calls into the
 // Bridge, errors as a status and ent_lcm_last_error().
 #include <cstring>
 #include <new>
 #include <utility>
 
-#include "bridge.h"
 #include "capi/call_guard.h"
 #include "capi/struct_size.h"
-#include "clock.h"
-#include "journal_replay.h"
-#include "message_check.h"
+#include "lcm/bridge.h"
+#include "lcm/clock.h"
+#include "lcm/journal_replay.h"
+#include "lcm/message_check.h"
 
 using enteron::Error;
 using enteron::ErrorCode;
-using enteron::bridge::Bridge;
+using enteron::lcm::Bridge;
 using enteron::capi::require;
 
 struct ent_lcm_bridge {
@@ -47,13 +48,13 @@ ENT_API uint32_t ent_lcm_version(void) { return ENT_VERSION; }
 
 ENT_API const char* ent_lcm_last_error(void) { return last_error; }
 
-ENT_API int64_t ent_lcm_monotonic_ns(void) { return enteron::bridge::monotonic_ns(); }
+ENT_API int64_t ent_lcm_monotonic_ns(void) { return enteron::lcm::monotonic_ns(); }
 
 ENT_API ent_status ent_lcm_bridge_desc_init(ent_lcm_bridge_desc* desc, uint32_t struct_size) {
     return guarded([&] {
         require(desc, "desc");
         enteron::capi::check_struct_size(struct_size, {sizeof(ent_lcm_bridge_desc)}, "ent_lcm_bridge_desc");
-        ent_lcm_bridge_desc defaults = enteron::bridge::default_bridge_desc();
+        ent_lcm_bridge_desc defaults = enteron::lcm::default_bridge_desc();
         defaults.struct_size = struct_size;
         std::memcpy(desc, &defaults, struct_size);
     });
@@ -63,7 +64,7 @@ ENT_API ent_status ent_lcm_bridge_create(const ent_lcm_bridge_desc* desc, ent_lc
     return guarded([&] {
         require(desc, "desc");
         require(out_bridge, "out_bridge");
-        enteron::bridge::BridgeSettings settings = enteron::bridge::bridge_settings(*desc);
+        enteron::lcm::BridgeSettings settings = enteron::lcm::bridge_settings(*desc);
         *out_bridge = new ent_lcm_bridge{Bridge(std::move(settings))};
     });
 }
@@ -123,11 +124,11 @@ ENT_API ent_status ent_lcm_bridge_feed_command(ent_lcm_bridge* bridge, const voi
         if (bytes == nullptr && size > 0) throw Error(ErrorCode::invalid_argument, "bytes must not be NULL");
         static const unsigned char nothing = 0;
         char detail[256] = "";
-        const enteron::bridge::Rejection reason =
+        const enteron::lcm::Rejection reason =
             bridge->bridge.feed(bytes != nullptr ? bytes : &nothing, size, received_ns, detail, sizeof detail);
-        if (reason != enteron::bridge::Rejection::none)
+        if (reason != enteron::lcm::Rejection::none)
             throw Error(ErrorCode::invalid_argument, std::string("command rejected (") +
-                                                         enteron::bridge::rejection_name(reason) + "): " + detail);
+                                                         enteron::lcm::rejection_name(reason) + "): " + detail);
     });
 }
 
@@ -165,13 +166,13 @@ ENT_API ent_status ent_lcm_bridge_stats(const ent_lcm_bridge* bridge, ent_lcm_st
 
 ENT_API ent_status ent_lcm_check_message(int32_t type, const void* bytes, size_t size) {
     return guarded([&] {
-        if (!enteron::bridge::known_message_type(type))
+        if (!enteron::lcm::known_message_type(type))
             throw Error(ErrorCode::not_found, "unknown message type " + std::to_string(type) + " (ENT_LCM_*)");
         if (bytes == nullptr && size > 0) throw Error(ErrorCode::invalid_argument, "bytes must not be NULL");
         static const unsigned char nothing = 0;
         char detail[256] = "";
-        if (enteron::bridge::check_message(type, bytes != nullptr ? bytes : &nothing, size, detail, sizeof detail) !=
-            enteron::bridge::MessageFault::none)
+        if (enteron::lcm::check_message(type, bytes != nullptr ? bytes : &nothing, size, detail, sizeof detail) !=
+            enteron::lcm::MessageFault::none)
             throw Error(ErrorCode::invalid_argument, detail);
     });
 }
@@ -183,7 +184,7 @@ ENT_API ent_status ent_lcm_replay_journal(const char* path, const ent_callbacks*
         require(out, "out");
         enteron::capi::check_struct_size(out->struct_size, {sizeof(ent_lcm_replay_result)}, "ent_lcm_replay_result");
         ent_lcm_replay_result result;
-        enteron::bridge::replay_journal(path, callbacks, result);
+        enteron::lcm::replay_journal(path, callbacks, result);
         std::memcpy(out, &result, sizeof result);
     });
 }

@@ -1,4 +1,5 @@
-#include "message_check.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/message_check.h"
 
 #include <lcmtypes/enteron_journal_step_t.h>
 #include <lcmtypes/enteron_journal_tool_t.h>
@@ -17,7 +18,7 @@
 
 #include "enteron/enteron_lcm.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 
@@ -162,4 +163,4 @@ MessageFault check_message(int32_t type, const void* bytes, std::size_t size, ch
     return MessageFault::none;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

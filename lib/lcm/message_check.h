@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks that bytes from a network or a file are exactly one message of a given type
 // before anything decodes them (ent_lcm_check_message). The decoders lcm-gen 1.3.1 writes
 // trust the counts inside a message: a negative or huge count makes the C decoder
@@ -11,7 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 enum class MessageFault {
     none,
@@ -34,4 +35,4 @@ std::size_t tool_command_size();
 // lcm-gen writes caches it in a plain static).
 void prepare_message_types();
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

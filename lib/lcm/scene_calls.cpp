@@ -1,10 +1,11 @@
-#include "scene_calls.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/scene_calls.h"
 
 #include <algorithm>
 
-#include "state_digest.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 ent_status give_tool(ent_scene* scene, int32_t tool, const double position_m[3], const double orientation_wxyz[4],
                      GraspAction action, double* digest_values) {
@@ -32,4 +33,4 @@ ent_status step_and_digest(ent_scene* scene, double dt_s, const std::vector<doub
     return status;
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

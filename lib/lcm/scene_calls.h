@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The calls a tick makes on the scene, in the order the journal records them and the
 // replay repeats them: for each tool ent_tool_set_pose, then its grasp action; then
 // ent_scene_step, and the state digest of what it reached (state_digest.h).
@@ -7,9 +8,9 @@
 #include <vector>
 
 #include "enteron/enteron.h"
-#include "tool_safety.h"
+#include "lcm/tool_safety.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // Gives the tool its pose and grasp action, and writes what it was given into
 // digest_values (kToolDigestValues doubles) for the tick's digest.
@@ -22,4 +23,4 @@ ent_status give_tool(ent_scene* scene, int32_t tool, const double position_m[3],
 ent_status step_and_digest(ent_scene* scene, double dt_s, const std::vector<double>& tool_digest_values,
                            std::vector<double>& control_points, ent_stats& stats, int64_t& digest);
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,16 +1,17 @@
-// What the bridge needs to know about its scene that the public API does not report: each
-// tool's size, max_force and initial pose, and the bowel's radius (for the state a viewer
-// draws and for the force clamp). Read from the scene JSON after libenteron accepted it,
-// with the defaults of ent_tool_desc_default / ent_scene_desc_default for keys it omits
-// (the JSON loader and the C descriptions share those defaults).
+// SPDX-License-Identifier: Apache-2.0
+// What the bridge needs to know about its scene besides the state it publishes: each tool's
+// size, max_force and initial pose, and the bowel's radius (for the state a viewer draws
+// and for the force clamp). Asked of the scene itself (ent_scene_read_desc,
+// ent_tool_read_desc): the bridge links libenteron through its C API only, and the scene
+// knows its description as the library read it, defaults and normalised poses included.
 #pragma once
 
-#include <cstddef>
 #include <vector>
 
-#include "workspace_mapping.h"
+#include "enteron/enteron.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 struct ToolFacts {
     double radius_m = 0.0;
@@ -24,7 +25,8 @@ struct SceneFacts {
     std::vector<ToolFacts> tools;
 };
 
-// Throws enteron::Error(invalid_scene) if the text is not the object libenteron accepted.
-SceneFacts read_scene_facts(const char* json, std::size_t length);
+// The facts of a scene and of each of its tools (ids 0 to the count - 1). Throws
+// enteron::Error with the library's status and message if a query fails.
+SceneFacts read_scene_facts(const ent_scene* scene);
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A bounded single-producer single-consumer queue: how the tick hands its feedback, journal
 // entries and log lines to the bridge's other threads without waiting for them, without a
 // lock and without allocating (Lamport's ring, with acquire/release indices). Both sides are
@@ -11,7 +12,7 @@
 #include <memory>
 #include <new>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // Keeps the two indices on separate cache lines, so that the producer and the consumer do
 // not invalidate each other's line on every operation.
@@ -82,4 +83,4 @@ private:
     uint64_t tail_cache_ = 0;                             // the consumer's last view of tail_
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

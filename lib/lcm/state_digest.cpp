@@ -1,8 +1,9 @@
-#include "state_digest.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/state_digest.h"
 
 #include <cstring>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 namespace {
 constexpr uint64_t kPrime = 0x100000001b3ull;  // FNV-1a's 64-bit prime
@@ -36,4 +37,4 @@ int64_t tick_digest(const double* control_points, std::size_t control_point_valu
     return digest.value();
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

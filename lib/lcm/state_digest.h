@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The state digest of scene_state_t and the journal: a 64-bit hash of the exact bits of a
 // tick's outcome as the public API gives it: the control points after the step (x y z per
 // point, ent_scene_control_points), the simulated time, and what each tool was given for
@@ -16,7 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // What the digest takes of one tool: tip position (3), orientation w x y z (4), grasp
 // action (journal_tool_t GRASP_*, as a double).
@@ -37,4 +38,4 @@ private:
 int64_t tick_digest(const double* control_points, std::size_t control_point_values, double time_s,
                     const double* tool_values, std::size_t tool_value_count);
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

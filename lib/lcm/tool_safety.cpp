@@ -1,9 +1,10 @@
-#include "tool_safety.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/tool_safety.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 ToolSafety::ToolSafety(const SafetyLimits& limits, const WorkspaceMapping& mapping, const Pose& initial_pose)
     : limits_(limits), mapping_(&mapping), applied_(initial_pose) {}
@@ -56,7 +57,7 @@ bool ToolSafety::move_toward(const Pose& target) {
 }
 
 void ToolSafety::render(const Eigen::Vector3d& scene_force_N, const Eigen::Vector3d& scene_torque_Nm,
-                        const Eigen::Matrix3d& scene_stiffness_N_per_m, bool step_ok) {
+                        const Eigen::Matrix3d& scene_stiffness_N_per_m, bool saturated, bool step_ok) {
     if (!step_ok) status_ |= kUnstable;
     if (live() && !latest_.force_enable) status_ |= kForceDisabled;
     const bool force_allowed = live() && latest_.force_enable && step_ok;
@@ -74,6 +75,9 @@ void ToolSafety::render(const Eigen::Vector3d& scene_force_N, const Eigen::Vecto
     // Every bound scales the force, its torque and its stiffness by one factor, so the
     // device renders the same direction and a consistent local model.
     double gain = ramp_;
+    // The library bounds the force at max_force itself (ent_tool_feedback.saturated): the
+    // force it reports is then exactly max_force, which the test below does not catch.
+    if (saturated) status_ |= kForceLimited;
     const double scene_magnitude = ramp_ * scene_force_N.norm();
     if (scene_magnitude > limits_.tool_max_force_N) {
         gain *= limits_.tool_max_force_N / scene_magnitude;
@@ -101,4 +105,4 @@ void ToolSafety::render(const Eigen::Vector3d& scene_force_N, const Eigen::Vecto
     rendered_scene_force_ = mapping_->force_to_scene(device_force_);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The safety rules of one tool, applied at every tick (docs/lcm.md, "Safety"):
 // - a command older than the watchdog time on the bridge's own clock makes the tool stale:
 //   zero force, the tool held where it was (never judged by comparing two hosts' clocks);
@@ -14,9 +15,9 @@
 
 #include <cstdint>
 
-#include "workspace_mapping.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 // A command that passed every check of the receive thread, mapped into the scene.
 struct AcceptedCommand {
@@ -47,6 +48,7 @@ enum StatusBit : int32_t {
     kRateLimited = 8,
     kUnstable = 16,
     kForceDisabled = 32,
+    kCommandsRejected = 64,  // with the reason (REJECTED_*) in bits 8-15: rejection_status()
 };
 
 // The grasp call to make before the step (journal_tool_t GRASP_*).
@@ -65,9 +67,10 @@ public:
     Plan plan(const AcceptedCommand* fresh, int64_t now_ns);
 
     // After the step: what the device renders, from the bowel's force and torque on the
-    // tool and its stiffness (scene frame). step_ok: the step succeeded.
+    // tool and its stiffness (scene frame). saturated: the library bounded that force at the
+    // tool's max_force (ent_tool_feedback.saturated). step_ok: the step succeeded.
     void render(const Eigen::Vector3d& scene_force_N, const Eigen::Vector3d& scene_torque_Nm,
-                const Eigen::Matrix3d& scene_stiffness_N_per_m, bool step_ok);
+                const Eigen::Matrix3d& scene_stiffness_N_per_m, bool saturated, bool step_ok);
 
     const Pose& applied_pose() const { return applied_; }
     // The newest accepted command's pose (scene frame), the initial pose before any.
@@ -104,4 +107,4 @@ private:
     Eigen::Vector3d rendered_scene_force_ = Eigen::Vector3d::Zero();
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
 // Futex calls of Wakeup (Linux).
-#include "wakeup.h"
+#include "lcm/wakeup.h"
 
 #include <linux/futex.h>
 #include <sys/syscall.h>
 #include <time.h>
 #include <unistd.h>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 static_assert(sizeof(std::atomic<uint32_t>) == sizeof(uint32_t), "a futex is a 32-bit word");
 
@@ -22,4 +23,4 @@ void Wakeup::sleep(uint32_t seen, int64_t timeout_ns) {
     syscall(SYS_futex, reinterpret_cast<uint32_t*>(&counter_), FUTEX_WAIT_PRIVATE, seen, &timeout, nullptr, 0);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

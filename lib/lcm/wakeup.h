@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wakes a sleeping consumer thread (the publisher) without the producer ever waiting: the
 // producer bumps a counter and, only if the consumer is asleep, makes one futex wake (a
 // non-blocking system call); the consumer sleeps on the counter with a timeout, so that a
@@ -7,7 +8,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 class Wakeup {
 public:
@@ -31,4 +32,4 @@ private:
     std::atomic<bool> sleeping_{false};
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,6 +1,7 @@
-#include "workspace_mapping.h"
+// SPDX-License-Identifier: Apache-2.0
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 WorkspaceMapping::WorkspaceMapping(double scale, const Eigen::Quaterniond& rotation, const Eigen::Vector3d& offset,
                                    double force_scale)
@@ -41,4 +42,4 @@ Eigen::Matrix3d WorkspaceMapping::stiffness_to_device(const Eigen::Matrix3d& sce
     return (force_scale_ * scale_) * (rotation_matrix_.transpose() * scene_stiffness * rotation_matrix_);
 }
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

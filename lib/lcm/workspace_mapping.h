@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The workspace mapping: from a haptic device's frame and units into the scene's, and the
 // forces back (enteron_lcm.h, ent_lcm_bridge_desc). With s the scale, R the rotation of the
 // device's axes into the scene's, o the offset and g the force scale:
@@ -10,7 +11,7 @@
 
 #include <Eigen/Geometry>
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 
 struct Pose {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
@@ -44,4 +45,4 @@ private:
     double force_scale_ = 1.0;
 };
 
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/axial_blocks.h"
 
 namespace enteron::mechanics {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The implicit system's blocks of the axis' own axial laws, the stretch spring and the
 // axial damper. Both act at the same two Gauss nodes of every segment, through the same
 // derivative weights w and along the same unit tangent u, each with a block

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The constants of the intestine axis that every effect shares.
 #pragma once
 

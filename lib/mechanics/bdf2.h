@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Second-order backward differentiation (BDF2) with the linearised Newton step and banded
 // solve of implicit_euler.h. With the substep ratio w = h_n / h_{n-1} (variable-step BDF2,
 // so a change of dt or a subdivided retry keeps second order) and
@@ -14,8 +15,8 @@
 // Order reduction, as variable-order BDF codes do (CVODE, DASSL): a substep is taken at
 // first order, as an implicit Euler step (implicit_euler_step), when the history cannot
 // be trusted to extrapolate:
-//   - there is none (the first substep, or after restart());
-//   - the scene retries a step the stability guard rejected (restore_history() until the
+//   - there is none (the first substep, or after restart(): the state was set from outside);
+//   - the stepper retries a step the stability guard rejected (restore_history() until the
 //     next save_history()): the retry is exactly implicit Euler's;
 //   - the substep grew by more than kMaxStepRatio (variable-step BDF2 is zero-stable only
 //     for w < 1 + sqrt(2)), as in the first step after a subdivided one;
@@ -25,8 +26,8 @@
 //     the folds deeper into each other (docs/accuracy.md#bdf2: without it a dense pile and
 //     coincident spheres gain energy from nothing and 50 ms steps in the cavity fail).
 //
-// The history (q_{n-1}, v_{n-1}, h_{n-1}, the contacts) is state: the scene saves it with
-// each step's backup and restores it with a rolled-back state (save_history /
+// The history (q_{n-1}, v_{n-1}, h_{n-1}, the contacts) is state: the stepper keeps it with
+// each step's start and brings it back with a rolled-back state (save_history /
 // restore_history), and it is in a saved state (section "bdf2").
 #pragma once
 
@@ -84,7 +85,7 @@ private:
     std::pmr::vector<double> velocity_difference_;       // v_n - v_{n-1}
     std::pmr::vector<double> history_momentum_;          // M (v_n - v_{n-1})
     History history_;
-    History saved_history_;  // history_ at the start of the scene's step, for a rollback
+    History saved_history_;  // history_ at the start of the stepper's step, for a rollback
     bool retrying_ = false;  // restore_history() was called in this step of the scene
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bending elasticity, soft: energy 1/2 EI integral of |d2P/ds2|^2 ds with s the rest arc
 // length (ds = l0 dt). Quadratic in q: 1/2 q^T K_b q per coordinate with the constant band
 // matrix K_b = (EI / l0^3) Gram(second derivative), built once. The rest shape is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bodies outside the bowel whose unknowns the implicit step solves together with the bowel's:
 // a tool's proxy, a massless body held between the device and the bowel by its contacts.
 // Each body b brings three unknowns e_b, and the linearised system gains a border:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clamped ends: an end of the axis held where it started AND pointing where it started, as
 // the bowel is held where it joins fixed anatomy (the duodenojejunal flexure, the
 // ileocaecal junction). A boundary condition of the spline, not a second pinned point.
@@ -52,6 +53,23 @@ Vec3 clamped_end_tangent(const double* points, std::size_t count, bool first_end
 
 // True if that tangent is too short to have a direction (the end folds back on itself).
 bool clamped_end_is_degenerate(const double* points, std::size_t count, bool first_end);
+
+// The points of a clamped end, of an axis of `count` control points with the first and/or
+// last end clamped: the end point (q_0 or q_{n-1}, pinned with its clamp: pinning or
+// releasing it alone would leave the clamp half attached), and the two next to it (q_1,
+// q_2 or q_{n-2}, q_{n-3}, whose motion across the held direction the clamp constrains: a
+// point pin there would fight it). `none` when the point is neither.
+enum class ClampedEnd { none, first, last };
+inline ClampedEnd clamped_end_point(std::size_t point, std::size_t count, bool first, bool last) {
+    if (first && point == 0) return ClampedEnd::first;
+    if (last && point + 1 == count) return ClampedEnd::last;
+    return ClampedEnd::none;
+}
+inline ClampedEnd clamped_end_neighbour(std::size_t point, std::size_t count, bool first, bool last) {
+    if (first && (point == 1 || point == 2)) return ClampedEnd::first;
+    if (last && (point + 2 == count || point + 3 == count)) return ClampedEnd::last;
+    return ClampedEnd::none;
+}
 
 class ClampedEnds {
 public:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Damping, three terms that all remove energy:
 //  - drag: a force -c_d v per metre of axis (the surrounding tissue and fluid). Its
 //    generalised form is -D v with D = c_d l0 Gram(value) = (c_d / mu) M, constant;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/dynamics.h"
 
 #include <chrono>
@@ -26,6 +27,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
     : model_(model),
       memory_(memory),
       effects_(memory),
+      driven_(memory),
       shared_loads_(memory),
       mass_(memory),
       mass_products_(memory),
@@ -46,7 +48,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
     one_effect_force_.assign(3 * n, 0.0);
 }
 
-void Dynamics::add_effect(Owned<Effect> effect) {
+void Dynamics::add_owned_effect(Owned<Effect> effect) {
     enabled_[static_cast<std::size_t>(effect->id())] = true;
     effects_.push_back(std::move(effect));
 }
@@ -82,7 +84,7 @@ void Dynamics::finalize() {
         pinned_->constrain(damping);
     }
     std::size_t bodies = 0;
-    for (const Owned<Effect>& effect : effects_) bodies += effect->border_bodies();
+    for (const DrivenEffect* effect : driven_) bodies += effect->border_bodies();
     border_.reserve(bodies, coordinates());
     max_frequency_ = std::sqrt(kEigenvalueMargin * largest_eigenvalue(stiffness));
     max_damping_rate_ = kEigenvalueMargin * largest_eigenvalue(damping);
@@ -231,15 +233,19 @@ Dynamics::Energies Dynamics::energies(const State& state) const {
     return energies;
 }
 
-bool Dynamics::begin_step(const State& state, double dt) {
+bool Dynamics::take_commands(const State& state, double dt) {
     bool energy_changed = false;
-    for (Owned<Effect>& effect : effects_) energy_changed |= effect->begin_step(state, dt);
-    if (pinned_) pinned_->begin_step(state, dt);
+    for (DrivenEffect* effect : driven_) energy_changed |= effect->take_commands(state, dt);
     return energy_changed;
 }
 
+void Dynamics::begin_step(double dt) {
+    for (Owned<Effect>& effect : effects_) effect->begin_step(dt);
+    if (pinned_) pinned_->begin_step(dt);
+}
+
 void Dynamics::evaluation_used(double duration, const State* after) {
-    for (Owned<Effect>& effect : effects_) effect->evaluation_used(duration, after);
+    for (DrivenEffect* effect : driven_) effect->evaluation_used(duration, after);
 }
 
 void Dynamics::begin_attempt() {
@@ -248,7 +254,7 @@ void Dynamics::begin_attempt() {
 }
 
 void Dynamics::end_step(bool accepted) {
-    for (Owned<Effect>& effect : effects_) effect->end_step(accepted);
+    for (DrivenEffect* effect : driven_) effect->end_step(accepted);
 }
 
 Dynamics::Culprit Dynamics::strongest_force_at(const State& state, std::size_t control_point) {
@@ -291,12 +297,10 @@ double Dynamics::external_work_bound() const {
 }
 
 void Dynamics::save_state(StateWriter& out) const {
-    // Version 2: the clamped ends' attachments follow the counters.
-    out.begin_section("dynamics", 2);
-    for (const EffectCounters& counter : counters_) {
-        out.u64(counter.calls);
-        out.u64(counter.total_time_ns);
-    }
+    // Version 2: the clamped ends' attachments follow the counters. Version 3: the effects'
+    // wall-clock times are not saved (two identical runs save identical images).
+    out.begin_section("dynamics", 3);
+    for (const EffectCounters& counter : counters_) out.u64(counter.calls);
     if (clamped_) clamped_->save_attachments(out);
     else out.u32(0);
     out.end_section();
@@ -305,11 +309,11 @@ void Dynamics::save_state(StateWriter& out) const {
 }
 
 void Dynamics::restore_state(StateReader& in, const RigidFrames& frames) {
-    const uint32_t version = in.begin_section("dynamics", 2);
-    std::array<EffectCounters, kEffectCount> counters{};
-    for (EffectCounters& counter : counters) {
-        counter.calls = in.u64("effect calls");
-        counter.total_time_ns = in.u64("effect time");
+    const uint32_t version = in.begin_section("dynamics", 3);
+    std::array<uint64_t, kEffectCount> calls{};
+    for (uint64_t& count : calls) {
+        count = in.u64("effect calls");
+        if (version < 3) in.u64("effect time");  // a wall-clock figure: dropped
     }
     // Version 1 (before clamped ends could follow frames): they stay as they are.
     if (version >= 2) {
@@ -319,18 +323,14 @@ void Dynamics::restore_state(StateReader& in, const RigidFrames& frames) {
     in.end_section();
     for (Owned<Effect>& effect : effects_) effect->restore_state(in);
     if (pinned_) pinned_->restore_state(in, model_.control_points);
-    if (!in.checking()) counters_ = counters;
+    // The calls are the simulation's work; the times stay this process's.
+    if (!in.checking())
+        for (std::size_t i = 0; i < calls.size(); ++i) counters_[i].calls = calls[i];
 }
 
 void Dynamics::add_layout(Fingerprint& fingerprint) const {
     for (const Owned<Effect>& effect : effects_) fingerprint.add(static_cast<uint64_t>(effect->id()));
     fingerprint.add(uint64_t{pinned_ != nullptr});
-}
-
-Effect* Dynamics::find_effect(EffectId id) {
-    for (Owned<Effect>& effect : effects_)
-        if (effect->id() == id) return effect.get();
-    return nullptr;
 }
 
 }  // namespace enteron::mechanics

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The equations of motion of the axis, M a = F(q, v), with M the constant banded mass
 // matrix (factored once) and F the sum of the effects the scene names. Integrators ask it
 // for forces, accelerations, linearisations and energies; it times every effect.
@@ -5,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <memory_resource>
 #include <vector>
@@ -13,6 +15,7 @@
 #include "mechanics/axis_model.h"
 #include "mechanics/bordered_system.h"
 #include "mechanics/clamped_ends.h"
+#include "mechanics/driven_effect.h"
 #include "mechanics/effect.h"
 #include "mechanics/per_coordinate_matrix.h"
 #include "mechanics/pinned_points.h"
@@ -29,9 +32,16 @@ class Dynamics {
 public:
     Dynamics(const AxisModel& model, std::pmr::memory_resource* memory);
 
-    // Adds an effect, or the pins (which always run last); call finalize() once all are in,
-    // and again after adding an effect later.
-    void add_effect(Owned<Effect> effect);
+    // Adds an effect (a driven one, driven_effect.h, gets its hooks too), or the pins (which
+    // always run last); call finalize() once all are in, and again after adding an effect
+    // later. Returns the effect added, for the assembly to keep (the dynamics owns it).
+    template <class T>
+    T& add_effect(Owned<T> effect) {
+        T& added = *effect;
+        if constexpr (std::is_base_of_v<DrivenEffect, T>) driven_.push_back(&added);
+        add_owned_effect(std::move(effect));
+        return added;
+    }
     void add_pins(Owned<PinnedPoints> pins);
     // Clamps ends (clamped_ends.h): every linear solve below then keeps their tangents. The
     // end points themselves must be among the pins.
@@ -40,8 +50,6 @@ public:
     // applies them after, their time counted as `owner`'s. Not owned: they must outlive
     // every call to forces().
     void add_shared_loads(SharedLoads* loads, EffectId owner);
-    // The effect with this id, or null.
-    Effect* find_effect(EffectId id);
     // The pins, or null before the first.
     PinnedPoints* pins() { return pinned_.get(); }
     // Factors the mass matrix (with the pins) and bounds the explicit stable substep.
@@ -78,12 +86,15 @@ public:
     // bodies the effects may add; null with clamped ends, whose reduced system the border
     // does not know (the tools' proxies then stay put through each substep).
     BorderedSystem* border() { return clamped_ ? nullptr : &border_; }
-    // Tells every effect how the integrator used its last evaluation (Effect::evaluation_used).
+    // Tells the driven effects how the integrator used their last evaluation
+    // (DrivenEffect::evaluation_used).
     void evaluation_used(double duration, const State* after);
 
-    // The effects' step hooks (effect.h), in the order the effects were added.
-    // begin_step returns true if an effect changed the energy it stores.
-    bool begin_step(const State& state, double dt);
+    // The effects' step hooks (effect.h, driven_effect.h), each in the order the effects were
+    // added, the pins last; the stepper (stepper.h) calls them in the order of a step.
+    // take_commands returns true if a driven effect changed the energy it stores.
+    bool take_commands(const State& state, double dt);
+    void begin_step(double dt);
     void begin_attempt();
     void end_step(bool accepted);
     // Before each attempt: the velocities of the points pinned to moving frames
@@ -136,6 +147,7 @@ public:
     double explicit_substep_limit(double stability_interval) const;
 
 private:
+    void add_owned_effect(Owned<Effect> effect);
     double largest_eigenvalue(const numerics::ScalarBandMatrix& bound) const;
     // M over the 3n coordinates with the pins and the clamps' reduction, factored.
     void factor_clamped_mass();
@@ -143,6 +155,7 @@ private:
     AxisModel model_;
     std::pmr::memory_resource* memory_;
     std::pmr::vector<Owned<Effect>> effects_;
+    std::pmr::vector<DrivenEffect*> driven_;  // those of effects_ driven from outside
     Owned<PinnedPoints> pinned_;
     Owned<ClampedEnds> clamped_;
     std::pmr::vector<std::pair<SharedLoads*, EffectId>> shared_loads_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An effect adds generalised forces F(q, v, t) on the control points. Every effect maps a
 // force f acting at spline parameter s to the control points the same way, through the
 // basis weights: F_j += w_j(s) f.
@@ -88,33 +89,16 @@ public:
     // much energy to appear. 0 for effects that only store or dissipate energy.
     virtual double external_work_bound() const { return 0.0; }
 
-    // How the integrator used the effect's last evaluation, so that an effect that reports
-    // the force it applied (the tools' wrench) reports exactly what the bowel received. The
-    // evaluation's forces acted for `duration` seconds of the substep (an explicit method: its
-    // weight of that evaluation, h b_i for the stages of RK4, h for symplectic Euler). An
-    // implicit method gives `after`, the state at the end of the substep: its linearised
-    // forces reached F - H (q_after - q) - C (v_after - v) there, with q, v the evaluation's
-    // state, and its border unknowns are solved. Null for explicit methods.
-    virtual void evaluation_used(double /*duration*/, const State* /*after*/) {}
-
-    // Unknowns the effect adds to the implicit system's border (bordered_system.h): the
-    // bodies it may add in one evaluation (each with three unknowns). Asked by
-    // Dynamics::finalize, which sizes the border once.
-    virtual std::size_t border_bodies() const { return 0; }
-
-    // Step hooks, called by Dynamics around each step of the scene: an effect driven from
-    // outside (the tools) takes its commands and moves within the step; the others have
-    // nothing to do. A step is begin_step, then begin_attempt before each attempt (the
-    // first, and each retry after the guard rolled one back), then end_step.
+    // Step hooks, called by the stepper (stepper.h) in the order the effects were added. A
+    // step is begin_step, then begin_attempt before each attempt (the first, and each retry
+    // after the guard rolled one back).
     //
-    // Before the first attempt of a step of dt seconds from `state`. Returns true if the
-    // effect changed the energy it stores (a grasp taken or let go), so that the guard
-    // measures it again.
-    virtual bool begin_step(const State& /*state*/, double /*dt*/) { return false; }
+    // A step of dt seconds begins (the effects that bound the work of moving frames keep its
+    // length for external_work_bound).
+    virtual void begin_step(double /*dt*/) {}
+    // An attempt begins from the step's start: what the effect changed during a rolled-back
+    // attempt goes back (stepper.h's rollback contract), its sums over the attempt start at zero.
     virtual void begin_attempt() {}
-    // After the last attempt: accepted (the state moved on) or not (the state is back where
-    // the step began).
-    virtual void end_step(bool /*accepted*/) {}
 
     // Save and restore (base/state_io.h, docs/scoring-and-state.md). An effect whose future
     // depends on more than the axis state q, v, t (what it holds between steps, caches whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every effect a scene can name. The numbers are those of ENT_EFFECT_* in enteron.h.
 #pragma once
 

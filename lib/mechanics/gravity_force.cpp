@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/gravity_force.h"
 
 #include "base/state_io.h"

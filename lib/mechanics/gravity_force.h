@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Uniform gravity. Its generalised force is F_j = m_j g with m_j = (M 1)_j the row sums of
 // the mass matrix (the basis weights sum to one), so a free axis falls exactly with g.
 #pragma once

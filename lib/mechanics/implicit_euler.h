@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Linearised backward Euler (one Newton step of the implicit Euler method, Baraff and
 // Witkin 1998):
 //   (M + h C + h^2 H) dv = h (F(q, v) - h H v),   v += dv,   q += h v

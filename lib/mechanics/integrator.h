@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A time integrator advances the state of the axis by one substep h. Each owns its work
 // buffers, sized once at creation, so a substep allocates nothing.
 #pragma once
@@ -25,9 +26,10 @@ public:
     virtual double stability_interval() const = 0;
 
     // A multistep method's history of earlier substeps (bdf2.h) is state: save_history keeps
-    // a copy when the scene backs up its state before a step, restore_history brings it back
-    // with a rolled-back state, and restart forgets it (the next substep starts the method
-    // again, as after the state was set from outside). One-step methods have none.
+    // a copy when the stepper keeps the step's start, restore_history brings it back with a
+    // rolled-back state (stepper.h), and restart forgets it: the next substep starts the
+    // method again, after the state was set from outside (Stepper::state_set_from_outside: a
+    // pin stopped a point). One-step methods have none.
     virtual void save_history() {}
     virtual void restore_history() {}
     virtual void restart() {}

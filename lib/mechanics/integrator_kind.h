@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The time integrators a scene may pick (integrator.h makes them). The numbers are those of
 // ENT_INTEGRATOR_* in enteron.h (checked in lib/capi/abi_constants.cpp).
 #pragma once

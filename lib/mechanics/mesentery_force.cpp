@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/mesentery_force.h"
 
 #include <algorithm>
@@ -41,10 +42,9 @@ void MesenteryForce::attach(const RigidFrames* frames, std::size_t frame, double
     for (Spring& spring : springs_) spring.root = to.to_local(from.to_world(spring.root));
 }
 
-bool MesenteryForce::begin_step(const State& /*state*/, double dt) {
+void MesenteryForce::begin_step(double dt) {
     step_dt_ = dt;
     largest_power_ = 0.0;
-    return false;
 }
 
 void MesenteryForce::evaluate(const State& state, double* force, const Linearization* lin) {

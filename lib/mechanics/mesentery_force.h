@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mesentery: tension-only springs that tie points of the axis to the mesenteric root,
 // a short line segment at the back of the abdomen. Attachment k sits at the spline
 // parameter s_k = (k + 1/2) / K * (n - 1), evenly spread along the axis, and pulls toward
@@ -41,7 +42,7 @@ public:
     double potential_energy(const State& state) const override;
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
     double external_work_bound() const override { return 2.0 * largest_power_ * step_dt_; }
-    bool begin_step(const State& state, double dt) override;
+    void begin_step(double dt) override;
     void begin_attempt() override { largest_power_ = 0.0; }
 
     // Between steps: the root follows frame `frame` of `frames` (outliving this) from where

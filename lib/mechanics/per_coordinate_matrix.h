@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A constant band matrix B (n x n, half bandwidth 3) that acts the same on x, y and z, such
 // as the mass, bending and drag matrices, and its products with 3n vectors: (B (x) I3) x.
 // Stored by diagonals, each repeated for the three coordinates, so that entry k of a product

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/pinned_points.h"
 
 #include <algorithm>
@@ -32,10 +33,9 @@ void PinnedPoints::evaluate(const State& state, double* force, const Linearizati
     }
 }
 
-bool PinnedPoints::begin_step(const State& /*state*/, double dt) {
+void PinnedPoints::begin_step(double dt) {
     step_dt_ = dt;
     largest_power_ = 0.0;
-    return false;
 }
 
 void PinnedPoints::pin(uint32_t point, std::size_t frame, State& state) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control points held in place: fixed in space, or attached to a rigid frame (an organ,
 // mechanics/rigid_frames.h) and carried with it. A pinned point's three coordinates become
 // constraints: their rows of the mass matrix and of the implicit system are replaced by
@@ -39,7 +40,7 @@ public:
     EffectId id() const override { return EffectId::pinned; }
     void evaluate(const State& state, double* force, const Linearization* lin) override;
     double external_work_bound() const override { return 2.0 * largest_power_ * step_dt_; }
-    bool begin_step(const State& state, double dt) override;
+    void begin_step(double dt) override;
     void begin_attempt() override { largest_power_ = 0.0; }
 
     // Holds control point `point` where it is in `state`, in the world (kWorld) or in frame

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid frames that the caller moves between steps: every obstacle has one (its pose), and
 // what is attached to an obstacle (a pin, the mesentery's root) moves with its frame.
 //
@@ -67,7 +68,7 @@ public:
     // Where the frame rests between steps (where the last accepted step left it).
     const RigidPose& pose(std::size_t frame) const { return frames_[frame].current; }
 
-    // Step hooks (Scene::step): the step of dt seconds starting at time t0, then whether it
+    // Step hooks (Stepper::step, stepper.h): the step of dt seconds starting at time t0, then whether it
     // was accepted (the frames rest at their targets) or not (they stay, targets kept).
     void begin_step(double t0, double dt);
     void end_step(bool accepted);

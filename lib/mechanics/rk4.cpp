@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/rk4.h"
 
 namespace enteron::mechanics {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The classic fourth-order Runge-Kutta method on the first-order system (q, v)' = (v, a).
 // Four force evaluations per substep; stable for h omega up to about 2.8 on oscillations.
 #pragma once

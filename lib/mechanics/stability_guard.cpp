@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/stability_guard.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability guard: judges each attempt of a step, so that the scene can roll a bad one
 // back and retry it with halved substeps. An attempt passes when
 //   - every position and velocity stays finite (checked after each substep, so that an

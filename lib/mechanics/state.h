@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mechanical state of the axis: control point positions q and velocities v (x y z per
 // point, m and m/s) and the simulated time.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Axial elasticity, stiff: energy 1/2 EA eps^2 per unit rest length, with the engineering
 // strain eps = |dP/ds| - 1 = |dP/dt| / l0 - 1 (the rest state is the axis at its rest
 // length, whatever its initial shape). Integrated with 2-point Gauss per segment: 2 (n-1)

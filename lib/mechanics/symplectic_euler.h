@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Symplectic (semi-implicit) Euler: v += h M^-1 F(q, v); q += h v. First order, explicit,
 // one force evaluation per substep; without damping it keeps the energy bounded (it
 // exactly conserves a nearby "shadow" energy), for h omega < 2.

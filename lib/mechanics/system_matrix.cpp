@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "mechanics/system_matrix.h"
 
 #include "base/hot_kernel.h"

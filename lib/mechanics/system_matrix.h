@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The implicit integrator's system matrix over the 3n coordinates x0 y0 z0 x1 y1 z1 ...
 // A segment couples four consecutive control points (12 coordinates), so the half
 // bandwidth is 3 * 3 + 2 = 11.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A symmetric positive definite band matrix with half bandwidth P (entries with
 // |i - j| > P are zero), stored as its lower band row by row, and its in-place L D L^T
 // factorisation. Factor and solve cost O(n P^2) and O(n P): linear in n. P is a template

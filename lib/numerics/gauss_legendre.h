@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gauss-Legendre quadrature on [0, 1]: an m-point rule integrates polynomials of degree
 // up to 2m - 1 exactly.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One value under test, named for messages: the building block of every check of caller
 // input (the scene description, the skin description). Each check throws Error(code) on
 // failure and returns *this, so checks chain:

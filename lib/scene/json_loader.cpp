@@ -1,8 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene/json_loader.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -12,6 +16,8 @@
 
 #include "base/error.h"
 #include "scene/mesh_file.h"
+#include "scene/points_length.h"
+#include "scene/scene_table.h"
 #include "scene/validate.h"
 
 namespace enteron::scene {
@@ -95,363 +101,6 @@ Vec3 read_vec3(const json& value, const std::string& path) {
             read_number(value[2], element(path, 2))};
 }
 
-template <typename T>
-using Choice = std::pair<const char*, T>;
-
-template <typename T, std::size_t N>
-T read_choice(const json& value, const std::string& path, const Choice<T> (&choices)[N]) {
-    if (value.is_string()) {
-        for (const auto& [name, choice] : choices) {
-            if (value.get<std::string>() == name) return choice;
-        }
-    }
-    std::string names;
-    for (const auto& choice : choices) {
-        names += (names.empty() ? "\"" : ", \"") + std::string(choice.first) + "\"";
-    }
-    fail(path + " must be one of " + names + ", got " + describe(value));
-}
-
-template <typename T, std::size_t N>
-const char* choice_name(T choice, const Choice<T> (&choices)[N]) {
-    for (const auto& [name, value] : choices) {
-        if (value == choice) return name;
-    }
-    return "?";
-}
-
-const Choice<ShapeKind> kShapeKinds[] = {{"line", ShapeKind::line},
-                                         {"serpentine", ShapeKind::serpentine},
-                                         {"helix", ShapeKind::helix},
-                                         {"points", ShapeKind::points}};
-const Choice<IntegratorKind> kIntegrators[] = {{"rk4", IntegratorKind::rk4},
-                                               {"symplectic_euler", IntegratorKind::symplectic_euler},
-                                               {"implicit_euler", IntegratorKind::implicit_euler},
-                                               {"bdf2", IntegratorKind::bdf2}};
-const Choice<collision::ToolMode> kToolModes[] = {{"proxy", collision::ToolMode::proxy},
-                                                  {"direct", collision::ToolMode::direct}};
-const Choice<int32_t> kPinnedEnds[] = {
-    {"none", pin_none}, {"first", pin_first}, {"last", pin_last}, {"both", pin_both}};
-
-// ---- objects -----------------------------------------------------------------------
-
-// One key an object may hold and how its value goes into the config part T. A key with
-// no reader is reserved: a later version of the format will accept it.
-template <typename T>
-struct Key {
-    const char* name;
-    void (*read)(const json& value, const std::string& path, T& target);
-};
-
-template <typename T, std::size_t N>
-void read_object(const json& object, const std::string& path, const Key<T> (&keys)[N], T& target) {
-    if (!object.is_object()) {
-        const std::string subject = path.empty() ? "the scene" : path;
-        fail(subject + " must be an object, got " + describe(object));
-    }
-    for (const auto& [name, value] : object.items()) {
-        const Key<T>* known = nullptr;
-        for (const Key<T>& key : keys) {
-            if (name == key.name) known = &key;
-        }
-        if (known != nullptr && known->read == nullptr) {
-            fail(child(path, name) + " is not supported by this version");
-        }
-        if (known == nullptr) {
-            std::string expected;
-            for (const Key<T>& key : keys) {
-                if (key.read != nullptr) expected += (expected.empty() ? "" : ", ") + std::string(key.name);
-            }
-            fail("unknown key " + quote(name) + " " + place(path) + " (expected one of: " + expected + ")");
-        }
-        known->read(value, child(path, name), target);
-    }
-}
-
-// The shape keys that each kind uses; any other is a mistake worth reporting.
-constexpr unsigned kind_bit(ShapeKind kind) { return 1u << static_cast<unsigned>(kind); }
-const std::pair<const char*, unsigned> kShapeKeyKinds[] = {
-    {"center", kind_bit(ShapeKind::line) | kind_bit(ShapeKind::serpentine) | kind_bit(ShapeKind::helix)},
-    {"direction", kind_bit(ShapeKind::line)},
-    {"leg_length", kind_bit(ShapeKind::serpentine)},
-    {"leg_spacing", kind_bit(ShapeKind::serpentine)},
-    {"helix_radius", kind_bit(ShapeKind::helix)},
-    {"helix_pitch", kind_bit(ShapeKind::helix)},
-    {"points", kind_bit(ShapeKind::points)},
-};
-
-void read_points(const json& value, const std::string& path, ShapeConfig& shape) {
-    if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
-    shape.points.clear();
-    shape.points.reserve(3 * value.size());
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const Vec3 point = read_vec3(value[i], element(path, i));
-        shape.points.insert(shape.points.end(), point.begin(), point.end());
-    }
-}
-
-const Key<ShapeConfig> kShapeKeys[] = {
-    {"kind", [](auto& v, auto& p, auto& c) { c.kind = read_choice(v, p, kShapeKinds); }},
-    {"center", [](auto& v, auto& p, auto& c) { c.center = read_vec3(v, p); }},
-    {"direction", [](auto& v, auto& p, auto& c) { c.direction = read_vec3(v, p); }},
-    {"leg_length", [](auto& v, auto& p, auto& c) { c.leg_length = read_number(v, p); }},
-    {"leg_spacing", [](auto& v, auto& p, auto& c) { c.leg_spacing = read_number(v, p); }},
-    {"helix_radius", [](auto& v, auto& p, auto& c) { c.helix_radius = read_number(v, p); }},
-    {"helix_pitch", [](auto& v, auto& p, auto& c) { c.helix_pitch = read_number(v, p); }},
-    {"points", read_points},
-};
-
-void read_shape(const json& value, const std::string& path, ShapeConfig& shape) {
-    read_object(value, path, kShapeKeys, shape);
-    for (const auto& [key, kinds] : kShapeKeyKinds) {
-        if (value.contains(key) && (kinds & kind_bit(shape.kind)) == 0) {
-            const std::string kind = choice_name(shape.kind, kShapeKinds);
-            fail(child(path, key) + " does not apply to kind \"" + kind + "\"");
-        }
-    }
-}
-
-const Key<IntestineConfig> kIntestineKeys[] = {
-    {"length", [](auto& v, auto& p, auto& c) { c.length = read_number(v, p); }},
-    {"radius", [](auto& v, auto& p, auto& c) { c.radius = read_number(v, p); }},
-    {"control_points", [](auto& v, auto& p, auto& c) { c.control_points = read_count(v, p); }},
-    {"linear_density", [](auto& v, auto& p, auto& c) { c.linear_density = read_number(v, p); }},
-    {"stretch_stiffness", [](auto& v, auto& p, auto& c) { c.stretch_stiffness = read_number(v, p); }},
-    {"bend_stiffness", [](auto& v, auto& p, auto& c) { c.bend_stiffness = read_number(v, p); }},
-    {"shape", [](auto& v, auto& p, auto& c) { read_shape(v, p, c.shape); }},
-};
-
-void read_intestine(const json& value, const std::string& path, IntestineConfig& intestine) {
-    read_object(value, path, kIntestineKeys, intestine);
-    // Explicit points set the control point count unless it is given too.
-    if (intestine.shape.kind == ShapeKind::points && !value.contains("control_points")) {
-        intestine.control_points = intestine.shape.points.size() / 3;
-    }
-}
-
-const Key<SolverConfig> kSolverKeys[] = {
-    {"integrator", [](auto& v, auto& p, auto& c) { c.integrator = read_choice(v, p, kIntegrators); }},
-    {"timestep", [](auto& v, auto& p, auto& c) { c.timestep = read_number(v, p); }},
-    {"max_substeps", [](auto& v, auto& p, auto& c) { c.max_substeps = read_count(v, p); }},
-    {"max_subdivisions", [](auto& v, auto& p, auto& c) { c.max_subdivisions = read_count(v, p); }},
-    {"max_speed", [](auto& v, auto& p, auto& c) { c.max_speed = read_number(v, p); }},
-};
-
-const Key<DampingConfig> kDampingKeys[] = {
-    {"drag", [](auto& v, auto& p, auto& c) { c.drag = read_number(v, p); }},
-    {"stretch", [](auto& v, auto& p, auto& c) { c.stretch = read_number(v, p); }},
-    {"bend", [](auto& v, auto& p, auto& c) { c.bend = read_number(v, p); }},
-};
-
-void read_root(const json& value, const std::string& path, MesenteryConfig& mesentery) {
-    if (!value.is_array() || value.size() != 2) {
-        fail(path + " must be an array of 2 points [[x, y, z], [x, y, z]], got " + describe(value));
-    }
-    mesentery.root_start = read_vec3(value[0], element(path, 0));
-    mesentery.root_end = read_vec3(value[1], element(path, 1));
-}
-
-const Key<MesenteryConfig> kMesenteryKeys[] = {
-    {"root", read_root},
-    {"obstacle", [](auto& v, auto& p, auto& c) { c.obstacle = read_count(v, p); }},
-    {"stiffness", [](auto& v, auto& p, auto& c) { c.stiffness = read_number(v, p); }},
-    {"attachments", [](auto& v, auto& p, auto& c) { c.attachments = read_count(v, p); }},
-    {"rest_length", [](auto& v, auto& p, auto& c) { c.rest_length = read_number(v, p); }},
-};
-
-void read_pinned_points(const json& value, const std::string& path, PinnedConfig& pinned) {
-    if (!value.is_array()) fail(path + " must be an array of control point indices, got " + describe(value));
-    pinned.points.clear();
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const auto index = read_count(value[i], element(path, i), std::numeric_limits<uint32_t>::max());
-        pinned.points.push_back(static_cast<uint32_t>(index));
-    }
-}
-
-const Key<PinAttachment> kAttachedPinKeys[] = {
-    {"control_point", [](auto& v, auto& p, auto& a) {
-         a.point = static_cast<uint32_t>(read_count(v, p, std::numeric_limits<uint32_t>::max()));
-     }},
-    {"obstacle", [](auto& v, auto& p, auto& a) { a.obstacle = read_count(v, p); }},
-};
-
-void read_attached_pins(const json& value, const std::string& path, PinnedConfig& pinned) {
-    if (!value.is_array())
-        fail(path + " must be an array of {\"control_point\": i, \"obstacle\": k}, got " + describe(value));
-    pinned.attached.assign(value.size(), PinAttachment{});
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string at = element(path, i);
-        if (!value[i].is_object() || !value[i].contains("control_point") || !value[i].contains("obstacle"))
-            fail(at + " must be an object with \"control_point\" and \"obstacle\", got " + describe(value[i]));
-        read_object(value[i], at, kAttachedPinKeys, pinned.attached[i]);
-    }
-}
-
-// pinned.clamped_attached: {"first": k, "last": k}, the obstacle each clamped end follows.
-using ClampedObstacles = std::optional<std::size_t>[2];
-const Key<ClampedObstacles> kClampedAttachedKeys[] = {
-    {"first", [](auto& v, auto& p, auto& c) { c[0] = read_count(v, p); }},
-    {"last", [](auto& v, auto& p, auto& c) { c[1] = read_count(v, p); }},
-};
-
-void read_clamped_attached(const json& value, const std::string& path, PinnedConfig& pinned) {
-    if (!value.is_object())
-        fail(path + " must be an object {\"first\": k, \"last\": k} naming obstacles, got " + describe(value));
-    read_object(value, path, kClampedAttachedKeys, pinned.clamped_obstacle);
-}
-
-const Key<PinnedConfig> kPinnedKeys[] = {
-    {"ends", [](auto& v, auto& p, auto& c) { c.ends = read_choice(v, p, kPinnedEnds); }},
-    {"control_points", read_pinned_points},
-    {"attached", read_attached_pins},
-    {"clamped", [](auto& v, auto& p, auto& c) { c.clamped = read_choice(v, p, kPinnedEnds); }},
-    {"clamped_attached", read_clamped_attached},
-};
-
-const Key<CollisionConfig> kCollisionKeys[] = {
-    {"sphere_spacing", [](auto& v, auto& p, auto& c) { c.sphere_spacing = read_number(v, p); }},
-    {"stiffness", [](auto& v, auto& p, auto& c) { c.contact.stiffness = read_number(v, p); }},
-    {"damping", [](auto& v, auto& p, auto& c) { c.contact.damping = read_number(v, p); }},
-    {"friction", [](auto& v, auto& p, auto& c) { c.contact.friction = read_number(v, p); }},
-    {"slip_speed", [](auto& v, auto& p, auto& c) { c.contact.slip_speed = read_number(v, p); }},
-};
-
-using collision::Obstacle;
-using collision::ObstacleKind;
-const Choice<ObstacleKind> kObstacleKinds[] = {{"box_inside", ObstacleKind::box_inside},
-                                               {"plane", ObstacleKind::plane},
-                                               {"sphere", ObstacleKind::sphere},
-                                               {"capsule", ObstacleKind::capsule},
-                                               {"mesh", ObstacleKind::mesh}};
-
-// The directory relative mesh files are found in, while load_scene_json runs on this thread
-// (the readers below have no other way to learn it).
-thread_local const std::string* t_base_directory = nullptr;
-
-std::array<double, 4> read_quaternion(const json& value, const std::string& path);
-
-// The keys every obstacle type has besides its shape: its frame and friction.
-void read_position(const json& v, const std::string& p, Obstacle& o) { o.pose.position = read_vec3(v, p); }
-void read_orientation(const json& v, const std::string& p, Obstacle& o) {
-    const std::array<double, 4> q = read_quaternion(v, p);
-    // Normalised (and checked for zero) by the validation.
-    o.pose.orientation.coeffs() << q[1], q[2], q[3], q[0];
-}
-void read_friction(const json& v, const std::string& p, Obstacle& o) {
-    o.friction = read_number(v, p);
-    if (!(o.friction >= 0.0)) fail(p + " must be >= 0, got " + describe(v));
-}
-
-// A mesh given inline: [[x, y, z], ...] and [[a, b, c], ...].
-collision::TriangleMesh& inline_mesh(Obstacle& o) {
-    if (!o.mesh) o.mesh = std::make_shared<collision::TriangleMesh>();
-    return const_cast<collision::TriangleMesh&>(*o.mesh);
-}
-void read_vertices(const json& value, const std::string& path, Obstacle& o) {
-    if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
-    collision::TriangleMesh& mesh = inline_mesh(o);
-    mesh.vertices.clear();
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const Vec3 point = read_vec3(value[i], element(path, i));
-        mesh.vertices.insert(mesh.vertices.end(), point.begin(), point.end());
-    }
-}
-void read_triangles(const json& value, const std::string& path, Obstacle& o) {
-    if (!value.is_array()) fail(path + " must be an array of [a, b, c] vertex indices, got " + describe(value));
-    collision::TriangleMesh& mesh = inline_mesh(o);
-    mesh.indices.clear();
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string at = element(path, i);
-        if (!value[i].is_array() || value[i].size() != 3)
-            fail(at + " must be an array of 3 vertex indices [a, b, c], got " + describe(value[i]));
-        for (std::size_t k = 0; k < 3; ++k)
-            mesh.indices.push_back(static_cast<uint32_t>(
-                read_count(value[i][k], element(at, k), std::numeric_limits<uint32_t>::max())));
-    }
-}
-// A mesh file: read at once, relative to the scene file's directory.
-void read_mesh_file_key(const json& value, const std::string& path, Obstacle& o) {
-    if (!value.is_string() || value.get<std::string>().empty())
-        fail(path + " must be the path of an OBJ or PLY file, got " + describe(value));
-    std::string file = value.get<std::string>();
-    if (file.front() != '/' && t_base_directory != nullptr && !t_base_directory->empty())
-        file = *t_base_directory + "/" + file;
-    o.mesh = std::make_shared<collision::TriangleMesh>(read_mesh_file(file, 1.0, path, ErrorCode::invalid_scene));
-}
-// The mesh's scale (a CT mesh in millimetres: 0.001), applied once every key of the
-// obstacle is read, whatever their order.
-thread_local double t_mesh_scale = 1.0;
-void read_scale(const json& value, const std::string& path, Obstacle&) {
-    t_mesh_scale = read_number(value, path);
-    if (!(t_mesh_scale > 0.0) || !std::isfinite(t_mesh_scale)) fail(path + " must be > 0, got " + describe(value));
-}
-
-// The keys of each obstacle type (besides "type") and where they go.
-#define ENTERON_OBSTACLE_FRAME_KEYS \
-    {"position", read_position}, {"orientation", read_orientation}, {"friction", read_friction}
-const Key<Obstacle> kBoxKeys[] = {
-    {"center", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
-    {"half_extents", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
-    ENTERON_OBSTACLE_FRAME_KEYS,
-};
-const Key<Obstacle> kPlaneKeys[] = {
-    {"point", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
-    {"normal", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
-    ENTERON_OBSTACLE_FRAME_KEYS,
-};
-const Key<Obstacle> kSphereKeys[] = {
-    {"center", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
-    {"radius", [](auto& v, auto& p, auto& o) { o.radius = read_number(v, p); }},
-    ENTERON_OBSTACLE_FRAME_KEYS,
-};
-const Key<Obstacle> kCapsuleKeys[] = {
-    {"start", [](auto& v, auto& p, auto& o) { o.center = read_vec3(v, p); }},
-    {"end", [](auto& v, auto& p, auto& o) { o.extent = read_vec3(v, p); }},
-    {"radius", [](auto& v, auto& p, auto& o) { o.radius = read_number(v, p); }},
-    ENTERON_OBSTACLE_FRAME_KEYS,
-};
-const Key<Obstacle> kMeshKeys[] = {
-    {"file", read_mesh_file_key},
-    {"vertices", read_vertices},
-    {"triangles", read_triangles},
-    {"scale", read_scale},
-    {"voxel_size", [](auto& v, auto& p, auto& o) { o.voxel_size = read_number(v, p); }},
-    ENTERON_OBSTACLE_FRAME_KEYS,
-};
-#undef ENTERON_OBSTACLE_FRAME_KEYS
-
-void read_obstacle(const json& value, const std::string& path, Obstacle& obstacle) {
-    if (!value.is_object() || !value.contains("type"))
-        fail(path + " must be an object with a \"type\", got " + describe(value));
-    obstacle = default_obstacle(read_choice(value.at("type"), child(path, "type"), kObstacleKinds));
-    json rest = value;
-    rest.erase("type");
-    switch (obstacle.kind) {
-        case ObstacleKind::box_inside: read_object(rest, path, kBoxKeys, obstacle); break;
-        case ObstacleKind::plane: read_object(rest, path, kPlaneKeys, obstacle); break;
-        case ObstacleKind::sphere: read_object(rest, path, kSphereKeys, obstacle); break;
-        case ObstacleKind::capsule: read_object(rest, path, kCapsuleKeys, obstacle); break;
-        case ObstacleKind::mesh: {
-            if (rest.contains("file") == (rest.contains("vertices") || rest.contains("triangles")))
-                fail(path + " (mesh) must have either \"file\" or both \"vertices\" and \"triangles\"");
-            if (rest.contains("vertices") != rest.contains("triangles"))
-                fail(path + " (mesh) must have both \"vertices\" and \"triangles\"");
-            t_mesh_scale = 1.0;
-            read_object(rest, path, kMeshKeys, obstacle);
-            for (double& coordinate : inline_mesh(obstacle).vertices) coordinate *= t_mesh_scale;
-            break;
-        }
-    }
-}
-
-void read_environment(const json& value, const std::string& path, std::vector<Obstacle>& environment) {
-    if (!value.is_array()) fail(path + " must be an array of obstacles, got " + describe(value));
-    environment.assign(value.size(), Obstacle{});
-    for (std::size_t i = 0; i < value.size(); ++i) read_obstacle(value[i], element(path, i), environment[i]);
-}
-
-using collision::ToolConfig;
-
 std::array<double, 4> read_quaternion(const json& value, const std::string& path) {
     if (!value.is_array() || value.size() != 4)
         fail(path + " must be an array of 4 numbers [w, x, y, z], got " + describe(value));
@@ -459,57 +108,246 @@ std::array<double, 4> read_quaternion(const json& value, const std::string& path
             read_number(value[2], element(path, 2)), read_number(value[3], element(path, 3))};
 }
 
-const Key<ToolConfig> kToolKeys[] = {
-    {"radius", [](auto& v, auto& p, auto& t) { t.settings.radius = read_number(v, p); }},
-    {"length", [](auto& v, auto& p, auto& t) { t.settings.length = read_number(v, p); }},
-    {"max_force", [](auto& v, auto& p, auto& t) { t.settings.max_force = read_number(v, p); }},
-    {"grasp_margin", [](auto& v, auto& p, auto& t) { t.settings.grasp_margin = read_number(v, p); }},
-    {"grasp_stiffness", [](auto& v, auto& p, auto& t) { t.settings.grasp_stiffness = read_number(v, p); }},
-    {"grasp_damping", [](auto& v, auto& p, auto& t) { t.settings.grasp_damping = read_number(v, p); }},
-    {"position", [](auto& v, auto& p, auto& t) {
-         const Vec3 position = read_vec3(v, p);
-         for (int c = 0; c < 3; ++c) t.pose.position[c] = position[c];
-     }},
-    {"orientation", [](auto& v, auto& p, auto& t) { t.pose.orientation = read_quaternion(v, p); }},
-    {"mode", [](auto& v, auto& p, auto& t) { t.settings.mode = read_choice(v, p, kToolModes); }},
-    {"coupling_stiffness", [](auto& v, auto& p, auto& t) { t.settings.coupling_stiffness = read_number(v, p); }},
-    {"coupling_damping", [](auto& v, auto& p, auto& t) { t.settings.coupling_damping = read_number(v, p); }},
-    {"friction", [](auto& v, auto& p, auto& t) { t.settings.friction = read_number(v, p); }},
-    {"passivity_limiter", [](auto& v, auto& p, auto& t) { t.settings.passivity_limiter = read_bool(v, p); }},
-};
-
-void read_tools(const json& value, const std::string& path, std::vector<ToolConfig>& tools) {
-    if (!value.is_array()) fail(path + " must be an array of tools, got " + describe(value));
-    tools.assign(value.size(), ToolConfig{});
-    for (std::size_t i = 0; i < value.size(); ++i) read_object(value[i], element(path, i), kToolKeys, tools[i]);
+int32_t read_choice(const json& value, const std::string& path, const Choices& choices) {
+    if (value.is_string()) {
+        for (std::size_t i = 0; i < choices.count; ++i)
+            if (value.get<std::string>() == choices.names[i].name) return choices.names[i].value;
+    }
+    std::string names;
+    for (std::size_t i = 0; i < choices.count; ++i)
+        names += (names.empty() ? "\"" : ", \"") + std::string(choices.names[i].name) + "\"";
+    fail(path + " must be one of " + names + ", got " + describe(value));
 }
 
-const Key<SceneConfig> kNoKeys[] = {{"", nullptr}};
-
-void read_version(const json& value, const std::string& path, SceneConfig&) {
-    if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
+const char* choice_name(const Choices& choices, int32_t value) {
+    for (std::size_t i = 0; i < choices.count; ++i)
+        if (choices.names[i].value == value) return choices.names[i].name;
+    return "?";
 }
 
-// Present object = effect on, starting from its defaults.
-const Key<SceneConfig> kSceneKeys[] = {
-    {"version", read_version},
-    {"intestine", [](auto& v, auto& p, auto& c) { read_intestine(v, p, c.intestine); }},
-    {"solver", [](auto& v, auto& p, auto& c) { read_object(v, p, kSolverKeys, c.solver); }},
-    {"gravity", [](auto& v, auto& p, auto& c) { c.gravity = read_vec3(v, p); }},
-    {"damping", [](auto& v, auto& p, auto& c) { read_object(v, p, kDampingKeys, c.damping.emplace()); }},
-    {"mesentery",
-     [](auto& v, auto& p, auto& c) { read_object(v, p, kMesenteryKeys, c.mesentery.emplace()); }},
-    {"pinned", [](auto& v, auto& p, auto& c) { read_object(v, p, kPinnedKeys, c.pinned.emplace()); }},
-    {"collision", [](auto& v, auto& p, auto& c) { read_object(v, p, kCollisionKeys, c.collision); }},
-    {"environment", [](auto& v, auto& p, auto& c) { read_environment(v, p, c.environment); }},
-    {"self_collision",
-     [](auto& v, auto& p, auto& c) {
-         // An object, for now without keys: present means on.
-         read_object(v, p, kNoKeys, c);
-         c.self_collision = true;
-     }},
-    {"tools", [](auto& v, auto& p, auto& c) { read_tools(v, p, c.tools); }},
+// ---- objects -----------------------------------------------------------------------
+
+// Reads a document into a config by the scene's table (scene_table.h): each key of an
+// object is a row of its block, read by the row's type into the part the block describes.
+class Reader {
+public:
+    explicit Reader(const std::string& base_directory) : base_directory_(base_directory) {}
+
+    // The object `value` at `path` into `part`, described by `block`.
+    void read_block(const json& value, const std::string& path, const Block& block, void* part);
+
+    // The paths of the keys the document gives ("intestine.radius").
+    const FieldSet& given() const { return given_; }
+
+private:
+    void read_field(const Field& field, const json& value, const std::string& path, void* part);
+    void read_elements(const Block& block, const Field& first, const json& value, const std::string& path, void* part);
+    void read_custom(Special special, const json& value, const std::string& path, void* part);
+    // An obstacle's own rules: a mesh from a file or inline, its scale, a friction >= 0.
+    void check_mesh_keys(const json& value, const std::string& path) const;
+    void finish_obstacle(const json& value, const std::string& path, collision::Obstacle& obstacle) const;
+
+    const std::string& base_directory_;
+    FieldSet given_ = FieldSet::none();
+    double mesh_scale_ = 1.0;
 };
+
+// The keys a block accepts for its part (a typed block: those of the part's kind), in the
+// order of its rows, each once.
+std::string expected_keys(const Block& block, const void* part) {
+    std::string keys;
+    for (const Field& field : block) {
+        if (block.typed && (&field == block.kind || !block.applies(field, part))) continue;
+        if (field.elements > 0 && field.element > 0) continue;
+        keys += (keys.empty() ? "" : ", ") + std::string(field.key);
+    }
+    return keys;
+}
+
+void Reader::read_block(const json& value, const std::string& path, const Block& block, void* part) {
+    const bool obstacle = &block == &obstacle_block();
+    if (block.every_key_required) {
+        bool complete = value.is_object();
+        std::string keys;
+        for (const Field& field : block) {
+            complete = complete && value.contains(field.key);
+            keys += (keys.empty() ? "\"" : "\" and \"") + std::string(field.key);
+        }
+        if (!complete) fail(path + " must be an object with " + keys + "\", got " + describe(value));
+    }
+    if (block.typed) {
+        const char* kind = block.kind->key;
+        if (!value.is_object() || !value.contains(kind))
+            fail(path + " must be an object with a \"" + kind + "\", got " + describe(value));
+        const Choice& choice = std::get<Choice>(block.kind->value);
+        block.start(part, read_choice(value.at(kind), child(path, kind), choice.choices));
+        if (obstacle) {
+            check_mesh_keys(value, path);
+            mesh_scale_ = 1.0;
+        }
+    }
+    if (!value.is_object()) {
+        const std::string subject = path.empty() ? "the scene" : path;
+        fail(subject + " must be an object" + (block.looks_like ? std::string(" ") + block.looks_like : "") +
+             ", got " + describe(value));
+    }
+    for (const auto& [key, item] : value.items()) {
+        if (block.typed && key == block.kind->key) continue;
+        const Field* field = block.find(key.c_str());
+        if (field == nullptr || (block.typed && !block.applies(*field, part)))
+            fail("unknown key " + quote(key) + " " + place(path) + " (expected one of: " +
+                 expected_keys(block, part) + ")");
+        given_.add(child(path, key));
+        if (field->elements > 0) {
+            read_elements(block, *field, item, child(path, key), part);
+        } else {
+            read_field(*field, item, child(path, key), part);
+        }
+    }
+    // A key of another kind is a mistake worth reporting (typed blocks refused it as unknown).
+    if (block.kind != nullptr && !block.typed) {
+        for (const Field& field : block) {
+            if (value.contains(field.key) && !block.applies(field, part)) {
+                const Choice& choice = std::get<Choice>(block.kind->value);
+                fail(child(path, field.key) + " does not apply to kind \"" +
+                     choice_name(choice.choices, choice.get(part)) + "\"");
+            }
+        }
+    }
+    if (obstacle) finish_obstacle(value, path, *static_cast<collision::Obstacle*>(part));
+}
+
+// A key whose value is an array of points, each one field ("root": [start, end]).
+void Reader::read_elements(const Block& block, const Field& first, const json& value, const std::string& path,
+                           void* part) {
+    if (!value.is_array() || value.size() != first.elements) {
+        std::string points;
+        for (std::size_t i = 0; i < first.elements; ++i) points += (i == 0 ? "[x, y, z]" : ", [x, y, z]");
+        fail(path + " must be an array of " + std::to_string(first.elements) + " points [" + points + "], got " +
+             describe(value));
+    }
+    for (const Field& field : block)
+        if (std::strcmp(field.key, first.key) == 0)
+            read_field(field, value[field.element], element(path, field.element), part);
+}
+
+void Reader::read_field(const Field& field, const json& value, const std::string& path, void* part) {
+    if (const Number* number = std::get_if<Number>(&field.value)) {
+        number->set(part, read_number(value, path));
+    } else if (const Count* count = std::get_if<Count>(&field.value)) {
+        count->set(part, static_cast<std::size_t>(read_count(value, path, count->max)));
+    } else if (const Choice* choice = std::get_if<Choice>(&field.value)) {
+        choice->set(part, read_choice(value, path, choice->choices));
+    } else if (const Point* point = std::get_if<Point>(&field.value)) {
+        point->set(part, read_vec3(value, path));
+    } else if (const Rotation* rotation = std::get_if<Rotation>(&field.value)) {
+        // Normalised (and checked for zero) by the validation.
+        rotation->set(part, read_quaternion(value, path));
+    } else if (const Flag* flag = std::get_if<Flag>(&field.value)) {
+        flag->set(part, read_bool(value, path));
+    } else if (const Object* object = std::get_if<Object>(&field.value)) {
+        // A present object turns its effect on, starting from its defaults.
+        read_block(value, path, *object->block, object->make(part));
+    } else if (const List* list = std::get_if<List>(&field.value)) {
+        if (!value.is_array()) fail(path + " must be an array of " + list->what + ", got " + describe(value));
+        list->resize(part, value.size());
+        for (std::size_t i = 0; i < value.size(); ++i)
+            read_block(value[i], element(path, i), *list->block, list->element(part, i));
+    } else {
+        read_custom(std::get<Custom>(field.value).special, value, path, part);
+    }
+}
+
+// A mesh given inline: [[x, y, z], ...] and [[a, b, c], ...].
+collision::TriangleMesh& inline_mesh(collision::Obstacle& o) {
+    if (!o.mesh) o.mesh = std::make_shared<collision::TriangleMesh>();
+    return const_cast<collision::TriangleMesh&>(*o.mesh);
+}
+
+void Reader::read_custom(Special special, const json& value, const std::string& path, void* part) {
+    switch (special) {
+        case Special::version:
+            if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
+            break;
+        case Special::shape_points: {
+            if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
+            std::vector<double>& points = static_cast<ShapeConfig*>(part)->points;
+            points.clear();
+            points.reserve(3 * value.size());
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                const Vec3 point = read_vec3(value[i], element(path, i));
+                points.insert(points.end(), point.begin(), point.end());
+            }
+            break;
+        }
+        case Special::pinned_points: {
+            if (!value.is_array()) fail(path + " must be an array of control point indices, got " + describe(value));
+            std::vector<uint32_t>& points = static_cast<PinnedConfig*>(part)->points;
+            points.clear();
+            for (std::size_t i = 0; i < value.size(); ++i)
+                points.push_back(static_cast<uint32_t>(
+                    read_count(value[i], element(path, i), std::numeric_limits<uint32_t>::max())));
+            break;
+        }
+        case Special::mesh_file: {
+            // Read at once, relative to the scene file's directory.
+            if (!value.is_string() || value.get<std::string>().empty())
+                fail(path + " must be the path of an OBJ or PLY file, got " + describe(value));
+            std::string file = value.get<std::string>();
+            if (file.front() != '/' && !base_directory_.empty()) file = base_directory_ + "/" + file;
+            static_cast<collision::Obstacle*>(part)->mesh = std::make_shared<collision::TriangleMesh>(
+                read_mesh_file(file, 1.0, path, ErrorCode::invalid_scene));
+            break;
+        }
+        case Special::mesh_vertices: {
+            if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
+            collision::TriangleMesh& mesh = inline_mesh(*static_cast<collision::Obstacle*>(part));
+            mesh.vertices.clear();
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                const Vec3 point = read_vec3(value[i], element(path, i));
+                mesh.vertices.insert(mesh.vertices.end(), point.begin(), point.end());
+            }
+            break;
+        }
+        case Special::mesh_triangles: {
+            if (!value.is_array())
+                fail(path + " must be an array of [a, b, c] vertex indices, got " + describe(value));
+            collision::TriangleMesh& mesh = inline_mesh(*static_cast<collision::Obstacle*>(part));
+            mesh.indices.clear();
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                const std::string at = element(path, i);
+                if (!value[i].is_array() || value[i].size() != 3)
+                    fail(at + " must be an array of 3 vertex indices [a, b, c], got " + describe(value[i]));
+                for (std::size_t k = 0; k < 3; ++k)
+                    mesh.indices.push_back(static_cast<uint32_t>(
+                        read_count(value[i][k], element(at, k), std::numeric_limits<uint32_t>::max())));
+            }
+            break;
+        }
+        case Special::mesh_scale:
+            // A CT mesh in millimetres: 0.001, applied once every key of the obstacle is read,
+            // whatever their order.
+            mesh_scale_ = read_number(value, path);
+            if (!(mesh_scale_ > 0.0) || !std::isfinite(mesh_scale_)) fail(path + " must be > 0, got " + describe(value));
+            break;
+    }
+}
+
+void Reader::check_mesh_keys(const json& value, const std::string& path) const {
+    if (value.at(obstacle_block().kind->key) != "mesh") return;
+    if (value.contains("file") == (value.contains("vertices") || value.contains("triangles")))
+        fail(path + " (mesh) must have either \"file\" or both \"vertices\" and \"triangles\"");
+    if (value.contains("vertices") != value.contains("triangles"))
+        fail(path + " (mesh) must have both \"vertices\" and \"triangles\"");
+}
+
+void Reader::finish_obstacle(const json& value, const std::string& path, collision::Obstacle& obstacle) const {
+    // JSON's friction is a coefficient; C also takes a negative one, the scene's.
+    if (value.contains("friction") && !(obstacle.friction >= 0.0))
+        fail(child(path, "friction") + " must be >= 0, got " + describe(value.at("friction")));
+    if (obstacle.kind == collision::ObstacleKind::mesh)
+        for (double& coordinate : inline_mesh(obstacle).vertices) coordinate *= mesh_scale_;
+}
 
 // ---- parsing -----------------------------------------------------------------------
 
@@ -595,41 +433,23 @@ json parse(const char* text, std::size_t length) {
     }
 }
 
-// The fields the document gives a value, found by their paths ("mesentery.root[0]" is
-// given with "mesentery.root"): the validation's messages blame what the user wrote.
-FieldSet given_fields(const json& document) {
-    FieldSet given;
-    const FieldNames& names = json_field_names();
-    for (std::size_t i = 0; i < kFieldCount; ++i) {
-        const std::string path = std::string(names.names[i]).substr(0, std::string(names.names[i]).find('['));
-        const json* node = &document;
-        bool present = true;
-        for (std::size_t start = 0; present;) {
-            const std::size_t dot = path.find('.', start);
-            const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-            present = node->is_object() && node->contains(key);
-            if (present) node = &(*node)[key];
-            if (dot == std::string::npos) break;
-            start = dot + 1;
-        }
-        given[i] = present;
-    }
-    return given;
-}
-
 }  // namespace
 
 SceneConfig load_scene_json(const char* text, std::size_t length, const std::string& base_directory) {
     if (text == nullptr && length != 0) throw Error(ErrorCode::invalid_argument, "json is NULL");
-    struct BaseDirectory {
-        explicit BaseDirectory(const std::string* directory) { t_base_directory = directory; }
-        ~BaseDirectory() { t_base_directory = nullptr; }
-    } base(&base_directory);
     static const char kEmpty[] = "";
     const json document = parse(text != nullptr ? text : kEmpty, length);
     SceneConfig config;
-    read_object(document, "", kSceneKeys, config);
-    return validate(std::move(config), json_field_names(), given_fields(document));
+    Reader reader(base_directory);
+    reader.read_block(document, "", scene_block(), &config);
+    // Explicit points set the control point count unless it is given too, and the length:
+    // the spline's through them (points_length.h).
+    IntestineConfig& intestine = config.intestine;
+    if (intestine.shape.kind == ShapeKind::points && !reader.given().has("intestine.control_points"))
+        intestine.control_points = intestine.shape.points.size() / 3;
+    if (intestine.shape.kind == ShapeKind::points && !reader.given().has("intestine.length"))
+        intestine.length = kLengthOfThePoints;
+    return validate(std::move(config), json_field_names(), reader.given());
 }
 
 }  // namespace enteron::scene

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The JSON v1 scene description (docs/scene-json.md) read into a SceneConfig.
 #pragma once
 

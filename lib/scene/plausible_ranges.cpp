@@ -1,42 +1,16 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene/plausible_ranges.h"
 
 #include <cmath>
+#include <cstring>
 
 #include "scene/checked_value.h"
+#include "scene/points_length.h"
+#include "scene/scene_table.h"
 
 namespace enteron::scene {
 
 namespace {
-
-constexpr UnitSlip kMillimetres{1e3, "millimetres"};
-constexpr UnitSlip kCentimetres{1e2, "centimetres"};
-constexpr UnitSlip kNone{0.0, nullptr};
-
-// Generous bounds: a value outside is far from anything a human abdomen has.
-constexpr PlausibleRange kLength{"a human small bowel's length", 0.05, 10.0, "m", {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kRadius{"a human small bowel's radius", 0.004, 0.03, "m", {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kLinearDensity{"a human small bowel's mass per metre", 0.05, 2.0, "kg/m",
-                                        {{1e3, "g/m (or is it a density in kg/m^3?)"}, kNone}};
-constexpr PlausibleRange kStretchStiffness{"a human small bowel's axial stiffness EA", 1.0, 1e4, "N", {kNone, kNone}};
-constexpr PlausibleRange kBendStiffness{"a human small bowel's bending stiffness EI", 1e-6, 0.1, "N m^2",
-                                        {kNone, kNone}};
-constexpr PlausibleRange kShapeSize{"an abdominal cavity's size", 0.005, 1.0, "m", {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kGravity{"the Earth's gravity (9.81 m/s^2; 0 turns it off)", 5.0, 20.0, "m/s^2",
-                                  {{1e3, "mm/s^2"}, {1.0 / 9.81, "g"}}};
-constexpr PlausibleRange kTimestep{"a real-time substep", 1e-6, 0.01, "s", {{1e3, "milliseconds"}, kNone}};
-constexpr PlausibleRange kDrag{"the drag of a bowel in the abdomen", 0.0, 10.0, "N s/m^2", {kNone, kNone}};
-constexpr PlausibleRange kAxialDamping{"a bowel's internal damping", 0.0, 10.0, "N s", {kNone, kNone}};
-constexpr PlausibleRange kMesenteryStiffness{"a mesentery spring's stiffness", 0.01, 1e3, "N/m", {{1e3, "N/mm"}, kNone}};
-constexpr PlausibleRange kContactStiffness{"a soft-tissue contact's stiffness", 10.0, 1e5, "N/m",
-                                           {{1e3, "N/mm"}, kNone}};
-constexpr PlausibleRange kContactDamping{"a soft-tissue contact's damping", 0.0, 100.0, "N s/m", {kNone, kNone}};
-constexpr PlausibleRange kFriction{"a friction coefficient of wet tissue", 0.0, 2.0, "", {kNone, kNone}};
-constexpr PlausibleRange kCavityHalfSize{"an abdominal cavity's half size", 0.02, 1.0, "m", {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kOrganRadius{"an abdominal organ's or vessel's radius", 0.002, 0.5, "m",
-                                      {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kToolRadius{"a laparoscopic tool's radius", 0.001, 0.02, "m", {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kToolLength{"a laparoscopic tool's shaft", 0.0, 1.0, "m", {kMillimetres, kCentimetres}};
-constexpr PlausibleRange kToolForce{"a force a haptic device renders", 0.01, 100.0, "N", {kNone, kNone}};
 
 bool within(const PlausibleRange& range, double value) { return value >= range.low && value <= range.high; }
 
@@ -48,6 +22,75 @@ void warn(const Logger& logger, const std::string& name, const PlausibleRange& r
     const std::string unlikely = implausibility(range, value);
     if (!unlikely.empty()) logger.log(LogLevel::warning, "%s: %s", name.c_str(), unlikely.c_str());
 }
+
+std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+
+// A mesh in millimetres (a CT export) is a thousand times too large: half its largest side
+// is held to a box's half extents' range.
+void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
+    const collision::TriangleMesh* mesh = obstacle.mesh ? obstacle.mesh.get() : nullptr;
+    if (mesh == nullptr || mesh->vertex_count() == 0) return;
+    Vec3 low = mesh->vertex(0), high = low;
+    for (std::size_t v = 1; v < mesh->vertex_count(); ++v) {
+        low = low.cwiseMin(mesh->vertex(v));
+        high = high.cwiseMax(mesh->vertex(v));
+    }
+    const PlausibleRange& half_size = *obstacle_block().find("half_extents")->plausible;
+    warn(logger, name + " (mesh) half of its largest side", half_size, 0.5 * (high - low).maxCoeff());
+}
+
+// Warns about each value of a part (and of the parts in it) outside its row's range.
+class Warner {
+public:
+    Warner(const FieldNames& names, const Logger& logger, bool contacts)
+        : names_(names), logger_(logger), contacts_(contacts) {}
+
+    void walk(const Block& block, const void* part, const std::string& path, const std::string& prefix) const {
+        for (const Field& f : block) {
+            if (!block.applies(f, part) || (f.present != nullptr && !f.present(part))) continue;
+            if (const Object* object = std::get_if<Object>(&f.value)) {
+                // The contact law matters only to a scene that has contacts.
+                if (object->block == contact_law_ && !contacts_) continue;
+                if (const void* inner = object->find(part)) walk(*object->block, inner, join(path, f.key), prefix);
+            } else if (const List* list = std::get_if<List>(&f.value)) {
+                for (std::size_t i = 0; i < list->size(part); ++i) {
+                    const std::string element = path + (path.empty() ? "" : ".") + f.key + "[" + std::to_string(i) + "]";
+                    walk(*list->block, list->element(const_cast<void*>(part), i), element,
+                         names_.element_prefix(f, prefix, i));
+                }
+            } else if (f.plausible != nullptr) {
+                value(f, part, names_.of(f, path, prefix));
+            }
+        }
+        if (block.check == Block::Check::obstacle) {
+            const auto& obstacle = *static_cast<const collision::Obstacle*>(part);
+            if (obstacle.kind == collision::ObstacleKind::mesh)
+                warn_mesh(obstacle, names_.c_names ? prefix.substr(0, prefix.size() - 1) : path, logger_);
+        }
+    }
+
+private:
+    void value(const Field& f, const void* part, const std::string& name) const {
+        if (const Number* number = std::get_if<Number>(&f.value)) {
+            const double v = number->get(part);
+            if (!(f.zero_is_off && v == 0.0)) warn(logger_, name, *f.plausible, v);
+        } else if (const Point* point = std::get_if<Point>(&f.value)) {
+            const Vec3 v = point->get(part);
+            if (f.plausible_magnitude) {
+                const double magnitude = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                if (!(f.zero_is_off && magnitude == 0.0)) warn(logger_, "|" + name + "|", *f.plausible, magnitude);
+            } else {
+                for (std::size_t k = 0; k < 3; ++k)
+                    warn(logger_, name + "[" + std::to_string(k) + "]", *f.plausible, v[k]);
+            }
+        }
+    }
+
+    const FieldNames& names_;
+    const Logger& logger_;
+    bool contacts_;
+    const Block* contact_law_ = std::get<Object>(find_path(scene_block(), "collision").field->value).block;
+};
 
 }  // namespace
 
@@ -62,108 +105,23 @@ std::string implausibility(const PlausibleRange& range, double value) {
     return text;
 }
 
-const PlausibleRange* plausible_range(Field field) {
-    switch (field) {
-        case Field::length: return &kLength;
-        case Field::radius: return &kRadius;
-        case Field::linear_density: return &kLinearDensity;
-        case Field::stretch_stiffness: return &kStretchStiffness;
-        case Field::bend_stiffness: return &kBendStiffness;
-        case Field::shape_leg_length:
-        case Field::shape_leg_spacing:
-        case Field::shape_helix_radius:
-        case Field::shape_helix_pitch: return &kShapeSize;
-        case Field::timestep: return &kTimestep;
-        case Field::drag: return &kDrag;
-        case Field::stretch_damping:
-        case Field::bend_damping: return &kAxialDamping;
-        case Field::mesentery_stiffness: return &kMesenteryStiffness;
-        case Field::contact_stiffness: return &kContactStiffness;
-        case Field::contact_damping: return &kContactDamping;
-        case Field::contact_friction: return &kFriction;
-        default: return nullptr;
-    }
-}
-
 void warn_implausible(const SceneConfig& config, const FieldNames& names, const Logger& logger) {
     if (!logger.enabled()) return;
-    const auto check = [&](Field field, double value) {
-        if (const PlausibleRange* range = plausible_range(field)) warn(logger, names[field], *range, value);
-    };
-    const IntestineConfig& intestine = config.intestine;
-    check(Field::length, intestine.length);
-    check(Field::radius, intestine.radius);
-    check(Field::linear_density, intestine.linear_density);
-    // 0 turns an elasticity off: a choice, not a mistake.
-    if (intestine.stretch_stiffness != 0.0) check(Field::stretch_stiffness, intestine.stretch_stiffness);
-    if (intestine.bend_stiffness != 0.0) check(Field::bend_stiffness, intestine.bend_stiffness);
-    switch (intestine.shape.kind) {
-        case ShapeKind::serpentine:
-            check(Field::shape_leg_length, intestine.shape.leg_length);
-            check(Field::shape_leg_spacing, intestine.shape.leg_spacing);
-            break;
-        case ShapeKind::helix:
-            check(Field::shape_helix_radius, intestine.shape.helix_radius);
-            check(Field::shape_helix_pitch, intestine.shape.helix_pitch);
-            break;
-        default: break;
-    }
-    check(Field::timestep, config.solver.timestep);
-    if (config.gravity) {
-        const Vec3& g = *config.gravity;
-        const double magnitude = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        if (magnitude != 0.0) warn(logger, "|" + std::string(names[Field::gravity]) + "|", kGravity, magnitude);
-    }
-    if (config.damping) {
-        check(Field::drag, config.damping->drag);
-        check(Field::stretch_damping, config.damping->stretch);
-        check(Field::bend_damping, config.damping->bend);
-    }
-    if (config.mesentery) check(Field::mesentery_stiffness, config.mesentery->stiffness);
-    // The contact law matters only to a scene that has contacts.
-    if (config.self_collision || !config.environment.empty() || !config.tools.empty()) {
-        check(Field::contact_stiffness, config.collision.contact.stiffness);
-        check(Field::contact_damping, config.collision.contact.damping);
-        check(Field::contact_friction, config.collision.contact.friction);
-    }
-    for (std::size_t i = 0; i < config.environment.size(); ++i)
-        warn_implausible(config.environment[i], names[Field::obstacle] + ("[" + std::to_string(i) + "]"), logger);
-    for (std::size_t i = 0; i < config.tools.size(); ++i)
-        warn_implausible(config.tools[i].settings, "tools[" + std::to_string(i) + "].", names, logger);
+    const bool contacts = config.self_collision || !config.environment.empty() || !config.tools.empty();
+    Warner(names, logger, contacts).walk(scene_block(), &config, "", "");
+    warn_points_length(config, names, logger);
 }
 
 void warn_implausible(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
     if (!logger.enabled()) return;
-    using collision::ObstacleKind;
-    switch (obstacle.kind) {
-        case ObstacleKind::box_inside:
-            for (std::size_t k = 0; k < 3; ++k)
-                warn(logger, name + ".half_extents[" + std::to_string(k) + "]", kCavityHalfSize, obstacle.extent[k]);
-            break;
-        case ObstacleKind::sphere:
-        case ObstacleKind::capsule: warn(logger, name + ".radius", kOrganRadius, obstacle.radius); break;
-        case ObstacleKind::plane: break;
-        case ObstacleKind::mesh: {
-            // A mesh in millimetres (a CT export) is a thousand times too large.
-            const collision::TriangleMesh* mesh = obstacle.mesh ? obstacle.mesh.get() : nullptr;
-            if (mesh == nullptr || mesh->vertex_count() == 0) break;
-            Vec3 low = mesh->vertex(0), high = low;
-            for (std::size_t v = 1; v < mesh->vertex_count(); ++v) {
-                low = low.cwiseMin(mesh->vertex(v));
-                high = high.cwiseMax(mesh->vertex(v));
-            }
-            warn(logger, name + " (mesh) half of its largest side", kCavityHalfSize, 0.5 * (high - low).maxCoeff());
-            break;
-        }
-    }
+    Warner(json_field_names(), logger, true).walk(obstacle_block(), &obstacle, name, name + ".");
 }
 
-void warn_implausible(const collision::ToolSettings& tool, const std::string& prefix, const FieldNames& names,
+void warn_implausible(const collision::ToolConfig& tool, const std::string& prefix, const FieldNames& names,
                       const Logger& logger) {
     if (!logger.enabled()) return;
-    warn(logger, prefix + names.tool.radius, kToolRadius, tool.radius);
-    warn(logger, prefix + names.tool.length, kToolLength, tool.length);
-    warn(logger, prefix + names.tool.max_force, kToolForce, tool.max_force);
+    const std::string path = prefix.empty() ? prefix : prefix.substr(0, prefix.size() - 1);
+    Warner(names, logger, true).walk(tool_block(), &tool, path, prefix);
 }
 
 }  // namespace enteron::scene

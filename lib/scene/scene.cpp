@@ -1,7 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene/scene.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -73,9 +73,10 @@ void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, con
                1e-6 * double(field.memory_bytes()));
 }
 
-uint64_t elapsed_ns(std::chrono::steady_clock::time_point start) {
-    return static_cast<uint64_t>(
-        std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start).count());
+StepperSettings stepper_settings(const SceneConfig& config) {
+    const SolverConfig& solver = config.solver;
+    return {solver.integrator,       solver.timestep,  solver.max_substeps,
+            solver.max_subdivisions, solver.max_speed, config.intestine.linear_density * config.intestine.length};
 }
 
 }  // namespace
@@ -89,22 +90,18 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
       tool_channels_(memory),
       frames_(memory),
       dynamics_(model_, memory),
-      state_(memory),
-      backup_(memory),
-      explicit_substep_limit_(0.0),
+      stepper_(dynamics_, frames_, stepper_settings(config), logger, memory),
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
       start_clearance_(scene::start_clearance(config)),
-      guard_(config.solver.max_speed, config.intestine.linear_density * config.intestine.length),
       published_(published) {
     const IntestineConfig& intestine = config.intestine;
     const std::size_t n = model_.control_points;
     if (config.start_points.size() != 3 * n || published_.control_points() != n)
         throw Error(ErrorCode::internal, "a scene made from a config that validate() did not return");
-    state_.resize(n);
-    backup_.resize(n);
-    std::copy(config.start_points.begin(), config.start_points.end(), state_.q.begin());
+    mechanics::State& state = stepper_.state();
+    std::copy(config.start_points.begin(), config.start_points.end(), state.q.begin());
     collision_.contact.damping_depth = kContactDampingDepth * radius_;
     stats_.rest_length = rest_length_;
     add_to_fingerprint(description_, config);
@@ -119,32 +116,31 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
                                                config.damping->bend};
         dynamics_.add_effect(make_owned<DampingForce>(memory, model_, coefficients, memory));
     }
-    if (config.gravity) dynamics_.add_effect(make_owned<GravityForce>(memory, model_, *config.gravity, memory));
+    if (config.gravity) gravity_ = &dynamics_.add_effect(make_owned<GravityForce>(memory, model_, *config.gravity, memory));
     if (config.mesentery) {
         const MesenteryConfig& m = *config.mesentery;
         const MesenteryParameters parameters{m.root_start, m.root_end, m.attachments, m.stiffness,
                                              m.rest_length};
-        dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state_, memory));
+        mesentery_ = &dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state, memory));
     }
     if (config.pinned)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), frames_,
                                                     config.solver.max_speed, memory));
     if (const int32_t clamped = clamped_ends(config))
         dynamics_.add_clamps(make_owned<ClampedEnds>(memory, (clamped & pin_first) != 0, (clamped & pin_last) != 0,
-                                                     state_.q.data(), n));
+                                                     state.q.data(), n));
     // The self-contact's time takes the shared contact loads', even though the environment
     // is made first.
     if (config.self_collision) contact_loads(EffectId::self_collision);
     for (std::size_t i = 0; i < config.environment.size(); ++i) {
         collision::Obstacle obstacle = config.environment[i];
-        const std::string name = std::string(names[Field::obstacle]) + "[" + std::to_string(i) + "]";
+        const std::string name = names.obstacle(i);
         collision::EnvironmentForce::prepare(obstacle, radius_, memory_);
         // A mesh's start can only be checked once its field is built.
         if (obstacle.kind == collision::ObstacleKind::mesh)
-            validate_obstacle(obstacle, name, names, state_.q.data(), n, &start_clearance_);
+            validate_obstacle(obstacle, name, names, state.q.data(), n, &start_clearance_);
         warn_mesh(obstacle, name, logger_);
-        if (environment() == nullptr) add_environment(make_effect_environment());
-        environment()->add_obstacle(obstacle);
+        add_to_environment(obstacle);
         ++obstacles_;
     }
     if (config.pinned)
@@ -156,14 +152,11 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
             if (obstacle) attach_clamped_ends_only(end, obstacle);
     for (const collision::ToolConfig& tool : config.tools) add_tool_effect_only(tool);
     if (config.self_collision) {
-        auto effect = make_owned<collision::SelfContactForce>(memory, collision_spheres(), collision_.contact, state_,
-                                                              memory, contact_loads(EffectId::self_collision));
-        const collision::ContactLog* log = &effect->contact_log();
-        dynamics_.add_effect(std::move(effect));
-        contact_logs_[static_cast<std::size_t>(collision::ContactKind::self)] = log;
+        const collision::SelfContactForce& self = dynamics_.add_effect(make_owned<collision::SelfContactForce>(
+            memory, collision_spheres(), collision_.contact, state, memory, contact_loads(EffectId::self_collision)));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::self)] = &self.contact_log();
     }
 
-    integrator_ = make_integrator(solver_.integrator, model_, memory);
     published_.reserve_tools(tool_channels_.size());
     published_.reserve_obstacles(obstacles_);
     refinalize();
@@ -171,12 +164,10 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
 }
 
 void Scene::refinalize() {
-    dynamics_.finalize();
-    explicit_substep_limit_ = dynamics_.explicit_substep_limit(integrator_->stability_interval());
-    guard_.set_reference(dynamics_.energies(state_));
+    stepper_.effects_changed();
     if (logger_.enabled())
         logger_.log(LogLevel::info, "scene: %zu control points, substep limit %g s", model_.control_points,
-                    std::min(solver_.timestep, explicit_substep_limit_));
+                    stepper_.longest_substep());
 }
 
 std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::string& name,
@@ -184,15 +175,8 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     collision::Obstacle prepared = obstacle;
     collision::EnvironmentForce::prepare(prepared, radius_, memory_);
     published_.reserve_obstacles(obstacles_ + 1);
-    validate_obstacle(prepared, name, names, state_.q.data(), model_.control_points, &start_clearance_);
-    collision::EnvironmentForce* env = environment();
-    if (env == nullptr) {
-        auto effect = make_effect_environment();
-        effect->add_obstacle(prepared);
-        add_environment(std::move(effect));
-    } else {
-        env->add_obstacle(prepared);
-    }
+    validate_obstacle(prepared, name, names, stepper_.state().q.data(), model_.control_points, &start_clearance_);
+    add_to_environment(prepared);
     add_to_fingerprint(description_, obstacle);
     warn_mesh(prepared, name, logger_);
     const std::size_t index = obstacles_++;
@@ -201,36 +185,41 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     return index;
 }
 
-Owned<collision::EnvironmentForce> Scene::make_effect_environment() {
-    return make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, frames_, state_,
-                                                   memory_, contact_loads(EffectId::environment));
+void Scene::add_to_environment(const collision::Obstacle& prepared) {
+    if (environment_ != nullptr) {
+        environment_->add_obstacle(prepared);
+        return;
+    }
+    // The first obstacle: the effect is added to the dynamics only once it holds it, so that
+    // nothing changes if that throws.
+    auto effect = make_owned<collision::EnvironmentForce>(memory_, collision_spheres(), collision_.contact, frames_,
+                                                          stepper_.state(), memory_,
+                                                          contact_loads(EffectId::environment));
+    effect->add_obstacle(prepared);
+    environment_ = &dynamics_.add_effect(std::move(effect));
+    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = &environment_->contact_log();
 }
 
-void Scene::add_environment(Owned<collision::EnvironmentForce> effect) {
-    const collision::ContactLog* log = &effect->contact_log();
-    dynamics_.add_effect(std::move(effect));
-    contact_logs_[static_cast<std::size_t>(collision::ContactKind::obstacle)] = log;
-}
-
-collision::EnvironmentForce* Scene::environment() {
-    return static_cast<collision::EnvironmentForce*>(dynamics_.find_effect(EffectId::environment));
-}
-
-collision::EnvironmentForce& Scene::environment_with(std::size_t index) const {
-    auto* env = const_cast<Scene*>(this)->environment();
-    if (env == nullptr || env->obstacle(index) == nullptr)
+void Scene::require_obstacle(std::size_t index) const {
+    if (environment_ == nullptr || environment_->obstacle(index) == nullptr)
         throw Error(ErrorCode::not_found, "obstacle " + std::to_string(index) + " does not exist (" +
                                               (index < obstacles_ ? std::string("it was removed")
                                                                   : "the scene has had " + std::to_string(obstacles_) +
                                                                         " obstacles") +
                                               ")");
-    return *env;
 }
 
-std::size_t Scene::obstacle_count() const {
-    auto* env = const_cast<Scene*>(this)->environment();
-    return env != nullptr ? env->live_count() : 0;
+collision::EnvironmentForce& Scene::environment_with(std::size_t index) {
+    require_obstacle(index);
+    return *environment_;
 }
+
+const collision::EnvironmentForce& Scene::environment_with(std::size_t index) const {
+    require_obstacle(index);
+    return *environment_;
+}
+
+std::size_t Scene::obstacle_count() const { return environment_ != nullptr ? environment_->live_count() : 0; }
 
 const collision::Obstacle& Scene::obstacle(std::size_t index) const { return *environment_with(index).obstacle(index); }
 
@@ -254,21 +243,19 @@ void Scene::remove_obstacle(std::size_t index) {
 }
 
 mechanics::RigidPose Scene::obstacle_pose(std::size_t index) const {
-    auto* env = const_cast<Scene*>(this)->environment();
-    return frames_.pose(env->frame_of(index));
+    return frames_.pose(environment_->frame_of(index));
 }
 
 void Scene::set_gravity(const Vec3& gravity) {
-    auto* effect = static_cast<GravityForce*>(dynamics_.find_effect(EffectId::gravity));
-    if (effect == nullptr) {
-        dynamics_.add_effect(make_owned<GravityForce>(memory_, model_, gravity, memory_));
+    if (gravity_ == nullptr) {
+        gravity_ = &dynamics_.add_effect(make_owned<GravityForce>(memory_, model_, gravity, memory_));
         changed_between_steps();
         return;
     }
     // Gravity bounds no stiffness: only the guard's energy reference moves (no allocation,
     // so a table may tilt a little before every step).
-    effect->set_gravity(gravity);
-    guard_.set_reference(dynamics_.energies(state_));
+    gravity_->set_gravity(gravity);
+    stepper_.energy_changed();
     publish();
 }
 
@@ -276,17 +263,20 @@ void Scene::pin_point_only(std::size_t point, std::optional<std::size_t> obstacl
     const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : PinnedPoints::kWorld;
     if (dynamics_.pins() == nullptr)
         dynamics_.add_pins(make_owned<PinnedPoints>(memory_, std::vector<uint32_t>{}, frames_, solver_.max_speed, memory_));
-    dynamics_.pins()->pin(static_cast<uint32_t>(point), frame, state_);
+    dynamics_.pins()->pin(static_cast<uint32_t>(point), frame, stepper_.state());
+    stepper_.state_set_from_outside();  // the pin stopped the point
 }
 
 void Scene::refuse_clamped_end_point(std::size_t point, const char* change) {
     const ClampedEnds* clamps = dynamics_.clamps();
-    for (const bool first : {true, false})
-        if (clamps != nullptr && clamps->clamped(first) && point == (first ? 0 : model_.control_points - 1))
-            throw Error(ErrorCode::invalid_argument,
-                        "control point " + std::to_string(point) + " is the scene's " + (first ? "first" : "last") +
-                            " clamped end (clamped_ends): " + change +
-                            " it alone would leave the clamp half attached; attach the clamped end instead");
+    const ClampedEnd end = clamps != nullptr ? clamped_end_point(point, model_.control_points, clamps->clamped(true),
+                                                                 clamps->clamped(false))
+                                             : ClampedEnd::none;
+    if (end != ClampedEnd::none)
+        throw Error(ErrorCode::invalid_argument,
+                    "control point " + std::to_string(point) + " is the scene's " +
+                        (end == ClampedEnd::first ? "first" : "last") + " clamped end (clamped_ends): " + change +
+                        " it alone would leave the clamp half attached; attach the clamped end instead");
 }
 
 void Scene::pin_point(std::size_t point, std::optional<std::size_t> obstacle) {
@@ -304,10 +294,9 @@ bool Scene::unpin_point(std::size_t point) {
 }
 
 void Scene::attach_mesentery_only(std::optional<std::size_t> obstacle) {
-    auto* mesentery = static_cast<MesenteryForce*>(dynamics_.find_effect(EffectId::mesentery));
-    if (mesentery == nullptr) throw Error(ErrorCode::not_found, "the scene has no mesentery to attach");
+    if (mesentery_ == nullptr) throw Error(ErrorCode::not_found, "the scene has no mesentery to attach");
     const std::size_t frame = obstacle ? environment_with(*obstacle).frame_of(*obstacle) : MesenteryForce::kNoFrame;
-    mesentery->attach(&frames_, frame, state_.time);
+    mesentery_->attach(&frames_, frame, stepper_.state().time);
 }
 
 void Scene::attach_mesentery(std::optional<std::size_t> obstacle) {
@@ -329,7 +318,7 @@ void Scene::attach_clamped_ends_only(int32_t ends, std::optional<std::size_t> ob
         if ((ends & (first ? pin_first : pin_last)) == 0) continue;
         // The end point rides on the frame like a pin; the clamp turns its direction with it.
         pin_point_only(first ? 0 : model_.control_points - 1, obstacle);
-        clamps->attach(first, frames_, frame, state_.time);
+        clamps->attach(first, frames_, frame, stepper_.state().time);
     }
 }
 
@@ -344,15 +333,12 @@ void Scene::changed_between_steps() {
 }
 
 std::size_t Scene::add_tool_effect_only(const collision::ToolConfig& tool) {
-    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
-    if (tools == nullptr) {
-        auto effect = make_owned<collision::ToolsForce>(memory_, collision_spheres(), collision_.contact, state_,
-                                                        tool_channels_, memory_);
-        tools = effect.get();
-        dynamics_.add_effect(std::move(effect));
-        contact_logs_[static_cast<std::size_t>(collision::ContactKind::tool)] = &tools->contact_log();
+    if (tools_ == nullptr) {
+        tools_ = &dynamics_.add_effect(make_owned<collision::ToolsForce>(
+            memory_, collision_spheres(), collision_.contact, stepper_.state(), tool_channels_, memory_));
+        contact_logs_[static_cast<std::size_t>(collision::ContactKind::tool)] = &tools_->contact_log();
     }
-    return tools->add_tool(tool);
+    return tools_->add_tool(tool);
 }
 
 std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
@@ -365,8 +351,7 @@ std::size_t Scene::add_tool(const collision::ToolConfig& tool) {
 }
 
 void Scene::remove_tool(std::size_t index) {
-    auto* tools = static_cast<collision::ToolsForce*>(dynamics_.find_effect(EffectId::tools));
-    tools->remove_tool(index);
+    tools_->remove_tool(index);
     publish();
 }
 
@@ -382,7 +367,7 @@ collision::CollisionSpheres& Scene::collision_spheres() {
 }
 
 double Scene::sphere_spacing() const {
-    return collision_.sphere_spacing > 0.0 ? collision_.sphere_spacing : 0.5 * radius_;
+    return resting_sphere_spacing(collision_, radius_);
 }
 
 collision::SphereLoads& Scene::contact_loads(EffectId owner) {
@@ -394,119 +379,9 @@ collision::SphereLoads& Scene::contact_loads(EffectId owner) {
 }
 
 void Scene::step(double dt) {
-    const auto start = std::chrono::steady_clock::now();
-    if (!std::isfinite(dt) || !(dt > 0.0)) {
-        char message[128];
-        std::snprintf(message, sizeof message, "dt_s must be finite and > 0, got %g", dt);
-        throw Error(ErrorCode::invalid_argument, message);
-    }
-    const double longest = std::min(solver_.timestep, explicit_substep_limit_);
-    const double needed = std::ceil(dt / longest * (1.0 - 1e-12));
-    if (!(needed <= static_cast<double>(solver_.max_substeps))) {
-        char message[256];
-        std::snprintf(message, sizeof message,
-                      "dt_s = %g needs %g substeps of at most %g s, more than max_substeps (%zu)", dt,
-                      needed, longest, solver_.max_substeps);
-        throw Error(ErrorCode::invalid_argument, message);
-    }
-    const std::size_t substeps = std::max<std::size_t>(1, static_cast<std::size_t>(needed));
-
-    backup_.assign(state_);
-    frames_.begin_step(state_.time, dt);
-    integrator_->save_history();
-    // A grasp taken or let go changes the stored energy, and so do the velocities of points
-    // pinned to moving obstacles: the guard measures it again.
-    const bool grasps = dynamics_.begin_step(state_, dt);
-    if (dynamics_.prescribe(state_, dt) || grasps) guard_.set_reference(dynamics_.energies(state_));
-    for (std::size_t attempt = 0;; ++attempt) {
-        dynamics_.begin_attempt();
-        if (attempt > 0) dynamics_.prescribe(state_, dt);
-        if (try_step(dt, substeps << attempt)) {
-            dynamics_.end_step(true);
-            frames_.end_step(true);
-            stats_.steps += 1;
-            stats_.last_step_ns = elapsed_ns(start);
-            publish();
-            return;
-        }
-        if (attempt == solver_.max_subdivisions) break;
-        state_.assign(backup_);
-        integrator_->restore_history();
-        if (logger_.enabled())
-            logger_.log(LogLevel::warning, "step at t = %g s rejected by the guard (%s); retrying with %zu substeps",
-                        state_.time, guard_check_name(guard_.last_finding().check), substeps << (attempt + 1));
-    }
-    const std::string message = unstable_message(dt, substeps);
-    state_.assign(backup_);
-    integrator_->restore_history();
-    dynamics_.end_step(false);
-    frames_.end_step(false);
-    stats_.last_step_ns = elapsed_ns(start);
-    publish();  // the same state, with the counters of the failed attempts
-    throw Error(ErrorCode::unstable, message);
-}
-
-bool Scene::try_step(double dt, std::size_t substeps) {
-    const double h = dt / static_cast<double>(substeps);
-    const double start_time = state_.time;
-    for (std::size_t i = 0; i < substeps; ++i) {
-        stats_.substeps += 1;
-        const bool solved = integrator_->step(dynamics_, state_, h);
-        if (!guard_.substep_passes(solved, state_)) return false;
-    }
-    state_.time = start_time + dt;  // no drift from summing substeps
-    return guard_.step_passes(state_, dynamics_);
-}
-
-// Names the check that failed and by how much, the control point, and the effect that
-// most likely drove it: the strongest force on that point at the start of the step, or
-// the effect whose energy grew the most. Off the stepping path: it evaluates the effects
-// again, one by one.
-std::string Scene::unstable_message(double dt, std::size_t substeps) {
-    const GuardFinding& finding = guard_.last_finding();
-    const std::size_t point = finding.control_point;
-    char what[320];
-    switch (finding.check) {
-        case GuardCheck::solver:
-            std::snprintf(what, sizeof what, "the implicit solve failed (its system was not positive definite)");
-            break;
-        case GuardCheck::not_finite:
-            if (std::isfinite(finding.value))
-                std::snprintf(what, sizeof what, "non-finite: control point %zu's position or velocity became NaN or "
-                              "infinite", point);
-            else
-                std::snprintf(what, sizeof what, "non-finite: the energy became %.3g J", finding.value);
-            break;
-        case GuardCheck::speed:
-            std::snprintf(what, sizeof what, "speed: control point %zu moved at %.3g m/s, %.3g times max_speed (%g m/s)",
-                          point, finding.value, finding.value / finding.limit, finding.limit);
-            break;
-        case GuardCheck::energy:
-            std::snprintf(what, sizeof what,
-                          "energy: the bowel gained %.3g J in the step, %.3g J more than the %.3g J allowed (fastest: "
-                          "control point %zu)", finding.value, finding.value - finding.limit, finding.limit, point);
-            break;
-        case GuardCheck::passed: std::snprintf(what, sizeof what, "none"); break;
-    }
-    char culprit[200] = "";
-    const Dynamics::Culprit gain = finding.check == GuardCheck::energy ? dynamics_.largest_energy_gain(backup_, state_)
-                                                                         : Dynamics::Culprit{};
-    if (gain.found) {
-        std::snprintf(culprit, sizeof culprit, "; the largest gain was in %s's potential energy (%+.3g J)",
-                      effect_name(gain.effect), gain.amount);
-    } else if (finding.check != GuardCheck::solver) {
-        const Dynamics::Culprit force = dynamics_.strongest_force_at(backup_, point);
-        if (force.found)
-            std::snprintf(culprit, sizeof culprit,
-                          "; the largest force on control point %zu at the start of the step was %s's (%.3g N)", point,
-                          effect_name(force.effect), force.amount);
-    }
-    char message[700];
-    std::snprintf(message, sizeof message,
-                  "the step of %g s at t = %g s stayed unstable after %zu subdivisions (%zu substeps in the last "
-                  "attempt); the guard's last check failed: %s%s; the state is unchanged",
-                  dt, backup_.time, solver_.max_subdivisions, substeps << solver_.max_subdivisions, what, culprit);
-    return message;
+    const bool accepted = stepper_.step(dt);
+    publish();  // a failed step: the same state, with the counters of its attempts
+    if (!accepted) throw Error(ErrorCode::unstable, stepper_.failure());
 }
 
 void Scene::publish() {
@@ -515,14 +390,19 @@ void Scene::publish() {
         logger_.log(LogLevel::warning, "every snapshot slot is being read; publication skipped");
         return;
     }
-    std::copy(state_.q.begin(), state_.q.end(), slot->control_points.begin());
-    stats_.time = state_.time;
-    stats_.rollbacks = guard_.rollbacks();
+    const mechanics::State& state = stepper_.state();
+    const mechanics::StabilityGuard& guard = stepper_.guard();
+    std::copy(state.q.begin(), state.q.end(), slot->control_points.begin());
+    stats_.time = state.time;
+    stats_.steps = stepper_.counters().steps;
+    stats_.substeps = stepper_.counters().substeps;
+    stats_.last_step_ns = stepper_.counters().last_step_ns;
+    stats_.rollbacks = guard.rollbacks();
     const ContactSummary contacts = dynamics_.contacts();
     stats_.contacts = contacts.count;
     stats_.max_penetration = contacts.max_penetration;
-    stats_.kinetic_energy = guard_.reference().kinetic;
-    stats_.potential_energy = guard_.reference().potential;
+    stats_.kinetic_energy = guard.reference().kinetic;
+    stats_.potential_energy = guard.reference().potential;
     slot->stats = stats_;
     for (std::size_t e = 0; e < kEffectCount; ++e) {
         const EffectId id = static_cast<EffectId>(e);
@@ -532,9 +412,9 @@ void Scene::publish() {
     const std::pmr::vector<collision::ToolOutput>& tools = tool_channels_.outputs();
     slot->tools.assign(tools.begin(), tools.end());  // reserved when the tools were added
     slot->obstacles.resize(obstacles_);              // reserved when the obstacles were added
-    const collision::EnvironmentForce* env = obstacles_ > 0 ? environment() : nullptr;
     for (std::size_t i = 0; i < obstacles_; ++i)
-        slot->obstacles[i] = ObstacleOutput{env->obstacle(i) != nullptr, frames_.pose(env->frame_of(i))};
+        slot->obstacles[i] =
+            ObstacleOutput{environment_->obstacle(i) != nullptr, frames_.pose(environment_->frame_of(i))};
     publish_contacts(*slot);
     published_.publish(slot);
 }

@@ -1,5 +1,7 @@
-// A simulated scene: the intestine axis, the effects its description names, an integrator,
-// the stability guard, and the snapshot it publishes for readers.
+// SPDX-License-Identifier: Apache-2.0
+// A simulated scene: the intestine axis and the effects its description names (assembly),
+// the changes made to them between steps, the stepper that steps them
+// (mechanics/stepper.h), and the snapshot it publishes for readers.
 //
 // step() has the strong guarantee: it either advances the state and publishes it, or
 // throws enteron::Error with the state exactly as before (counters of the failed attempt
@@ -27,13 +29,19 @@
 #include "collision/tool.h"
 #include "collision/tool_channels.h"
 #include "mechanics/dynamics.h"
-#include "mechanics/integrator.h"
 #include "mechanics/rigid_frames.h"
-#include "mechanics/stability_guard.h"
-#include "mechanics/state.h"
+#include "mechanics/stepper.h"
 #include "scene/scene_config.h"
 #include "scene/snapshot.h"
 #include "scene/validate.h"
+
+namespace enteron::collision {
+class ToolsForce;
+}  // namespace enteron::collision
+namespace enteron::mechanics {
+class GravityForce;
+class MesenteryForce;
+}  // namespace enteron::mechanics
 
 namespace enteron::scene {
 
@@ -100,11 +108,6 @@ public:
     // allocates nothing.
     void remove_tool(std::size_t index);
 
-    // How deep beyond an obstacle's surface the bowel may be and still start (validate.h),
-    // for an obstacle added later.
-    const StartClearance& start_clearance() const { return start_clearance_; }
-    // The control points now (x y z each, m): the driving thread only.
-    const std::pmr::vector<double>& positions() const { return state_.q; }
     std::size_t control_points() const { return model_.control_points; }
     // Tube radius R of the intestine, m (what skins reconstruct around the axis).
     double radius() const { return radius_; }
@@ -121,10 +124,6 @@ public:
     uint64_t fingerprint() const;
 
 private:
-    // One attempt at dt in `substeps` equal substeps; false if the guard rejects it.
-    bool try_step(double dt, std::size_t substeps);
-    // The message of a step the guard could not save (before the state is restored).
-    std::string unstable_message(double dt, std::size_t substeps);
     // Collision sphere spacing at rest, m.
     double sphere_spacing() const;
     // The shared collision spheres, made on first use (a scene without contacts has none).
@@ -133,14 +132,14 @@ private:
     // made on first use and registered with the dynamics, their time counted as the
     // `owner` of that first use.
     collision::SphereLoads& contact_loads(mechanics::EffectId owner);
-    // The environment effect, made with the first obstacle; Error(not_found) for an index
-    // with no obstacle.
-    collision::EnvironmentForce* environment();
-    collision::EnvironmentForce& environment_with(std::size_t index) const;
-    // The environment effect made (with no obstacle yet); added to the dynamics with its
-    // contact log.
-    Owned<collision::EnvironmentForce> make_effect_environment();
-    void add_environment(Owned<collision::EnvironmentForce> effect);
+    // Adds a prepared obstacle to the environment effect, making the effect (and its contact
+    // log) with the first.
+    void add_to_environment(const collision::Obstacle& prepared);
+    // Error(not_found) for an index with no obstacle (never added, or removed).
+    void require_obstacle(std::size_t index) const;
+    // The environment effect, which holds obstacle `index`, or Error(not_found).
+    collision::EnvironmentForce& environment_with(std::size_t index);
+    const collision::EnvironmentForce& environment_with(std::size_t index) const;
     // A change between steps that changed the stored energy: the guard measures it again
     // and the change is published.
     void changed_between_steps();
@@ -153,15 +152,12 @@ private:
     void refuse_clamped_end_point(std::size_t point, const char* change);
     // Adds a tool, creating the tools effect with the first; no refinalize.
     std::size_t add_tool_effect_only(const collision::ToolConfig& tool);
-    // Bounds, substep limit and energies after the set of effects changed.
+    // Bounds, substep limit and energies after the set of effects changed (Stepper::effects_changed).
     void refinalize();
     // Fills a free snapshot slot from the current state and publishes it.
     void publish();
     // The contact effects' last evaluations into a slot: tools, obstacles, then self-contacts.
     void publish_contacts(Snapshot& slot) const;
-    // The scene's own section of a saved state, and the sections of what it holds.
-    void save_sections(StateWriter& out) const;
-    void restore_sections(StateReader& in);
 
     std::pmr::memory_resource* memory_;
     Logger logger_;
@@ -174,16 +170,20 @@ private:
     collision::ToolChannels tool_channels_;        // the tools effect uses them: before dynamics_
     mechanics::RigidFrames frames_;                // obstacles' poses, followed by attachments: before dynamics_
     mechanics::Dynamics dynamics_;
-    Owned<mechanics::Integrator> integrator_;
-    mechanics::State state_;
-    mechanics::State backup_;  // the state before the current step, for rollbacks
-    double explicit_substep_limit_;
+    mechanics::Stepper stepper_;  // steps dynamics_ with frames_: after both
+    // The effects the changes between steps reach, as assembly added them (owned by
+    // dynamics_; null while the scene has none).
+    collision::EnvironmentForce* environment_ = nullptr;
+    collision::ToolsForce* tools_ = nullptr;
+    mechanics::GravityForce* gravity_ = nullptr;
+    mechanics::MesenteryForce* mesentery_ = nullptr;
     double rest_length_;
     double radius_;
     CollisionConfig collision_;
     std::size_t obstacles_ = 0;
+    // How deep beyond an obstacle's surface the bowel may be and still start (validate.h): an
+    // obstacle added later is checked against it.
     StartClearance start_clearance_;
-    mechanics::StabilityGuard guard_;
     SceneStats stats_;
     SnapshotPublisher& published_;
     // The logs of the contact effects, by ContactKind (null: no such effect).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene description in C++ terms, whatever it came from (the C struct or JSON v1), and
 // the one home of its defaults: the JSON loader starts from a default SceneConfig and
 // ent_scene_desc_default fills the C struct from one. An effect that the description does
@@ -90,6 +91,12 @@ struct CollisionConfig {
     double sphere_spacing = 0.0;  // m at rest; 0: radius / 2
     collision::ContactParameters contact;
 };
+
+// The collision spheres' spacing at rest, m, for a tube of radius R: the description's, or
+// R / 2 when it leaves it at 0.
+inline double resting_sphere_spacing(const CollisionConfig& collision, double radius) {
+    return collision.sphere_spacing > 0.0 ? collision.sphere_spacing : 0.5 * radius;
+}
 
 // An obstacle of each kind as a JSON entry or ent_obstacle_desc_default starts: a cavity
 // 24 cm wide around the origin, a floor through the origin, organs of 5 cm radius.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene/scene_fingerprint.h"
 
 #include "collision/triangle_mesh.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a saved state belongs to (ent_scene_save_state, docs/scoring-and-state.md): a hash of
 // every value of a scene's description that its state and its physics depend on. A state
 // restores only into a scene with the same fingerprint: one made from the same

@@ -1,6 +1,7 @@
-// Save and restore of a scene (scene.h, docs/scoring-and-state.md): the scene's own section (the
-// axis state, the counters, the guard's reference energies), then the dynamics' sections
-// (effect counters, then each effect's own), then the integrator's.
+// SPDX-License-Identifier: Apache-2.0
+// Save and restore of a scene (scene.h, docs/scoring-and-state.md): what the next step reads,
+// in the stepper's sections (mechanics/stepper.h: the axis state, the counters, the guard's
+// reference energies; the frames; the effects; the integrator's history).
 //
 // The continuation of a restored scene is bit-identical to the original's: everything the
 // next steps read is either saved (the state, the tools, the near pairs of the self-contact
@@ -20,56 +21,10 @@ uint64_t Scene::fingerprint() const {
     return fingerprint.value();
 }
 
-void Scene::save_sections(StateWriter& out) const {
-    out.begin_section("scene", 1);
-    out.u32(static_cast<uint32_t>(model_.control_points));
-    out.f64(state_.time);
-    out.f64s(state_.q.data(), state_.q.size());
-    out.f64s(state_.v.data(), state_.v.size());
-    out.u64(stats_.steps);
-    out.u64(stats_.substeps);
-    out.u64(guard_.rollbacks());
-    out.u64(stats_.last_step_ns);
-    const mechanics::Dynamics::Energies& reference = guard_.reference();
-    out.f64(reference.kinetic);
-    out.f64(reference.potential);
-    out.f64(reference.deformation);
-    out.end_section();
-    frames_.save_state(out);
-    dynamics_.save_state(out);
-    integrator_->save_state(out);
-}
-
 std::size_t Scene::save_state(void* buffer, std::size_t capacity) const {
     StateWriter out(buffer, capacity, fingerprint());
-    save_sections(out);
+    stepper_.save_state(out);
     return out.finish();
-}
-
-void Scene::restore_sections(StateReader& in) {
-    in.begin_section("scene", 1);
-    if (in.u32("control points") != model_.control_points) in.fail("saved with another number of control points");
-    const double time = in.f64("time");
-    in.f64s("control point positions", state_.q.size(), in.checking() ? nullptr : state_.q.data());
-    in.f64s("control point velocities", state_.v.size(), in.checking() ? nullptr : state_.v.data());
-    const uint64_t steps = in.u64("steps"), substeps = in.u64("substeps"), rollbacks = in.u64("rollbacks");
-    const uint64_t last_step_ns = in.u64("last step wall time");
-    mechanics::Dynamics::Energies reference;
-    reference.kinetic = in.f64("kinetic energy");
-    reference.potential = in.f64("potential energy");
-    reference.deformation = in.f64("deformation energy");
-    in.end_section();
-    if (!in.checking()) {
-        state_.time = time;
-        stats_.steps = steps;
-        stats_.substeps = substeps;
-        stats_.last_step_ns = last_step_ns;
-        guard_.set_rollbacks(rollbacks);
-        guard_.set_reference(reference);
-    }
-    frames_.restore_state(in);
-    dynamics_.restore_state(in, frames_);
-    integrator_->restore_state(in);
 }
 
 void Scene::restore_state(const void* data, std::size_t size) {
@@ -85,18 +40,14 @@ void Scene::restore_state(const void* data, std::size_t size) {
         throw Error(ErrorCode::invalid_argument, message);
     }
     // Check every section, then apply them: a bad image throws before anything changed.
-    restore_sections(in);
+    stepper_.restore_state(in);
     in.finish();
     in.start_applying();
-    restore_sections(in);
+    stepper_.restore_state(in);
     // The spheres are placed again for the restored control points, and every cache keyed
     // on a placement with them (the same bits: a placement depends on the points only).
     if (spheres_) spheres_->forget_placement();
-    // The stability bounds follow the restored obstacles' friction and gravity (the same
-    // bits when they did not change); the guard keeps the saved reference.
-    const mechanics::Dynamics::Energies reference = guard_.reference();
-    refinalize();
-    guard_.set_reference(reference);
+    stepper_.restored();
     publish();
 }
 

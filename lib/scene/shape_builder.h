@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The initial control points of the axis: `count` points along the chosen shape, each at
 // straight-line distance l0 = length / (count - 1) from the previous one, so every segment
 // starts at its rest length (a straight line is exactly at rest; a curved shape starts

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The published state of a scene: an immutable copy made after each step, read by any
 // number of threads (queries, skins, the LCM bridge) while the stepping thread goes on.
 //

@@ -1,104 +1,70 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one check of a scene description, shared by the JSON loader and the C desc
-// conversion. The rules are written once; only the names in the messages and the error
-// code differ, so a JSON user reads "intestine.radius must be > 0, got -1" and a C user
-// reads "radius_m must be > 0, got -1".
+// conversion. The rules are the rows of the description's table (scene_table.h) and the few
+// between its parts written here; only the names in the messages and the error code differ,
+// so a JSON user reads "intestine.radius must be > 0, got -1" and a C user reads
+// "radius_m must be > 0, got -1".
 #pragma once
 
 #include <array>
-#include <bitset>
+#include <cmath>
 #include <cstddef>
+#include <set>
 #include <string>
 
 #include "base/error.h"
 #include "collision/obstacle.h"
 #include "collision/tool.h"
+#include "scene/checked_value.h"
+#include "scene/field_table.h"
 #include "scene/scene_config.h"
 
 namespace enteron::scene {
 
-// Every field of the scene description that validate() checks.
-enum class Field : std::size_t {
-    length,
-    radius,
-    control_points,
-    linear_density,
-    stretch_stiffness,
-    bend_stiffness,
-    shape_kind,
-    shape_center,
-    shape_direction,
-    shape_leg_length,
-    shape_leg_spacing,
-    shape_helix_radius,
-    shape_helix_pitch,
-    shape_points,
-    integrator,
-    timestep,
-    max_substeps,
-    max_subdivisions,
-    max_speed,
-    gravity,
-    drag,
-    stretch_damping,
-    bend_damping,
-    mesentery_root_start,
-    mesentery_root_end,
-    mesentery_attachments,
-    mesentery_stiffness,
-    mesentery_rest_length,
-    pinned_ends,
-    pinned_points,
-    pinned_clamped,
-    sphere_spacing,
-    contact_stiffness,
-    contact_damping,
-    contact_friction,
-    contact_slip_speed,
-    obstacle,
-    count  // not a field: the number of fields
-};
-
-constexpr std::size_t kFieldCount = static_cast<std::size_t>(Field::count);
-
-// A set of fields: those the caller wrote, as opposed to those left at their defaults.
-using FieldSet = std::bitset<kFieldCount>;
-
-// How a tool's fields are called in messages (JSON keys or ent_tool_desc fields).
-struct ToolFieldNames {
-    const char* radius;
-    const char* length;
-    const char* max_force;
-    const char* grasp_margin;
-    const char* grasp_stiffness;
-    const char* grasp_damping;
-    const char* position;
-    const char* orientation;
-    const char* mode;
-    const char* coupling_stiffness;
-    const char* coupling_damping;
-    const char* friction;
-};
-
-// How the fields are called in messages, and what error a bad value raises.
-// Elements of a vector or list are named by appending "[i]" to the field's name.
+// How fields are called in messages, and what error a bad value raises. JSON names a field
+// by its path ("intestine.radius", "tools[1].radius", "mesentery.root[0]"); C by its
+// ent_*_desc field ("radius_m"), after a prefix for an element of a list ("obstacle[2].",
+// an obstacle's fields keeping their keys). Elements of a vector or list are named by
+// appending "[i]"; JSON gives the shape points as one [x,y,z] per control point
+// ("points[i][k]"), C flat ("shape_points_xyz_m[3 i + k]").
 struct FieldNames {
     ErrorCode code;
-    // JSON gives the shape points as one [x,y,z] per control point ("points[i][k]"); C gives
-    // them flat ("shape_points_xyz_m[3 i + k]").
-    bool shape_points_nested;
-    std::array<const char*, kFieldCount> names;
-    ToolFieldNames tool;
+    bool c_names;
 
-    const char* operator[](Field field) const { return names[static_cast<std::size_t>(field)]; }
+    // The name of `field` of a part at JSON path `path` ("intestine.shape", "tools[1]"),
+    // whose C names start with `prefix`.
+    std::string of(const Field& field, const std::string& path, const std::string& prefix = "") const;
+    // The C prefix of element `index` of the list `field` ("obstacle[2]."), from the list's.
+    std::string element_prefix(const Field& field, const std::string& prefix, std::size_t index) const;
+    // The name of the field at a JSON path from the top ("pinned.clamped", "intestine.length").
+    std::string at(const std::string& path) const;
+    // What the i-th obstacle is called: "environment[i]", "obstacle[i]".
+    std::string obstacle(std::size_t index) const;
 };
 
-// JSON v1 paths ("intestine.radius", "solver.timestep", "mesentery.root[0]"), raising
-// ErrorCode::invalid_scene.
+// JSON v1 paths, raising ErrorCode::invalid_scene.
 const FieldNames& json_field_names();
-
-// ent_scene_desc and ent_tool_desc field names ("radius_m", "timestep_s",
-// "pinned_points"), raising ErrorCode::invalid_argument.
+// ent_scene_desc, ent_tool_desc and ent_obstacle_desc names, raising ErrorCode::invalid_argument.
 const FieldNames& c_field_names();
+
+// The fields the caller wrote, by JSON path ("intestine.shape.helix_pitch"), as opposed to
+// those left at their defaults: where two fields disagree, the message blames the written
+// one. By default every field counts as written.
+class FieldSet {
+public:
+    FieldSet() = default;
+    static FieldSet none() {
+        FieldSet set;
+        set.all_ = false;
+        return set;
+    }
+    void add(const std::string& path) { paths_.insert(path); }
+    bool has(const std::string& path) const { return all_ || paths_.count(path) != 0; }
+
+private:
+    bool all_ = true;
+    std::set<std::string> paths_;
+};
 
 // Whether a bowel can start where an obstacle is. A control point beyond the obstacle's
 // surface (outside the box_inside, behind a plane, inside a sphere or capsule) is pushed
@@ -116,17 +82,17 @@ StartClearance start_clearance(const SceneConfig& config);
 // Checks every value of config that the scene will use (shape fields only for the chosen
 // shape kind; optional effects only when present), then where the bowel starts: no control
 // point may lie so far beyond an obstacle's surface that it cannot start (StartClearance).
-// Every number must be finite. Returns the config
-// normalised: tool poses with unit quaternions, and start_points, the initial control
-// points of the shape.
+// Every number must be finite. Returns the config normalised: tool and obstacle poses with
+// unit quaternions, and start_points, the initial control points of the shape.
 // Throws Error(names.code, message) for the first bad value, the message naming it:
 // "intestine.radius must be > 0, got -1". Where two fields must agree (radius and
 // helix_pitch, ...), the message blames the one the caller wrote (`given`), and says so
 // when the other still has its default.
-SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet& given = FieldSet().set());
+SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet& given = FieldSet());
 
-// The fields of config (among those that take part in a rule between two fields) whose
-// value differs from the default: what a C caller changed after ent_scene_desc_default.
+// The fields of config whose value differs from the default (the defaults of an effect
+// that config turns on are those it starts with): what a C caller changed after
+// ent_scene_desc_default.
 FieldSet fields_apart_from_defaults(const SceneConfig& config);
 
 // Checks one obstacle (kind in range, finite, sizes > 0, a non-zero plane normal, a mesh's
@@ -139,10 +105,28 @@ collision::Obstacle validate_obstacle(const collision::Obstacle& obstacle, const
                                      const FieldNames& names, const double* control_points = nullptr,
                                      std::size_t count = 0, const StartClearance* clearance = nullptr);
 
+// A rotation given as a quaternion w x y z, made unit: each coordinate must be finite and
+// the norm above 1e-12, else Error(code) naming it ("orientation_wxyz must be a non-zero
+// quaternion (w x y z), got one of norm 0"). `name()` is called only for a message, so a
+// valid rotation costs no allocation.
+template <typename Name>
+std::array<double, 4> unit_quaternion(const std::array<double, 4>& q, const Name& name, ErrorCode code) {
+    double norm2 = 0.0;
+    for (std::size_t c = 0; c < 4; ++c) {
+        if (!std::isfinite(q[c])) Checked<double>(q[c], name() + "[" + std::to_string(c) + "]", code);
+        norm2 += q[c] * q[c];
+    }
+    const double norm = std::sqrt(norm2);
+    if (!(norm > 1e-12) || !std::isfinite(norm))
+        throw Error(code, name() + " must be a non-zero quaternion (w x y z), got one of norm " + format_number(norm));
+    return {q[0] / norm, q[1] / norm, q[2] / norm, q[3] / norm};
+}
+
 // Checks a tool's settings and pose, its fields named with `prefix` ("tools[1].", or ""
 // in C); returns it with a unit quaternion.
 collision::ToolConfig validate_tool(const collision::ToolConfig& tool, const std::string& prefix,
                                     const FieldNames& names);
+// The same for its pose alone, allocating nothing unless it throws (ent_tool_set_pose, 1 kHz).
 collision::ToolPose validate_tool_pose(const collision::ToolPose& pose, const std::string& prefix,
                                        const FieldNames& names);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The axis sampled evenly in arc length: the common input of every skin. Positions and
 // unit tangents come from the spline itself (not a polyline), so a ring or a skeleton
 // point sits exactly on the axis. Optionally the samples continue beyond both ends along

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The iso-value of a skin's field, calibrated for the bend of the axis.
 //
 // Both implicit skins sum a kernel over the axis within an arc-length window [-D, D] of

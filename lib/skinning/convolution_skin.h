@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Convolution surface of the axis (France et al. 2002, section 4): the axis as a polyline of
 // short segments, each contributing the closed-form 1/r^3 field of segment_kernel.h.
 //

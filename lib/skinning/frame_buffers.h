@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Work buffers resized every frame to sizes that breathe: a few more axis samples when the
 // bowel stretches, a few fewer when it relaxes, more rings when it bends, more voxel blocks
 // when its folds spread. Their capacity is kept at least half as large again as the size

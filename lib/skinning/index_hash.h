@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An open-addressing hash map from 64-bit keys to 32-bit indices, cleared and refilled
 // every frame by the marching cubes (voxel blocks, edge vertices). Unlike
 // std::unordered_map it keeps its memory between frames and allocates only when it grows.

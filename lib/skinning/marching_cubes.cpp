@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "skinning/marching_cubes.h"
 
 #include <algorithm>
@@ -28,7 +29,6 @@ void MarchingCubes::extract(const SparseVoxelGrid& grid, double iso, Mesh& mesh,
     mesh.positions.clear();
     mesh.indices.clear();
     seeds.clear();
-    cells_ = 0;
     blocks_ = grid.block_count();
     const std::size_t slots = 3 * std::size_t(kBlockCorners) * blocks_;
     if (edge_vertex_.size() < slots) {
@@ -77,7 +77,6 @@ void MarchingCubes::extract(const SparseVoxelGrid& grid, double iso, Mesh& mesh,
                     const uint32_t mask = ((r0 >> x) & 3) | (((r1 >> x) & 3) << 2) | (((r2 >> x) & 3) << 4) |
                                           (((r3 >> x) & 3) << 6);
                     if (mask == 0 || mask == 255) continue;
-                    ++cells_;
                     const MarchingCubesCase& entry = table[mask];
                     uint32_t edge_vertex[12];
                     uint16_t have = 0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Marching cubes over the sparse narrow band: every cell whose corners straddle the
 // iso-value gets the triangles of its case (marching_cubes_table.h). A corner is inside
 // when its field exceeds the iso-value; a corner the band does not reach counts as outside
@@ -28,8 +29,6 @@ public:
     // corner of its edge.
     void extract(const SparseVoxelGrid& grid, double iso, Mesh& mesh, std::vector<int32_t>& seeds);
 
-    // Cells of the last extraction that the surface crosses.
-    std::size_t cells_visited() const { return cells_; }
     // Cells of the last extraction: every cell of every block.
     std::size_t cells_in_band() const { return blocks_ * std::size_t(kBlockCorners); }
 
@@ -39,7 +38,6 @@ private:
     // axis * kBlockCorners + local index of the edge's first corner), kNone when none.
     std::vector<uint32_t> edge_vertex_;
     std::vector<uint32_t> used_slots_;  // entries of edge_vertex_ set in this extraction
-    std::size_t cells_ = 0;
     std::size_t blocks_ = 0;
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The marching cubes case table (Lorensen and Cline 1987), generated once rather than typed
 // in, with one fixed rule for the ambiguous faces: on a face whose inside corners are
 // diagonal, the iso-line cuts off each inside corner (the inside corners stay separate).

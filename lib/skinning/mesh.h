@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The triangle mesh a skin produces: flat float arrays a renderer can upload as they are.
 // Buffers only grow (resize keeps capacity), so a skin updated every frame stops
 // allocating once it has seen its largest mesh.

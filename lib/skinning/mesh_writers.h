@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exports a skin mesh for people and other tools: Wavefront OBJ (positions, normals, u as
 // a 1-D texture coordinate) and binary little-endian PLY (float x y z nx ny nz u, uint32
 // triangle lists). Both keep the vertex order and the outward winding.

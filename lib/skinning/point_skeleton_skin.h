@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Distance surface of point skeletons (France et al. 2002, section 3), polygonised by
 // marching cubes on a narrow band.
 //
@@ -59,8 +60,6 @@ public:
     bool stable_topology() const override { return false; }
     bool rebuilds_whole_mesh() const override { return true; }
     std::size_t skeleton_points() const { return skeleton_.intervals() + 1; }
-    std::size_t band_blocks() const { return grid_.block_count(); }
-    std::size_t cells_visited() const { return cubes_.cells_visited(); }
     // Field evaluations (window sums) of the last update: band corners and Newton steps.
     std::size_t last_field_evaluations() const { return evaluations_; }
     // The band of the last update, with the field at every corner (-1 outside the band).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The topology shared by the tube and the convolution skins: a closed tube made of rows of
 // vertices around the axis. Row 0 is the pole of the first end cap, then `cap_rings`
 // rings of that cap, the `body_rings` rings along the axis, the rings of the last cap and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the rings of the convolution skin go along the axis: the level of detail. Evenly
 // spaced rings make flat facets where the axis bends; these rings come closer there, so
 // that the chord between two rings departs from the tube by at most a tolerance, and stay

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rotation-minimising frames along sampled axis points, by the double reflection method of
 // Wang, Juettler, Zheng and Liu (ACM TOG 2008). Rings placed on these frames do not twist
 // around the axis (a Frenet frame would flip at inflections and spin on straight parts),

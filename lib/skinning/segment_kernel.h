@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The convolution of a line segment with the kernel 1/r^3, in closed form (Cani and Hornus,
 // "Subdivision-curve primitives", 2001). For a point P whose foot on the segment's line is
 // H, at distance h = d(P, H), with theta the angle seen from P between PH and the segment

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One interface, three methods: a skin turns the axis (spline control points) into a
 // closed triangle mesh of radius R around it, for rendering. update() keeps its own copy of
 // the axis it was built from, so metrics and exports describe exactly that mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy of a skin's mesh against the ideal tube of radius R around the same axis.
 // Used by ent_skin_metrics, the tests and the benchmarks, the same for every method.
 //

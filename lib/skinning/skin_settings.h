@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The knobs of a skin, in the library's own units: lengths in metres (the C API converts
 // its radius-relative knobs). One struct for the three methods; each reads only its own.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "skinning/sparse_voxel_grid.h"
 
 #include "skinning/frame_buffers.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The narrow band of voxels around the axis, stored sparsely: blocks of 8^3 lattice corners
 // found through a hash of their block coordinates, allocated only where the skeleton
 // touches. A 6 m bowel in a 0.4 m abdomen touches a few hundred blocks; a dense grid of

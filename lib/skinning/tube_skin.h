@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parametric generalised cylinder: rings of radius R on rotation-minimising frames,
 // spaced evenly in arc length, closed by hemispherical caps. The fast baseline. At a bend
 // tighter than R the rings on the inner side would cross each other (the surface folding

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Arc length along the spline, and its inverse: where along the axis is the point that
 // lies a given distance from the first end. Used to sample the axis evenly in arc length
 // (ent_scene_axis, skins, the accuracy study), whatever the stretch of each segment.

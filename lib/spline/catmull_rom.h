@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Uniform cubic Catmull-Rom spline through control points q_0 .. q_{n-1}.
 //
 // Segment i (0 <= i <= n-2) joins q_i to q_{i+1}; the global parameter s runs over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "spline/gram_matrix.h"
 
 #include "numerics/gauss_legendre.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gram matrices of the spline basis: G_jk = scale * sum over segments of the integral over
 // t in [0, 1] of w_j(t) w_k(t), for the weights w of one derivative order. They are banded
 // (half bandwidth 3) and constant, so they are built once:

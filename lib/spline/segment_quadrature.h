@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gauss quadrature nodes on every segment of the spline, with the basis weights of one
 // derivative order precomputed at each node: the integration grid of the energies that
 // are not quadratic in q (stretch, stretch damping).

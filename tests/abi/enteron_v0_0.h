@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * tests/abi/enteron_v0_0.h: the public header of the "0.0 preview" release, kept to prove
  * that programs built against an older header keep working with the current library.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A program built against an older header (tests/abi/enteron_v0_0.h, the simulated
  * "0.0 preview": ent_scene_desc without `callbacks`, ent_stats without `last_step_ns`)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the C API tests: they reach the library only through enteron.h.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,48 @@ inline ent_effect_stats effect_stats(const ent_scene* scene, int32_t effect) {
     s.struct_size = sizeof s;
     EXPECT_EQ(ent_scene_effect_stats(scene, effect, &s), ENT_OK) << ent_last_error();
     return s;
+}
+
+inline ent_contact_summary summary(const ent_scene* scene) {
+    ent_contact_summary s;
+    std::memset(&s, 0, sizeof s);
+    s.struct_size = sizeof s;
+    EXPECT_EQ(ent_scene_contact_summary(scene, &s), ENT_OK) << ent_last_error();
+    return s;
+}
+
+// The warnings a scene logs (ENT_LOG_WARNING), through callbacks made by logging_to.
+struct Warnings {
+    std::mutex mutex;
+    std::vector<std::string> lines;
+    bool has(const std::string& part) {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (const std::string& line : lines)
+            if (line.find(part) != std::string::npos) return true;
+        return false;
+    }
+    // Every line, one per line ("" when none): what a failed expectation prints.
+    std::string all() {
+        std::lock_guard<std::mutex> lock(mutex);
+        std::string text;
+        for (const std::string& line : lines) text += line + "\n";
+        return text;
+    }
+};
+
+inline void collect_warning(void* user, int32_t level, const char* message) {
+    if (level != ENT_LOG_WARNING) return;
+    Warnings& w = *static_cast<Warnings*>(user);
+    std::lock_guard<std::mutex> lock(w.mutex);
+    w.lines.push_back(message);
+}
+
+inline ent_callbacks logging_to(Warnings& warnings) {
+    ent_callbacks callbacks;
+    ent_callbacks_default(&callbacks);
+    callbacks.log = collect_warning;
+    callbacks.user_data = &warnings;
+    return callbacks;
 }
 
 inline double total_energy(const ent_scene* scene) {

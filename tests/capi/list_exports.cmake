@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Writes the functions libenteron exports, one per line, for BadInputs.EveryExportedFunctionHasRows.
 #   cmake -DNM=nm -DLIBRARY=libenteron.so -DOUTPUT=enteron_exports.txt -P list_exports.cmake
 execute_process(COMMAND ${NM} -D --defined-only ${LIBRARY} OUTPUT_VARIABLE symbols RESULT_VARIABLE result)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the skin tests of the C API (test_skin*.cpp): an owning skin handle, a skin
 // made with the defaults but for the method, its mesh view and its metrics (the current
 // struct sizes), each call checked.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bad input through every entry point of the C API, as one table: each row is a function
 // and one bad input (NULL handles and pointers, NaN and Inf, negative or zero sizes, dt <= 0
 // or absurd, wrong struct_size, unknown JSON keys and wrong types, huge inputs). Every row
@@ -13,6 +14,7 @@
 #include "capi_test_support.h"
 
 #include <cfloat>
+#include <cstddef>
 #include <climits>
 #include <fstream>
 #include <functional>
@@ -217,6 +219,64 @@ std::function<ent_status(const Live&)> out_struct_with_size(uint32_t size, Call 
         T copy = value;
         const ent_status status = call(live, &value);
         EXPECT_TRUE(same_bits(&value, &copy, sizeof value)) << "written although refused";
+        return status;
+    };
+}
+
+// A target of one point for ent_exposure_create, with one change, created into a sentinel
+// that must stay untouched.
+const double kTargetPoints[6] = {0.0, 0.0, -0.5, 0.01, 0.0, -0.5};
+const uint32_t kTargetTriangle[3] = {0, 1, 0};
+template <class Change>
+std::function<ent_status(const Live&)> exposure_with(Change change) {
+    return desc_with(&ent_exposure_desc_init, sentinel<ent_exposure>(),
+                     [](const Live& l, const ent_exposure_desc* d, ent_exposure** out) {
+                         return ent_exposure_create(l.scene, d, out);
+                     },
+                     [change](ent_exposure_desc& d) {
+                         d.points_xyz_m = kTargetPoints;
+                         d.point_count = 1;
+                         change(d);
+                     });
+}
+
+// ent_scene_exposure on a target prepared for the live scene (or for `other`, a second
+// scene), with a result whose arrays are NULL; the result must stay untouched on failure.
+template <class Call>
+std::function<ent_status(const Live&)> measuring(Call call, bool for_another_scene = false) {
+    return [call, for_another_scene](const Live& live) {
+        ent_scene* other = nullptr;
+        if (for_another_scene) {
+            const ent_scene_desc desc = small_desc();
+            EXPECT_EQ(ent_scene_create(&desc, &other), ENT_OK) << ent_last_error();
+        }
+        ent_exposure_desc desc;
+        ent_exposure_desc_default(&desc);
+        desc.points_xyz_m = kTargetPoints;
+        desc.point_count = 1;
+        ent_exposure* exposure = nullptr;
+        EXPECT_EQ(ent_exposure_create(other != nullptr ? other : live.scene, &desc, &exposure), ENT_OK)
+            << ent_last_error();
+        ent_exposure_result result;
+        std::memset(&result, 0x5a, sizeof result);
+        result.struct_size = sizeof result;
+        result.span_capacity = 0;
+        result.spans_u = nullptr;
+        result.span_hidden_fractions = nullptr;
+        result.span_intestines = nullptr;
+        result.element_visible = nullptr;
+        const ent_status status = call(live, exposure, &result);
+        ent_exposure_result untouched;
+        std::memset(&untouched, 0x5a, sizeof untouched);
+        untouched.struct_size = result.struct_size;
+        untouched.span_capacity = result.span_capacity;
+        untouched.spans_u = result.spans_u;
+        untouched.span_hidden_fractions = nullptr;
+        untouched.span_intestines = nullptr;
+        untouched.element_visible = nullptr;
+        EXPECT_TRUE(same_bits(&result, &untouched, sizeof result)) << "written although refused";
+        ent_exposure_destroy(exposure);
+        ent_scene_destroy(other);
         return status;
     };
 }
@@ -585,6 +645,14 @@ std::vector<BadInput> table() {
          },
          kArg, "scene"},
         {"ent_scene_stats", "out NULL", [](L l) { return ent_scene_stats(l.scene, nullptr); }, kArg, "out"},
+        {"ent_scene_read_desc", "scene NULL",
+         [](L) {
+             ent_scene_desc d;
+             ent_scene_desc_default(&d);
+             return ent_scene_read_desc(nullptr, &d);
+         },
+         kArg, "scene"},
+        {"ent_scene_read_desc", "out NULL", [](L l) { return ent_scene_read_desc(l.scene, nullptr); }, kArg, "out"},
         {"ent_scene_effect_stats", "scene NULL",
          [](L) {
              ent_effect_stats s;
@@ -1025,6 +1093,13 @@ std::vector<BadInput> table() {
              return status;
          },
          ENT_ERROR_NOT_FOUND, "tool -3"},
+        {"ent_tool_read_feedback", "struct_size between the sizes before and with saturated",
+         [](L l) {
+             ent_tool_feedback f;
+             f.struct_size = offsetof(ent_tool_feedback, saturated) + 2;
+             return ent_tool_read_feedback(l.scene, l.tool, &f);
+         },
+         kVersion, "struct_size"},
         // Contacts (queries) and save/restore (driving calls).
         {"ent_scene_contacts", "scene NULL",
          [](L) {
@@ -1144,9 +1219,177 @@ std::vector<BadInput> table() {
              return ent_tool_read_stats(l.scene, l.tool + 1, &s);
          },
          ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_desc", "scene NULL",
+         [](L) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             return ent_tool_read_desc(nullptr, 0, &d);
+         },
+         kArg, "scene"},
+        {"ent_tool_read_desc", "out NULL", [](L l) { return ent_tool_read_desc(l.scene, l.tool, nullptr); }, kArg,
+         "out"},
+        {"ent_tool_read_desc", "unknown tool 1",
+         [](L l) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             const ent_tool_desc copy = d;
+             const ent_status status = ent_tool_read_desc(l.scene, l.tool + 1, &d);
+             EXPECT_TRUE(same_bits(&d, &copy, sizeof d)) << "written on failure";
+             return status;
+         },
+         ENT_ERROR_NOT_FOUND, "tool 1"},
+        {"ent_tool_read_desc", "unknown tool -1",
+         [](L l) {
+             ent_tool_desc d;
+             ent_tool_desc_default(&d);
+             return ent_tool_read_desc(l.scene, -1, &d);
+         },
+         ENT_ERROR_NOT_FOUND, "tool -1"},
         {"ent_tool_remove", "scene NULL", [](L) { return ent_tool_remove(nullptr, 0); }, kArg, "scene"},
         {"ent_tool_remove", "unknown tool 1", [](L l) { return ent_tool_remove(l.scene, l.tool + 1); },
          ENT_ERROR_NOT_FOUND, "tool 1"},
+        // ---- the exposure query
+        {"ent_exposure_desc_init", "desc NULL", [](L) { return ent_exposure_desc_init(nullptr, sizeof(ent_exposure_desc)); },
+         kArg, "desc"},
+        {"ent_exposure_create", "scene NULL",
+         [](L) {
+             ent_exposure_desc d;
+             ent_exposure_desc_default(&d);
+             d.points_xyz_m = kTargetPoints;
+             d.point_count = 1;
+             ent_exposure* out = sentinel<ent_exposure>();
+             const ent_status status = ent_exposure_create(nullptr, &d, &out);
+             EXPECT_EQ(out, sentinel<ent_exposure>());
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_exposure_create", "desc NULL",
+         [](L l) {
+             ent_exposure* out = sentinel<ent_exposure>();
+             return ent_exposure_create(l.scene, nullptr, &out);
+         },
+         kArg, "desc"},
+        {"ent_exposure_create", "out_exposure NULL",
+         [](L l) {
+             ent_exposure_desc d;
+             ent_exposure_desc_default(&d);
+             d.points_xyz_m = kTargetPoints;
+             d.point_count = 1;
+             return ent_exposure_create(l.scene, &d, nullptr);
+         },
+         kArg, "out_exposure"},
+        {"ent_exposure_create", "points NULL", exposure_with([](ent_exposure_desc& d) { d.points_xyz_m = nullptr; }),
+         kArg, "points_xyz_m"},
+        {"ent_exposure_create", "point_count 0", exposure_with([](ent_exposure_desc& d) { d.point_count = 0; }), kArg,
+         "point_count"},
+        {"ent_exposure_create", "point_count 2^20 + 1 (more than the array: refused before reading)",
+         exposure_with([](ent_exposure_desc& d) { d.point_count = (1u << 20) + 1; }), kArg, "point_count"},
+        {"ent_exposure_create", "a NaN coordinate",
+         exposure_with([](ent_exposure_desc& d) {
+             static const double nan_point[3] = {0.0, kNaN, 0.0};
+             d.points_xyz_m = nan_point;
+         }),
+         kArg, "points_xyz_m[0]"},
+        {"ent_exposure_create", "triangles NULL with a triangle_count",
+         exposure_with([](ent_exposure_desc& d) { d.triangle_count = 2; }), kArg, "triangles"},
+        {"ent_exposure_create", "triangle_count 0 with triangles",
+         exposure_with([](ent_exposure_desc& d) { d.triangles = kTargetTriangle; }), kArg, "triangle_count"},
+        {"ent_exposure_create", "an index past the points",
+         exposure_with([](ent_exposure_desc& d) {
+             d.triangles = kTargetTriangle;
+             d.triangle_count = 1;  // index 1 with one point
+         }),
+         kArg, "triangles[0]"},
+        {"ent_exposure_create", "2^20 triangles x 32^2 samples (refused before the triangles are read)",
+         exposure_with([](ent_exposure_desc& d) {
+             d.triangles = kTargetTriangle;
+             d.triangle_count = 1u << 20;
+             d.samples_per_edge = 32;
+         }),
+         kArg, "samples"},
+        {"ent_exposure_create", "every triangle of zero area",
+         exposure_with([](ent_exposure_desc& d) {
+             d.point_count = 2;
+             d.triangles = kTargetTriangle;  // 0, 1, 0: degenerate
+             d.triangle_count = 1;
+         }),
+         kArg, "no weight"},
+        {"ent_exposure_create", "samples_per_edge 0", exposure_with([](ent_exposure_desc& d) { d.samples_per_edge = 0; }),
+         kArg, "samples_per_edge"},
+        {"ent_exposure_create", "samples_per_edge 33",
+         exposure_with([](ent_exposure_desc& d) { d.samples_per_edge = 33; }), kArg, "samples_per_edge"},
+        {"ent_exposure_create", "axis_chords_per_segment 0",
+         exposure_with([](ent_exposure_desc& d) { d.axis_chords_per_segment = 0; }), kArg, "axis_chords_per_segment"},
+        {"ent_exposure_create", "axis_chords_per_segment 65",
+         exposure_with([](ent_exposure_desc& d) { d.axis_chords_per_segment = 65; }), kArg, "axis_chords_per_segment"},
+        {"ent_exposure_create", "a negative weight",
+         exposure_with([](ent_exposure_desc& d) {
+             static const double weight[1] = {-1.0};
+             d.weights = weight;
+         }),
+         kArg, "weights[0]"},
+        {"ent_exposure_create", "a NaN weight",
+         exposure_with([](ent_exposure_desc& d) {
+             static const double weight[1] = {kNaN};
+             d.weights = weight;
+         }),
+         kArg, "weights[0]"},
+        {"ent_exposure_create", "weights all zero",
+         exposure_with([](ent_exposure_desc& d) {
+             static const double weight[1] = {0.0};
+             d.weights = weight;
+         }),
+         kArg, "all zero"},
+        {"ent_exposure_create", "obstacle 99", exposure_with([](ent_exposure_desc& d) { d.obstacle = 99; }),
+         ENT_ERROR_NOT_FOUND, "obstacle 99"},
+        {"ent_exposure_destroy", "exposure NULL (ignored)",
+         [](L) {
+             ent_exposure_destroy(nullptr);
+             return ENT_OK;
+         },
+         ENT_OK, nullptr},
+        {"ent_scene_exposure", "scene NULL",
+         measuring([](L, ent_exposure* e, ent_exposure_result* r) {
+             const double eye[3] = {0.0, 0.0, 0.3};
+             return ent_scene_exposure(nullptr, e, eye, r);
+         }),
+         kArg, "scene"},
+        {"ent_scene_exposure", "exposure NULL",
+         measuring([](L l, ent_exposure*, ent_exposure_result* r) {
+             const double eye[3] = {0.0, 0.0, 0.3};
+             return ent_scene_exposure(l.scene, nullptr, eye, r);
+         }),
+         kArg, "exposure"},
+        {"ent_scene_exposure", "viewpoint NULL",
+         measuring([](L l, ent_exposure* e, ent_exposure_result* r) { return ent_scene_exposure(l.scene, e, nullptr, r); }),
+         kArg, "viewpoint_m"},
+        {"ent_scene_exposure", "viewpoint NaN",
+         measuring([](L l, ent_exposure* e, ent_exposure_result* r) {
+             const double eye[3] = {0.0, kNaN, 0.3};
+             return ent_scene_exposure(l.scene, e, eye, r);
+         }),
+         kArg, "viewpoint_m[1]"},
+        {"ent_scene_exposure", "out NULL",
+         measuring([](L l, ent_exposure* e, ent_exposure_result*) {
+             const double eye[3] = {0.0, 0.0, 0.3};
+             return ent_scene_exposure(l.scene, e, eye, nullptr);
+         }),
+         kArg, "out"},
+        {"ent_scene_exposure", "spans_u NULL with a span_capacity",
+         measuring([](L l, ent_exposure* e, ent_exposure_result* r) {
+             const double eye[3] = {0.0, 0.0, 0.3};
+             r->span_capacity = 4;
+             return ent_scene_exposure(l.scene, e, eye, r);
+         }),
+         kArg, "spans_u"},
+        {"ent_scene_exposure", "an exposure made for another scene",
+         measuring(
+             [](L l, ent_exposure* e, ent_exposure_result* r) {
+                 const double eye[3] = {0.0, 0.0, 0.3};
+                 return ent_scene_exposure(l.scene, e, eye, r);
+             },
+             true),
+         kArg, "another scene"},
         {"ent_tool_remove", "unknown tool -1", [](L l) { return ent_tool_remove(l.scene, -1); }, ENT_ERROR_NOT_FOUND,
          "tool -1"},
         {"ent_scene_tool_count", "scene NULL", [](L) { int32_t n; return ent_scene_tool_count(nullptr, &n); }, kArg,
@@ -1174,6 +1417,13 @@ std::vector<BadInput> table() {
         add("ent_scene_desc_init", init_with_size(&ent_scene_desc_init, size));
         add("ent_obstacle_desc_init", init_with_size(&ent_obstacle_desc_init, size));
         add("ent_skin_desc_init", init_with_size(&ent_skin_desc_init, size));
+        add("ent_exposure_desc_init", init_with_size(&ent_exposure_desc_init, size));
+        add("ent_exposure_create", exposure_with([size](ent_exposure_desc& d) { d.struct_size = size; }));
+        add("ent_scene_exposure", measuring([size](L l, ent_exposure* e, ent_exposure_result* r) {
+                const double eye[3] = {0.0, 0.0, 0.3};
+                r->struct_size = size;
+                return ent_scene_exposure(l.scene, e, eye, r);
+            }));
         add("ent_scene_stats",
             out_struct_with_size<ent_stats>(size, [](L l, ent_stats* s) { return ent_scene_stats(l.scene, s); }));
         add("ent_scene_effect_stats", out_struct_with_size<ent_effect_stats>(size, [](L l, ent_effect_stats* s) {
@@ -1187,6 +1437,11 @@ std::vector<BadInput> table() {
         add("ent_skin_create", skin_with([size](ent_skin_desc& d) { d.struct_size = size; }));
         add("ent_tool_desc_init", init_with_size(&ent_tool_desc_init, size));
         add("ent_tool_add", tool_with([size](ent_tool_desc& d) { d.struct_size = size; }));
+        add("ent_scene_read_desc", out_struct_with_size<ent_scene_desc>(
+                                       size, [](L l, ent_scene_desc* d) { return ent_scene_read_desc(l.scene, d); }));
+        add("ent_tool_read_desc", out_struct_with_size<ent_tool_desc>(size, [](L l, ent_tool_desc* d) {
+                return ent_tool_read_desc(l.scene, l.tool, d);
+            }));
         add("ent_tool_read_feedback", out_struct_with_size<ent_tool_feedback>(size, [](L l, ent_tool_feedback* f) {
                 return ent_tool_read_feedback(l.scene, l.tool, f);
             }));

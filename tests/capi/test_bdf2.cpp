@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bdf2 integrator through the C API: second order also when dt changes from step to step
 // (its variable-step coefficients), and no energy from nothing. Its constant-step order is in
 // test_convergence.cpp, its rolled-back history in tests/unit/mechanics/test_bdf2.cpp.
@@ -83,3 +84,29 @@ TEST(Bdf2, SecondOrderWhenTheStepChangesEveryStep) {
 }
 
 }  // namespace
+
+// A point pinned while the bowel swings stays exactly where it was pinned: the pin stops it,
+// and the method starts again from there (Integrator::restart), instead of extrapolating
+// the point's motion before the pin (q_{n+1} = q_n + a (q_n - q_{n-1}) for a point whose
+// velocity is held at zero).
+TEST(Bdf2, APointPinnedBetweenStepsStaysWhereItWasPinned) {
+    ent_scene_desc desc = default_desc();
+    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
+                   ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+    desc.control_points = kPoints;
+    desc.length_m = 1.0;
+    desc.shape = ENT_SHAPE_LINE;
+    desc.pinned_ends = ENT_PIN_FIRST;
+    desc.integrator = ENT_INTEGRATOR_BDF2;
+    ScenePtr scene = create(desc);
+    ASSERT_TRUE(scene);
+    for (int k = 0; k < 50; ++k) ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
+    const uint32_t point = kPoints - 1;  // the free end, falling
+    ASSERT_EQ(ent_scene_pin_point(scene.get(), point, ENT_NO_OBSTACLE), ENT_OK) << ent_last_error();
+    const std::vector<double> pinned = control_points(scene.get());
+    for (int k = 0; k < 20; ++k) {
+        ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
+        const std::vector<double> now = control_points(scene.get());
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(now[3 * point + c], pinned[3 * point + c]) << "step " << k << " coordinate " << c;
+    }
+}

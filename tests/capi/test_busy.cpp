@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Overlapping driving calls (issue 16, defect 3). Two threads stepping one scene used to hang
 // in the near-pair search or publish control points at 1e152 m; now a driving call made
 // while another runs on the same scene returns ENT_ERROR_BUSY at once, with a message, and

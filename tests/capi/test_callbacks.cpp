@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Allocator and log callbacks (ent_callbacks): every allocation is released with the size and
 // alignment it was made with, nothing is allocated by steps after the first, an allocator that
 // fails gives ENT_ERROR_OUT_OF_MEMORY without leaking, and the hooks get their user_data.

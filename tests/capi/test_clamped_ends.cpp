@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clamped ends (ent_scene_desc.clamped_ends, JSON pinned.clamped): an end held in place and
 // in direction. The reference is the large-deflection cantilever under its own weight: a
 // straight horizontal bowel, L = 0.5 m, mu = 0.3 kg/m, EA = 1e4 N, its first end clamped, with

@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: Apache-2.0
 // The published contact list (ent_scene_contacts), the bowel's summary
 // (ent_scene_contact_summary) and a tool's touches (ent_tool_read_contacts), checked against
 // forces the tests work out themselves: a bowel pressed into a plane at a known depth gets
 // the penalty law's k d from every sphere; two folds overlapping at rest push apart with
 // k times their depth along their normal; a tool's contacts add up to minus its wrench, and
 // their torques about the tip to minus its torque; a stretched axis reports its stretch.
-#include "capi_test_support.h"
+#include "capi_scenes.h"
 
 #include <iostream>
 
@@ -12,19 +13,11 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = 0.0125;     // the default R, m
+constexpr double kRadius = kBowelRadius;  // the default R, m
 constexpr double kStiffness = 500.0;   // the default contact stiffness, N/m
 const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
 double norm3(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-ent_contact_summary summary(const ent_scene* scene) {
-    ent_contact_summary s;
-    std::memset(&s, 0, sizeof s);
-    s.struct_size = sizeof s;
-    EXPECT_EQ(ent_scene_contact_summary(scene, &s), ENT_OK) << ent_last_error();
-    return s;
-}
 
 std::vector<ent_contact> contacts(const ent_scene* scene) {
     const ent_contact_summary s = summary(scene);
@@ -52,20 +45,12 @@ ent_tool_contacts tool_contacts(const ent_scene* scene, int32_t tool, std::vecto
 // A straight bowel along x whose axis lies at height z = R - depth above the plane z = 0,
 // at rest, without gravity: every collision sphere reaches `depth` into the plane.
 ScenePtr bowel_pressed_into_plane(double depth) {
-    ent_scene_desc desc = default_desc();
-    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND);
-    desc.length_m = 0.3;
-    desc.control_points = 13;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.15;
-    desc.shape_center_m[2] = kRadius - depth;
-    ScenePtr scene = create(desc);
-    if (!scene) return scene;
-    ent_obstacle_desc plane;
-    ent_obstacle_desc_default(&plane);
-    plane.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
-    return scene;
+    BowelOnPlane bowel;
+    bowel.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND);
+    bowel.length_m = 0.3;
+    bowel.control_points = 13;
+    bowel.axis_height_m = kRadius - depth;
+    return bowel_on_plane(bowel);
 }
 
 // Two parallel legs `gap` apart (axis to axis, less than 2R: they overlap) joined by a
@@ -190,18 +175,8 @@ struct Pushed {
 
 Pushed bowel_and_tool(int32_t mode = ENT_TOOL_MODE_PROXY) {
     Pushed p;
-    ent_scene_desc desc = default_desc();
-    desc.length_m = 0.4;
-    desc.control_points = 17;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.2;
-    desc.shape_center_m[2] = kRadius;
-    p.scene = create(desc);
+    p.scene = bowel_on_plane(BowelOnPlane{});
     if (!p.scene) return p;
-    ent_obstacle_desc plane;
-    ent_obstacle_desc_default(&plane);
-    plane.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(p.scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
     ent_tool_desc tool;
     ent_tool_desc_default(&tool);
     tool.position_m[1] = 0.05;

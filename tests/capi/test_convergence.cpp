@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Observed order of accuracy of each integrator on a smooth problem: a 1 m bowel, straight and
 // horizontal, hinged at its first control point, released under gravity with stretch and bend
 // (no damping), 20 control points, t_end = 0.1 s. Each run uses timestep_s = dt and steps by dt,

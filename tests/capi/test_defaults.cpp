@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One set of defaults for JSON and C (issue 16, defect 7). Leaving out stretch_stiffness in
 // JSON used to give a bowel without axial elasticity while the C defaults gave the elastic
 // bowel; now both read the defaults of one place (lib/scene/scene_config.h), and an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Determinism: the same scene and the same calls give bit-identical states, run to run,
 // across create/destroy cycles and with another scene stepping in between.
 #include <gtest/gtest.h>

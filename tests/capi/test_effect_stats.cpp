@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Simulate only the effects a scene calls for": an effect the scene does not name is never
 // run, so its stats stay at zero however long the scene runs.
 #include "capi_test_support.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Energy behaviour of the integrators on a free, undamped, vibrating bowel: stretch and bend
 // only (no damping, no gravity), released from a bent shape whose segments are all 5 % longer
 // than their rest length, so it vibrates in stretch and in bending.

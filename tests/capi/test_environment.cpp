@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The environment through the C API: the abdominal cavity (box_inside), planes, spheres and
 // capsules keep the bowel out; obstacles come from JSON ("environment") or
 // ent_scene_add_obstacle; the effect costs nothing until the first obstacle; bad obstacles
@@ -654,7 +655,7 @@ TEST(Environment, JsonErrorsNameThePath) {
     expect_json_error(R"([{"type": "plane", "normal": [0, 0, 1]}, {"type": "sphere", "radius": -1}])",
                       "environment[1].radius must be > 0, got -1");
     expect_json_error(R"([{"type": "sphere", "radius": 0}])", "environment[0].radius must be > 0, got 0");
-    expect_json_error(R"([{"type": "plane", "normal": [0, 0, 0]}])", "environment[0].normal must not be zero");
+    expect_json_error(R"([{"type": "plane", "normal": [0, 0, 0]}])", "environment[0].normal must be non-zero");
     expect_json_error(R"([{"type": "box_inside", "half_extents": [0.1, -0.1, 0.1]}])",
                       "environment[0].half_extents[1] must be > 0, got -0.1");
     expect_json_error(R"([{"type": "box_inside", "half_extents": [0.1, 0.1, 0.1], "type": "plane"}])",

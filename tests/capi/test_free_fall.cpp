@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Free fall under gravity alone: the generalised gravity force is M 1 g, so every control
 // point accelerates by exactly g and each integrator must reproduce its own exact discrete
 // solution of q'' = g:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scenes that cannot start, and steps that cannot be saved (issue 16, defect 6). A bowel far
 // outside its cavity, a 50 m helix in a 30 cm box, a bowel inside an organ: creation (or
 // ent_scene_add_obstacle) refuses them, naming the obstacle and the control points. A step

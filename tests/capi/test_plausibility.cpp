@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Values no human abdomen has (issue 16, defect 8): accepted, but the log callback hears a
 // warning naming the key as the caller wrote it and the likely unit mistake; and errors
 // blame what the caller wrote, saying so when a default is what clashes with it.
@@ -10,32 +11,6 @@ using namespace capi_test;
 namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-struct Warnings {
-    std::mutex mutex;
-    std::vector<std::string> lines;
-    bool has(const std::string& part) {
-        std::lock_guard<std::mutex> lock(mutex);
-        for (const std::string& line : lines)
-            if (contains(line, part)) return true;
-        return false;
-    }
-};
-
-void collect(void* user, int32_t level, const char* message) {
-    if (level != ENT_LOG_WARNING) return;
-    Warnings& w = *static_cast<Warnings*>(user);
-    std::lock_guard<std::mutex> lock(w.mutex);
-    w.lines.push_back(message);
-}
-
-ent_callbacks logging_to(Warnings& warnings) {
-    ent_callbacks callbacks;
-    ent_callbacks_default(&callbacks);
-    callbacks.log = collect;
-    callbacks.user_data = &warnings;
-    return callbacks;
-}
 
 ScenePtr json_with(const std::string& json, Warnings& warnings) {
     const ent_callbacks callbacks = logging_to(warnings);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Save and restore (ent_scene_save_state, ent_scene_restore_state; docs/scoring-and-state.md).
 //
 // A restored scene continues bit-identically: the test runs a scripted trainee (a tool
@@ -147,6 +148,84 @@ TEST(SaveRestore, ARestoredSceneContinuesBitIdentically) {
 }
 
 // bdf2 keeps a history of the previous substep (its own section): restored with the rest.
+// Issue 27, defect 8: two runs that are bit-identical save bit-identical images. Before, 23
+// bytes differed: the wall-clock figures (the last step's time, each effect's time) and the
+// checksum over them.
+TEST(SaveRestore, TwoIdenticalRunsSaveIdenticalImages) {
+    std::vector<unsigned char> images[2];
+    std::vector<std::vector<unsigned char>> runs[2];
+    for (int r = 0; r < 2; ++r) {
+        ScenePtr scene = create_pile();
+        ASSERT_TRUE(scene);
+        runs[r] = run(scene.get(), 0, 150);
+        images[r] = save(scene.get());
+        ASSERT_GT(stats(scene.get()).last_step_ns, 0u) << "the scene does time its steps";
+    }
+    expect_same_runs(runs[0], runs[1]);
+    ASSERT_EQ(images[0].size(), images[1].size());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < images[0].size(); ++i) differing += images[0][i] != images[1][i] ? 1 : 0;
+    EXPECT_EQ(differing, 0u) << "bytes differ between the images of two identical runs";
+}
+
+// The images of before (scene section version 1 and dynamics version 2, which held those
+// wall-clock figures) still restore: the figures are read and dropped, and the scene
+// continues as from the current image.
+std::vector<unsigned char> with_wall_clock_figures(const std::vector<unsigned char>& image, uint32_t control_points) {
+    using saved_state_image::kSectionHeaderSize;
+    std::vector<unsigned char> old(image.begin(), image.begin() + kHeaderSize);
+    const uint64_t figure = 123456789;  // ns
+    for (std::size_t at = kHeaderSize; at < image.size();) {
+        std::vector<unsigned char> header(image.begin() + at, image.begin() + at + kSectionHeaderSize);
+        uint64_t size = 0;
+        std::memcpy(&size, header.data() + 24, sizeof size);
+        std::vector<unsigned char> payload(image.begin() + at + kSectionHeaderSize,
+                                           image.begin() + at + kSectionHeaderSize + size);
+        at += kSectionHeaderSize + size;
+        const std::string name(reinterpret_cast<const char*>(header.data()));
+        uint32_t version = 0;
+        std::memcpy(&version, header.data() + 16, sizeof version);
+        const auto insert_figure = [&](std::size_t offset) {
+            payload.insert(payload.begin() + offset, reinterpret_cast<const unsigned char*>(&figure),
+                           reinterpret_cast<const unsigned char*>(&figure) + sizeof figure);
+        };
+        if (name == "scene") {
+            EXPECT_EQ(version, 2u);
+            version = 1;  // the last step's time after the counters of steps, substeps, rollbacks
+            insert_figure(4 + 8 + 2 * 3 * 8 * std::size_t{control_points} + 3 * 8);
+        } else if (name == "dynamics") {
+            EXPECT_EQ(version, 3u);
+            version = 2;  // each effect's time after its calls
+            for (int effect = ENT_EFFECT_COUNT - 1; effect >= 0; --effect) insert_figure(8 * std::size_t(effect + 1));
+        }
+        std::memcpy(header.data() + 16, &version, sizeof version);
+        size = payload.size();
+        std::memcpy(header.data() + 24, &size, sizeof size);
+        old.insert(old.end(), header.begin(), header.end());
+        old.insert(old.end(), payload.begin(), payload.end());
+    }
+    reseal(old);
+    return old;
+}
+
+TEST(SaveRestore, ImagesWithWallClockFiguresStillRestore) {
+    ScenePtr scene = create_pile();
+    ASSERT_TRUE(scene);
+    run(scene.get(), 0, 120);
+    const std::vector<unsigned char> image = save(scene.get());
+    const std::vector<unsigned char> old = with_wall_clock_figures(image, 24);
+    ASSERT_EQ(old.size(), image.size() + 8 + 8 * ENT_EFFECT_COUNT);
+    ScenePtr from_new = create_pile(), from_old = create_pile();
+    ASSERT_EQ(ent_scene_restore_state(from_new.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_scene_restore_state(from_old.get(), old.data(), old.size()), ENT_OK) << ent_last_error();
+    EXPECT_EQ(stats(from_old.get()).last_step_ns, 0u) << "a restore leaves this scene's wall-clock figures alone";
+    EXPECT_EQ(effect_stats(from_old.get(), ENT_EFFECT_STRETCH).total_time_ns, 0u);
+    EXPECT_EQ(effect_stats(from_old.get(), ENT_EFFECT_STRETCH).calls,
+              effect_stats(scene.get(), ENT_EFFECT_STRETCH).calls) << "the work counters are restored";
+    EXPECT_TRUE(save(from_old.get()) == image) << "the old image restores the same state";
+    expect_same_runs(run(from_new.get(), 120, 60), run(from_old.get(), 120, 60));
+}
+
 TEST(SaveRestore, Bdf2ContinuesBitIdentically) {
     std::string json = kPile;
     json.replace(json.find("\"max_substeps\": 100"), 19, "\"max_substeps\": 100, \"integrator\": \"bdf2\"");

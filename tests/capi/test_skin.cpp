@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The skin C API (ent_skin_*): exact axes through ENT_SHAPE_POINTS scenes, every method's
 // accuracy and closure, no blending at a tight U-turn, a skin updated on a render thread
 // while the physics thread steps, and bad input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The skins on the two settled piles of the skin benchmark (bench/skin_piles.h): the
 // demo's gently folded bowel, and the tight-fold pile where more than half of the axis
 // bends with a radius under 4 R and U-turns come down to about 1.5 R. Both implicit skins

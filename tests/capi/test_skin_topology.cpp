@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A mesh a GPU can keep (ent_skin_desc.stable_topology, ent_mesh_view's around_v,
 // tangents_xyz, topology_serial, topology_changed, stable_topology): on a bowel that swings
 // and stretches, the tube and the convolution skins keep their vertex count and indices

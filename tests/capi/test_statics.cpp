@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Statics: a cantilever under its own weight, against Euler-Bernoulli beam theory.
 //
 // A straight horizontal bowel of length L = 0.5 m has its first two control points pinned (a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The struct_size handshake from the library's side: the _init functions behind the
 // _default macros write exactly the size they are given, every released size is served,
 // and sizes no release has are refused with ENT_ERROR_VERSION and nothing written.
@@ -159,6 +160,27 @@ TEST(StructSize, SkinDescriptionsFromBeforeContactsGetTheirDefaults) {
     EXPECT_EQ(m.has_previous_update, 1);
     EXPECT_LT(m.vertex_excess_motion_max, 1e-6);  // the same state twice
     ent_skin_destroy(skin);
+}
+
+// ent_tool_feedback before `saturated` (issue 27): served, nothing written past it; a size
+// between two released ones is refused.
+TEST(StructSize, ToolFeedbackBeforeSaturatedIsServed) {
+    ScenePtr scene = create(default_desc());
+    ent_tool_desc tool;
+    ent_tool_desc_default(&tool);
+    ASSERT_EQ(ent_tool_add(scene.get(), &tool, nullptr), ENT_OK) << ent_last_error();
+    constexpr uint32_t kBeforeSaturated = offsetof(ent_tool_feedback, saturated);
+    ent_tool_feedback old;
+    std::memset(&old, 0xcd, sizeof old);
+    old.struct_size = kBeforeSaturated;
+    ASSERT_EQ(ent_tool_read_feedback(scene.get(), 0, &old), ENT_OK) << ent_last_error();
+    EXPECT_TRUE(all_bytes(&old, kBeforeSaturated, sizeof old, 0xcd)) << "written past the old size";
+    EXPECT_EQ(old.steps, 0u);
+    ent_tool_feedback between;
+    std::memset(&between, 0xcd, sizeof between);
+    between.struct_size = kBeforeSaturated + 2;
+    EXPECT_EQ(ent_tool_read_feedback(scene.get(), 0, &between), ENT_ERROR_VERSION);
+    EXPECT_TRUE(contains_text(ent_last_error(), "ent_tool_feedback.struct_size")) << ent_last_error();
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The published snapshot: queries from other threads, while one thread steps, always see one
 // whole published state. The scene is a rigid free fall (gravity only, symplectic Euler), in
 // which every control point of any one published state has moved by the same amount since the

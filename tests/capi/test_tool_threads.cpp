@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 // The haptic thread and the physics thread (issue 16, defect 4): a tool's commands (pose,
 // grasp, release) are posted from any thread without a lock and taken by the next step, the
 // last one posted winning; its output (wrench, grasp, contacts) is read from the published
 // snapshot by any thread. thread_stress (run under ThreadSanitizer) races the same calls at
 // 1 kHz; these tests check what they mean.
-#include "capi_test_support.h"
+#include "capi_scenes.h"
 
 #include <atomic>
 #include <chrono>
@@ -13,23 +14,13 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = 0.0125;
+constexpr double kRadius = kBowelRadius;  // the default R, m
 const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
 // A 0.4 m bowel on the floor and a tool resting on its middle.
 ScenePtr bowel_with_tool(double max_force = 5.0) {
-    ent_scene_desc desc = default_desc();
-    desc.length_m = 0.4;
-    desc.control_points = 17;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.2;
-    desc.shape_center_m[2] = kRadius;
-    ScenePtr scene = create(desc);
+    ScenePtr scene = bowel_on_plane(BowelOnPlane{});
     if (!scene) return scene;
-    ent_obstacle_desc floor;
-    ent_obstacle_desc_default(&floor);
-    floor.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &floor, nullptr), ENT_OK) << ent_last_error();
     ent_tool_desc tool;
     ent_tool_desc_default(&tool);
     tool.position_m[2] = 2 * kRadius + 0.004;

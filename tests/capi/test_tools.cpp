@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: Apache-2.0
 // Surgical tools through the C API: a capsule driven by the caller pushes the bowel aside
 // with a force bounded by max_force_N, returns a passive force (push in and pull back does
 // no net work on the tool), grasps, releases and slips, sweeps a fast path without
 // tunnelling through the bowel, and refuses bad input without changing anything.
-#include "capi_test_support.h"
+#include "capi_scenes.h"
 
 #include <iostream>
 #include <limits>
@@ -11,7 +12,7 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = 0.0125;  // the default R, m
+constexpr double kRadius = kBowelRadius;  // the default R, m
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
@@ -27,23 +28,12 @@ std::vector<double> axis(const ent_scene* scene, uint32_t count = 200) {
     return points;
 }
 
-// A 0.4 m bowel along x, centred on the origin, resting on the plane z = 0.
+// A 0.4 m bowel along x, centred on the origin, resting on the plane z = 0 (settled 0.2 s).
 ScenePtr bowel_on_plane(int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER) {
-    ent_scene_desc desc = default_desc();
-    desc.length_m = 0.4;
-    desc.control_points = 17;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.shape_center_m[0] = -0.2;
-    desc.shape_center_m[2] = kRadius;
-    desc.integrator = integrator;
-    ScenePtr scene = create(desc);
-    if (!scene) return scene;
-    ent_obstacle_desc plane;
-    ent_obstacle_desc_default(&plane);
-    plane.kind = ENT_OBSTACLE_PLANE;
-    EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
-    EXPECT_TRUE(step_n(scene.get(), 1e-3, 200));  // settle
-    return scene;
+    BowelOnPlane bowel;
+    bowel.integrator = integrator;
+    bowel.settle_s = 0.2;
+    return capi_test::bowel_on_plane(bowel);
 }
 
 // A vertical tool (identity orientation: the shaft rises from the tip) at tip `p`.

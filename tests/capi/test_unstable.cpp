@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability guard: a step it rejects is rolled back and retried with halved substeps; a
 // step it cannot save returns ENT_ERROR_UNSTABLE with the state exactly as before.
 //

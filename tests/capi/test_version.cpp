@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Version handshake and status strings.
 #include <enteron/enteron.h>
 #include <gtest/gtest.h>

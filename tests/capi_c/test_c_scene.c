@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The C API from plain C99: create (from a desc and from JSON), step, axis, control points,
  * stats, effect stats, destroy, and a few failures. Prints what went wrong and returns
  * non-zero on any failure. */

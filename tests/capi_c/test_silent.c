@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The library never prints: with standard output and standard error redirected to files,
  * a run full of failures (bad JSON, bad descriptions, NULL arguments, a small buffer, an
  * unknown effect, unstable steps) writes nothing to either, with and without a log

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks the ABI surface of libenteron.so: every defined dynamic symbol starts with ent_,
 # every function the public header declares (ENT_API) is defined, and the SONAME is the
 # expected one.

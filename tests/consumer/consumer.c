@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /*
  * A program outside the project that uses an installed libenteron, the way a simulator
  * vendor would: only <enteron/enteron.h> and -lenteron. Built by run_consumer_test.sh

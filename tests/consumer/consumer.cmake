@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Tests of the installed package and of the ABI surface. Include this file from
 # tests/CMakeLists.txt (after enable_testing()):
 #   include(${CMAKE_CURRENT_SOURCE_DIR}/consumer/consumer.cmake)

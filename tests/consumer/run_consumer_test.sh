@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs an already-built Enteron into a staging prefix and builds a small C consumer
 # against it, the way a user outside the project would, then moves the staged tree and
 # does it again to prove that the installed package is relocatable.

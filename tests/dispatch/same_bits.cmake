@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest dispatch.same_bits: runs PROGRAM on this build's library and, through
 # LD_LIBRARY_PATH, on the baseline-only build in BASELINE; the hashes must be equal.
 # Without a library in BASELINE the loader would quietly take this build's again.

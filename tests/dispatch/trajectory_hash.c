@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Prints a hash of the bits of a pile's trajectory: the 6 m bowel (N = 120) dropped into a
  * box with self-contact, then pushed by a sweeping tool, implicit Euler, 1 ms steps. Every
  * hot kernel of a step runs (band updates, factorisation, solve, sphere placement, contact

@@ -1,32 +1,45 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Checks that the documentation says what the code does.
 
-    check_docs.py --root SOURCE_DIR CHECK [--library LIBENTERON]
+    check_docs.py --root SOURCE_DIR CHECK [--table ENTERON_SCENE_TABLE] [--run "NAME=COMMAND"]
+                  [--not-run NAME REASON]
 
 CHECK is one of:
   header     every function a public header exports (declared with an ENT_*API macro in
              include/enteron/*.h) has a doc comment (/** ... */) right above it;
-  json_keys  every key the JSON loader accepts, at every level, is in its section of
+  json_keys  every key of the scene's description table (lib/scene/scene_table.h: the
+             JSON loader reads by it), at every level, is in its section of
              docs/scene-json.md, and so is every value of a key that takes a choice of
-             names (needs --library, the built libenteron);
+             names; and every message `PATH must be one of "a", "b", got "x"` the page
+             quotes lists the table's choices for that key (needs --table, the built
+             enteron_scene_table that prints it);
   links      every relative link and image of README.md and docs/*.md leads to a file or
              folder that exists, and its #anchor to a heading (or an <a name>/id) there;
+  doc_paths  every docs/*.md that a header, a source file or a document names (in a
+             comment, in text: not only links) exists;
   readme_example
-             the C program of README.md is examples/minimal.c, character for character.
+             the C program of README.md is examples/minimal.c, character for character
+             (but for the file's SPDX licence line);
+  example_outputs
+             every output examples/README.md quotes (its table's last column) is printed by
+             a run of that example: each example of the table is either run (--run
+             "NAME=COMMAND", NAME as in the table's first column, e.g. python/skin.py, the
+             command line split as a shell would) or named with the reason it is not
+             (--not-run NAME REASON). A quoted line must be a line
+             the run printed, character for character; where the row says its figures
+             "depend on the machine", any number stands for any number.
 
-The JSON keys come from the loader itself, not from reading its source: a document with an
-unknown key is refused with the keys allowed at that place ("unknown key "x" in intestine
-(expected one of: length, radius, ...)"), the message users see. Asking the built library
-at each level finds every key, whatever shape the loader's code takes, and cannot list a
-key the loader does not accept.
+The JSON keys come from the table itself, printed by tests/docs/print_scene_table.cpp: a
+new row (a new key) without its line in the documentation fails here.
 
 Python 3 standard library only. Prints one line per problem and exits 1 if there is any.
 """
 import argparse
-import ctypes
 import json
 import os
 import re
+import subprocess
 import sys
 
 
@@ -145,74 +158,11 @@ def check_header(root):
 
 # ---------------------------------------------------------------- JSON keys
 
-PROBE = "zz_undocumented_probe"
-UNKNOWN_KEY = re.compile(r"unknown key \"" + PROBE + r"\" .*\(expected one of: (.*)\)$")
-CHOICES = re.compile(r"must be one of ((?:\"[^\"]*\"(?:, )?)+), got \"" + PROBE + "\"")
-
-
-class Loader:
-    """Asks the library's JSON loader, through the C API, what it accepts."""
-
-    def __init__(self, library):
-        self.lib = ctypes.CDLL(library)
-        self.lib.ent_scene_create_json.argtypes = [ctypes.c_char_p, ctypes.c_size_t,
-                                                   ctypes.POINTER(ctypes.c_void_p)]
-        self.lib.ent_scene_create_json.restype = ctypes.c_int32
-        self.lib.ent_last_error.restype = ctypes.c_char_p
-        self.lib.ent_scene_destroy.argtypes = [ctypes.c_void_p]
-
-    def error(self, document):
-        """The loader's message for this document, or None if it makes a scene."""
-        text = json.dumps(document).encode()
-        scene = ctypes.c_void_p()
-        if self.lib.ent_scene_create_json(text, len(text), ctypes.byref(scene)) == 0:
-            self.lib.ent_scene_destroy(scene)
-            return None
-        return self.lib.ent_last_error().decode()
-
-    def keys(self, place):
-        """The keys allowed in the object that place(object) puts in a document, or None
-        if the loader does not read an object with keys there."""
-        match = UNKNOWN_KEY.search(self.error(place({PROBE: 0})) or "")
-        if not match:
-            return None
-        return [key for key in match.group(1).split(", ") if key]
-
-    def choices(self, place):
-        """The names allowed for the value that place(value) puts in a document, or []."""
-        match = CHOICES.search(self.error(place(PROBE)) or "")
-        return re.findall(r"\"([^\"]*)\"", match.group(1)) if match else []
-
-
-def discover(loader, place, name, found):
-    """Fills found[name] with the keys the loader accepts in the object that place(object)
-    puts in a document, and the named values of those keys; then the same for every object,
-    array of objects, or array of typed objects (an obstacle's "type") below it. False if
-    the loader reads no object with keys there."""
-    keys = loader.keys(place)
-    if keys is None:
-        return False
-    entry = found.setdefault(name, {"keys": set(), "choices": {}})
-    entry["keys"].update(keys)
-    for key in keys:
-        child = f"{name}.{key}" if name else key
-        inside = lambda value, key=key: place({key: value})  # noqa: E731
-        element = lambda value, key=key: place({key: [value]})  # noqa: E731
-        if discover(loader, inside, child, found) or discover(loader, element, child, found):
-            continue
-        kinds = loader.choices(lambda value, element=element: element({"type": value}))
-        if kinds:
-            typed = found.setdefault(child, {"keys": set(), "choices": {}})
-            typed["keys"].add("type")
-            typed["choices"]["type"] = kinds
-            for kind in kinds:
-                discover(loader, lambda value, element=element, kind=kind: element({"type": kind, **value}),
-                         child, found)
-            continue
-        values = loader.choices(inside)
-        if values:
-            entry["choices"][key] = values
-    return True
+def read_table(program):
+    """The scene table's keys, as print_scene_table prints them: path -> {"keys": [...],
+    "choices": {key: [names]}}."""
+    output = subprocess.run([program], check=True, capture_output=True, text=True).stdout
+    return json.loads(output)
 
 
 def sections(text):
@@ -226,17 +176,12 @@ def sections(text):
     return result
 
 
-def check_json_keys(root, library):
+def check_json_keys(root, table_program):
     problems = Problems()
-    if not library:
-        problems.add("json_keys needs --library (the built libenteron)")
+    if not table_program:
+        problems.add("json_keys needs --table (the built enteron_scene_table)")
         return problems.report("")
-    loader = Loader(library)
-    found = {}
-    if not discover(loader, lambda value: value, "", found):
-        problems.add(f"the loader's answer to an unknown top-level key is not the expected message: "
-                     f"{loader.error({PROBE: 0})!r}")
-        return problems.report("")
+    found = read_table(table_program)
     doc_path = os.path.join(root, "docs", "scene-json.md")
     by_heading = sections(read(doc_path))
     keys = values = 0
@@ -251,16 +196,43 @@ def check_json_keys(root, library):
         for key in sorted(entry["keys"]):
             keys += 1
             if f"`{key}`" not in section:
-                problems.add(f"docs/scene-json.md, section {heading}: the loader accepts the key "
+                problems.add(f"docs/scene-json.md, section {heading}: the table has the key "
                              f"\"{key}\" ({name + '.' if name else ''}{key}), which is not documented there")
         for key, choices in sorted(entry["choices"].items()):
             for choice in choices:
                 values += 1
                 if f"\"{choice}\"" not in section:
-                    problems.add(f"docs/scene-json.md, section {heading}: the loader accepts "
+                    problems.add(f"docs/scene-json.md, section {heading}: the table has "
                                  f"{key} \"{choice}\", which is not documented there")
+    quoted = check_quoted_choices(found, read(doc_path), problems)
     return problems.report(f"{keys} JSON keys and {values} named values in {len(found)} places, "
-                           "each in its section of docs/scene-json.md")
+                           f"each in its section of docs/scene-json.md; {quoted} quoted choice messages, "
+                           "each the loader's")
+
+
+QUOTED_CHOICE = re.compile(r"`(([\w.\[\]]+) must be one of (?:\"[^\"]*\"(?:, )?)+, got \"([^\"]*)\")`")
+
+
+def check_quoted_choices(table, text, problems):
+    """Every `PATH must be one of "a", ..., got "x"` the page quotes lists the choices the
+    table has for the key at PATH, in its order: a list that lost a newer choice (an
+    obstacle type) is caught."""
+    count = 0
+    for number, line, _ in markdown_lines(text):
+        for match in QUOTED_CHOICE.finditer(line):
+            message, path, _ = match.groups()
+            parts = re.sub(r"\[\d+\]", "", path).split(".")
+            entry = table.get(".".join(parts[:-1]))
+            choices = entry["choices"].get(parts[-1]) if entry else None
+            if choices is None:
+                problems.add(f"docs/scene-json.md:{number}: quotes `{message}`, but the table has no choice at {path}")
+                continue
+            count += 1
+            quoted = re.findall(r'"([^"]*)"', message.split(" must be one of ", 1)[1].rsplit(", got ", 1)[0])
+            if quoted != list(choices):
+                problems.add(f"docs/scene-json.md:{number}: quotes the choices of {path} as {quoted}, "
+                             f"the table has {list(choices)}")
+    return count
 
 
 # ---------------------------------------------------------------- links
@@ -323,6 +295,8 @@ def check_readme_example(root):
     programs = [(number, code) for number, language, code in blocks
                 if language == "c" and re.search(r"\bint\s+main\s*\(", code)]
     example = read(os.path.join(root, "examples", "minimal.c"))
+    # Its licence line (tests/docs/check_spdx.py) is the file's, not the program's.
+    example = re.sub(r"\A/\* SPDX-License-Identifier: [^*]*\*/\n", "", example)
     if len(programs) != 1:
         problems.add(f"README.md has {len(programs)} C programs (```c blocks with main); "
                      "it must have one, examples/minimal.c")
@@ -336,19 +310,145 @@ def check_readme_example(root):
     return problems.report("the C program of README.md is examples/minimal.c")
 
 
+# ---------------------------------------------------------------- paths of docs
+
+DOC_PATH = re.compile(r"\bdocs/[A-Za-z0-9_.-]+\.md\b")
+# Where docs are named: headers, sources, the binding, examples, scripts and the documents
+# (the CHANGELOG is history: it may name what was renamed since).
+DOC_PATH_PLACES = ("include", "lib", "bindings", "examples", "apps", "bench", "scripts", "tests", "docs")
+DOC_PATH_SUFFIXES = (".h", ".hpp", ".c", ".cpp", ".py", ".md", ".lcm", ".cmake", ".txt", ".sh", ".json")
+
+
+def named_doc_paths(root):
+    """(file, line number, docs/*.md) for every mention outside build trees."""
+    files = [os.path.join(root, "README.md")]
+    for place in DOC_PATH_PLACES:
+        for directory, subdirectories, names in os.walk(os.path.join(root, place)):
+            subdirectories[:] = [d for d in subdirectories if not d.startswith((".", "build"))]
+            files += [os.path.join(directory, n) for n in sorted(names) if n.endswith(DOC_PATH_SUFFIXES)]
+    for path in files:
+        try:
+            text = read(path)
+        except (UnicodeDecodeError, OSError):
+            continue
+        for number, line in enumerate(text.splitlines(), 1):
+            for match in DOC_PATH.finditer(line):
+                yield os.path.relpath(path, root), number, match.group(0)
+
+
+def check_doc_paths(root):
+    problems = Problems()
+    count = 0
+    for where, number, path in named_doc_paths(root):
+        count += 1
+        if not os.path.isfile(os.path.join(root, path)):
+            problems.add(f"{where}:{number}: names {path}, which does not exist")
+    return problems.report(f"{count} mentions of docs/*.md, each an existing file")
+
+
+# ---------------------------------------------------------------- example outputs
+
+NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?")
+
+
+def table_cells(line):
+    """The cells of a markdown table row; an escaped \\| stays inside its cell."""
+    cells = re.split(r"(?<!\\)\|", line.strip())
+    return [cell.strip().replace("\\|", "|") for cell in cells[1:-1]]
+
+
+def quoted_outputs(readme):
+    """(line number, example name, [quoted outputs], machine dependent) per table row."""
+    for number, line, fenced in markdown_lines(readme):
+        if fenced or not line.startswith("| `"):
+            continue
+        cells = table_cells(line)
+        if len(cells) < 3:
+            continue
+        name = re.match(r"`([^`]+)`", cells[0]).group(1)
+        quotes = re.findall(r"`([^`]+)`", cells[-1])
+        yield number, name, quotes, "depend on the machine" in cells[-1]
+
+
+def output_pattern(quote, machine_dependent):
+    """A regular expression a printed line must match in full: the quote itself, or with
+    any number for its numbers (and any run of spaces for its own, which numbers of
+    another width move) where the figures depend on the machine; "..." stands for anything."""
+    parts = []
+    for piece in re.split(r"(\.\.\.)", quote):
+        if piece == "...":
+            parts.append(".*")
+            continue
+        if not machine_dependent:
+            parts.append(re.escape(piece))
+            continue
+        at = 0
+        for match in NUMBER.finditer(piece):
+            parts.append(re.sub(r"\\ (?:\\ )+", r"\\s+", re.escape(piece[at:match.start()])))
+            parts.append(r"[-+]?\d+(?:\.\d+)?")
+            at = match.end()
+        parts.append(re.sub(r"\\ (?:\\ )+", r"\\s+", re.escape(piece[at:])))
+    return re.compile("".join(parts))
+
+
+def check_example_outputs(root, runs, not_run):
+    import subprocess
+    problems = Problems()
+    readme_path = os.path.join(root, "examples", "README.md")
+    checked = 0
+    rows = list(quoted_outputs(read(readme_path)))
+    for number, name, quotes, machine_dependent in rows:
+        if name in not_run:
+            continue
+        if name not in runs:
+            problems.add(f"examples/README.md:{number}: quotes what {name} prints, but no run of it is checked: "
+                         "give it --run (or --not-run with the reason) in tests/docs/docs.cmake")
+            continue
+        try:
+            result = subprocess.run(runs[name], capture_output=True, text=True, timeout=120)
+        except (OSError, subprocess.TimeoutExpired) as error:
+            problems.add(f"examples/README.md:{number}: cannot run {name} ({' '.join(runs[name])}): {error}")
+            continue
+        printed = (result.stdout + result.stderr).splitlines()
+        if result.returncode != 0:
+            problems.add(f"examples/README.md:{number}: {name} exited with status {result.returncode}")
+        for quote in quotes:
+            checked += 1
+            pattern = output_pattern(quote, machine_dependent)
+            if not any(pattern.fullmatch(line.rstrip()) for line in printed):
+                import difflib
+                closest = next(iter(difflib.get_close_matches(quote, printed, n=1, cutoff=0.0)), None)
+                problems.add(f"examples/README.md:{number}: {name} does not print {quote!r}"
+                             + (f" (it prints {closest!r})" if closest else ""))
+    for name in list(runs) + list(not_run):
+        if name not in {row[1] for row in rows}:
+            problems.add(f"tests/docs/docs.cmake names the example {name}, which examples/README.md's table lacks")
+    return problems.report(f"{checked} quoted outputs of {len(runs)} examples printed by their runs "
+                           f"({len(not_run)} examples not run here: {', '.join(sorted(not_run))})")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--root", required=True)
-    parser.add_argument("--library")
-    parser.add_argument("check", choices=["header", "json_keys", "links", "readme_example"])
+    parser.add_argument("--table")
+    parser.add_argument("--run", action="append", default=[], metavar="NAME=COMMAND")
+    parser.add_argument("--not-run", nargs=2, action="append", default=[], metavar=("NAME", "REASON"))
+    parser.add_argument("check", choices=["header", "json_keys", "links", "doc_paths", "readme_example",
+                                          "example_outputs"])
     args = parser.parse_args()
     root = os.path.abspath(args.root)
     if args.check == "header":
         return check_header(root)
     if args.check == "json_keys":
-        return check_json_keys(root, args.library)
+        return check_json_keys(root, args.table)
     if args.check == "links":
         return check_links(root)
+    if args.check == "doc_paths":
+        return check_doc_paths(root)
+    if args.check == "example_outputs":
+        import shlex
+        runs = {name: shlex.split(command) for name, _, command in (run.partition("=") for run in args.run)}
+        return check_example_outputs(root, runs, dict(args.not_run))
     return check_readme_example(root)
 
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: arbitrary bytes decoded into a sequence of C API calls on one scene:
 // create (from a few base scenes, or from an ent_scene_desc with arbitrary numbers), then
 // up to 64 of: step with an arbitrary dt, add an obstacle, create / update / measure /

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The input of a libFuzzer target read as values, front to back: bytes, 32-bit integers,
 // and numbers near a typical value (most of the time) or edge values and raw bits (the
 // rest). Past the end every read gives zero, so any input is a complete program.

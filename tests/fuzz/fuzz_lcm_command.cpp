@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the LCM bridge's command path, bytes in, ticks run. A bridge without a
 // network (lcm_url "") on a 0.4 m bowel with one tool, with safety settings picked by the
 // first bytes (workspace scale, rotation, force scale, device limit, change limit, ramp),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: ent_scene_restore_state on damaged and forged saved states. A saved
 // state of a scene with self-contact, a floor and a grasping tool is the starting point;
 // the input either patches bytes of it (and may re-seal the checksum, so that the damage

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: arbitrary bytes as a JSON scene. Every input must give ENT_OK or a
 // status with a message, never a crash, a hang or a leak; a scene that is created is
 // stepped a little, so what the loader accepts the step must survive.

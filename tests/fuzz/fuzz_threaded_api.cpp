@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the C API from several threads at once, as a simulator uses it.
 //
 // The input drives the driving thread: one byte picks a base scene, then up to 48
@@ -12,8 +13,12 @@
 //     thread (a step the guard retries, an obstacle or a tool added), the log callback hands
 //     it a driving call of its own and waits for the answer, which must be ENT_ERROR_BUSY.
 // The background threads draw their calls from a generator seeded by the input. At the end
-// the driving thread stops the query, haptic and second-driver threads, destroys the scene,
-// and the render thread updates its skin a few more times.
+// come the races of a destroy with calls in flight (issue 27): a skin is destroyed while
+// another thread's update of it runs (seen in flight when the driving thread's own call on
+// the skin is refused as busy), and the scene is destroyed while the query and haptic
+// threads still call it: a call in flight finishes, a later one is refused as destroyed
+// (the render thread's skin keeps the handle); then they stop, and the render thread
+// updates its skin a few more times.
 //
 // Every call must return ENT_OK or its documented failure with a message; the driving
 // thread never sees ENT_ERROR_BUSY; every value read is finite; a failing step leaves the
@@ -148,18 +153,26 @@ private:
     bool asked_ = false, quit_ = false;
 };
 
+// A call refused because the scene was destroyed under its thread (the end of the input):
+// the thread stops calling.
+bool destroyed(ent_status status) {
+    return status == ENT_ERROR_INVALID_ARGUMENT && std::strstr(ent_last_error(), "destroyed") != nullptr;
+}
+
 void log_line(void* user, int32_t level, const char* message) {
     if (level < ENT_LOG_DEBUG || level > ENT_LOG_ERROR || message == nullptr) fail("a malformed log line");
     static_cast<SecondDriver*>(user)->overlap();
 }
 
-// A tool's feedback: one snapshot's, finite, never going back (per reader).
-void check_feedback(const ent_scene* scene, int32_t tool, uint64_t& last_steps) {
+// A tool's feedback: one snapshot's, finite, never going back (per reader). False once the
+// scene was destroyed.
+bool check_feedback(const ent_scene* scene, int32_t tool, uint64_t& last_steps) {
     ent_tool_feedback f;
     std::memset(&f, 0, sizeof f);
     f.struct_size = sizeof f;
     const ent_status status = ent_tool_read_feedback(scene, tool, &f);
-    if (status == ENT_ERROR_NOT_FOUND) return;  // no such tool (yet)
+    if (destroyed(status)) return false;
+    if (status == ENT_ERROR_NOT_FOUND) return true;  // no such tool (yet)
     check_status(status, false);
     if (status != ENT_OK) fail("ent_tool_read_feedback failed");
     if (!finite_all(f.force_N, 3) || !finite_all(f.torque_Nm, 3) || !std::isfinite(f.time_s))
@@ -167,6 +180,7 @@ void check_feedback(const ent_scene* scene, int32_t tool, uint64_t& last_steps) 
     if (f.grasping != 0 && f.grasping != 1) fail("grasping is neither 0 nor 1");
     if (f.steps < last_steps) fail("a tool's feedback went back in time");
     last_steps = f.steps;
+    return true;
 }
 
 void query_until(const ent_scene* scene, const std::atomic<bool>& stop, uint64_t seed) {
@@ -174,20 +188,27 @@ void query_until(const ent_scene* scene, const std::atomic<bool>& stop, uint64_t
     std::vector<double> points, axis(3 * 32);
     uint64_t last_steps = 0, last_tool_steps = 0;
     double last_time = -1.0;
+    // Each call may be the first after the destroy: refused as destroyed, it ends the loop.
     while (!stop.load()) {
         uint32_t count = 0;
-        check_status(ent_scene_control_points(scene, 0, nullptr, &count), false);
+        const ent_status counted = ent_scene_control_points(scene, 0, nullptr, &count);
+        if (destroyed(counted)) return;
+        check_status(counted, false);
         points.resize(3 * std::size_t{count});
         const ent_status copied = ent_scene_control_points(scene, count, points.data(), &count);
+        if (destroyed(copied)) return;
         check_status(copied, false);
         if (copied == ENT_OK && !finite_all(points.data(), points.size())) fail("a control point is not finite");
         const ent_status sampled = ent_scene_axis(scene, 32, axis.data());
+        if (destroyed(sampled)) return;
         check_status(sampled, false);
         if (sampled == ENT_OK && !finite_all(axis.data(), axis.size())) fail("an axis sample is not finite");
         ent_stats s;
         std::memset(&s, 0, sizeof s);
         s.struct_size = sizeof s;
-        check_status(ent_scene_stats(scene, &s), false);
+        const ent_status read = ent_scene_stats(scene, &s);
+        if (destroyed(read)) return;
+        check_status(read, false);
         if (!std::isfinite(s.time_s) || !std::isfinite(s.kinetic_energy_J) || !std::isfinite(s.potential_energy_J))
             fail("stats are not finite");
         if (s.steps < last_steps || s.time_s < last_time) fail("stats went back in time");
@@ -195,15 +216,19 @@ void query_until(const ent_scene* scene, const std::atomic<bool>& stop, uint64_t
         last_time = s.time_s;
         ent_effect_stats e;
         e.struct_size = sizeof e;
-        check_status(ent_scene_effect_stats(scene, static_cast<int32_t>(random() % ENT_EFFECT_COUNT), &e), false);
-        check_feedback(scene, 0, last_tool_steps);
+        const ent_status effect = ent_scene_effect_stats(scene, static_cast<int32_t>(random() % ENT_EFFECT_COUNT), &e);
+        if (destroyed(effect)) return;
+        check_status(effect, false);
+        if (!check_feedback(scene, 0, last_tool_steps)) return;
         double force[3], torque[3];
         int32_t grasping = -1;
         const int32_t tool = static_cast<int32_t>(random() % 3);
         const ent_status wrench = ent_tool_wrench(scene, tool, force, torque);
+        if (destroyed(wrench)) return;
         if (wrench != ENT_ERROR_NOT_FOUND) check_status(wrench, false);
         if (wrench == ENT_OK && (!finite_all(force, 3) || !finite_all(torque, 3))) fail("a wrench is not finite");
         const ent_status state = ent_tool_state(scene, tool, &grasping);
+        if (destroyed(state)) return;
         if (state != ENT_ERROR_NOT_FOUND) check_status(state, false);
     }
 }
@@ -226,10 +251,46 @@ void haptic_until(ent_scene* scene, const std::atomic<bool>& stop, uint64_t seed
                 break;
             }
         }
+        if (destroyed(status)) return;
         if (status != ENT_ERROR_NOT_FOUND) check_status(status, false);
-        check_feedback(scene, tool, last_steps[tool]);
+        if (!check_feedback(scene, tool, last_steps[tool])) return;
         std::this_thread::yield();
     }
+}
+
+// A skin destroyed while another thread's update of it runs. The driving thread asks for
+// the mesh until its call is refused as busy (the update is then in flight) and destroys the
+// skin at once; the update must still succeed. If the update ends first, the skin is
+// destroyed after it.
+void destroy_during_an_update(ent_scene* scene, int32_t method) {
+    ent_skin_desc desc;
+    ent_skin_desc_default(&desc);
+    desc.method = method;
+    ent_skin* skin = nullptr;
+    check_status(ent_skin_create(scene, &desc, &skin), false);
+    if (skin == nullptr) fail("a default skin was refused");
+    std::atomic<bool> finished{false};
+    ent_status updated = ENT_OK;
+    std::thread render([&] {
+        do updated = ent_skin_update(skin);
+        while (updated == ENT_ERROR_BUSY);  // the driving thread's ent_skin_mesh was running
+        finished = true;
+    });
+    bool gone = false;
+    while (!finished.load() && !gone) {
+        ent_mesh_view v;
+        std::memset(&v, 0, sizeof v);
+        v.struct_size = sizeof v;
+        const ent_status status = ent_skin_mesh(skin, &v);
+        check_status(status, true);
+        if (status == ENT_ERROR_BUSY) {
+            ent_skin_destroy(skin);
+            gone = true;
+        }
+    }
+    render.join();
+    if (!gone) ent_skin_destroy(skin);
+    if (updated != ENT_OK) fail("an update racing with the destroy of its skin failed");
 }
 
 // Owns a skin of the scene, updating it until told the scene is gone, then a few times more.
@@ -351,12 +412,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
     for (int op = 0; op < 48 && !in.empty(); ++op) drive(in, scene);
 
+    destroy_during_an_update(scene, static_cast<int32_t>(seed % 3));
+    second.stop();
+    while (!skin_made.load()) std::this_thread::yield();  // a slow render thread has not made its skin yet
+    ent_scene_destroy(scene);  // the query and haptic threads' calls in flight finish
     stop = true;
     query.join();
     haptic.join();
-    second.stop();
-    while (!skin_made.load()) std::this_thread::yield();  // a slow render thread has not made its skin yet
-    ent_scene_destroy(scene);
     scene_gone = true;
     render.join();
     return 0;

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the seed corpus of fuzz_api_sequence (tests/fuzz/corpus/api_sequence/).
 
 The target reads its input front to back: one byte picks the base scene (0-3, or 4 for an

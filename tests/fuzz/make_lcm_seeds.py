@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the seed corpus of fuzz_lcm_command (tests/fuzz/corpus/lcm_command/).
 
 The target reads its input front to back: a settings byte (bit 0: millimetres, 1: a turned

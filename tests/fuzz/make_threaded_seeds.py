@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the seed corpus of fuzz_threaded_api (tests/fuzz/corpus/threaded_api/).
 
 The driving thread reads the input front to back: one byte picks the base scene (0-2) and,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs a libFuzzer target's LLVMFuzzerTestOneInput on files, without libFuzzer: ctest uses
 // it to replay the seed corpus and every input that once crashed (tests/fuzz/regressions/)
 // in the ordinary and the sanitized builds.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* enteron.h must compile as strict C99 (-std=c99 -pedantic -Wall -Wextra -Werror). This file
  * also uses what the header declares, so that a declaration that only looks right fails. */
 #include <enteron/enteron.h>

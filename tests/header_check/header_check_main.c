@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Runs what the header-compile objects built: proof that both link and work. */
 #include <stdio.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // enteron.h must compile as C++17 with -pedantic -Wall -Wextra -Werror, inside and outside a
 // namespace-free translation unit, and declare its functions with C linkage.
 #include <enteron/enteron.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # lcm.spy: scripts/lcm-spy under Xvfb, in a network namespace made here, watching a live
 # enteron-lcm-server and the driver-side example over udpm. Passes when lcm-spy loads the
 # types jar (it prints how many LCM types it found: all of bindings/lcm) and decodes the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Sourced by the tests that use udpm (udpm_session.sh, lcm_spy.sh): runs the calling script
 # again inside a network namespace of its own (unshare -n) with the loopback up and the
 # multicast range routed to it, so that nothing the test sends can leave the namespace; or

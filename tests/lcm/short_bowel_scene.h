@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene of the bridge's tests, the fuzzer and the probe (also
 // examples/lcm/scenes/short_bowel.json, which the server tests load): a 0.4 m bowel along x
 // on the floor of a box (z = 0), a tool with max_force 5 N starting 6 cm above its middle.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # lcm.udpm_session: enteron-lcm-server as a separate process over udpm, in a network
 # namespace made here (nothing can leave it), with the driver-side example as the device
 # (examples/lcm/haptic_device.c, millimetres mapped by --workspace-scale 0.001):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Counting replacements of the C allocation functions for the no-allocation test. They forward
  * to glibc's own implementations (__libc_malloc and friends), so they can be defined in the
  * executable and interpose malloc for every shared library of the process, libenteron.so and

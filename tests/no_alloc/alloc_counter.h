@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* The allocation counter shared by alloc_counter.c (malloc and friends) and no_alloc.cpp
  * (operator new and delete). */
 #ifndef ENTERON_TESTS_ALLOC_COUNTER_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every global operator new and delete of C++17 replaced by counting ones (alloc_counter.h),
 // for the no-allocation tests; alloc_counter.c does the same for malloc and friends.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Prints where the first counted allocations came from (alloc_counter.h), for a failing
 // no-allocation test: the return address and, when the dynamic linker knows it, the symbol
 // and the object file. (Code of the library's hidden functions shows the object and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Allocates nothing after the first step": the default scene (ent_scene_desc_default plus
 // mesentery, damping and self-collision, in a box, with a tool) under each integrator (6 m
 // for implicit Euler, 1 m for the explicit ones, which need many substeps with contacts), with every global allocation function of the
@@ -152,7 +153,7 @@ void run(int32_t integrator, const char* name, double length_m, uint32_t control
 // Moving anatomy (issue 20): a 1 m bowel in a box with an organ mesh (a closed box of 12
 // triangles) that the caller lifts into it at every step, a pin and the mesentery's root on
 // that organ, its velocity and friction given and gravity tilted between steps, and the
-// obstacle queries a renderer makes.
+// obstacle queries a renderer makes, and the exposure query of the organ's surface.
 void run_moving_anatomy() {
     const char* name = "implicit_euler";
     ent_scene_desc desc;
@@ -181,11 +182,29 @@ void run_moving_anatomy() {
     organ.mesh_triangle_count = 12;
     organ.position_m[0] = 0.1;
     int32_t organ_id = -1;
-    const bool made = check(ent_scene_add_obstacle(scene, &box, nullptr), "ent_scene_add_obstacle") &&
-                      check(ent_scene_add_obstacle(scene, &organ, &organ_id), "ent_scene_add_obstacle (mesh)") &&
-                      check(ent_scene_pin_point(scene, desc.control_points - 1, organ_id), "ent_scene_pin_point") &&
-                      check(ent_scene_attach_mesentery(scene, organ_id), "ent_scene_attach_mesentery") &&
-                      check(ent_scene_step(scene, 1e-3), "first ent_scene_step");
+    bool made = check(ent_scene_add_obstacle(scene, &box, nullptr), "ent_scene_add_obstacle") &&
+                check(ent_scene_add_obstacle(scene, &organ, &organ_id), "ent_scene_add_obstacle (mesh)") &&
+                check(ent_scene_pin_point(scene, desc.control_points - 1, organ_id), "ent_scene_pin_point") &&
+                check(ent_scene_attach_mesentery(scene, organ_id), "ent_scene_attach_mesentery") &&
+                check(ent_scene_step(scene, 1e-3), "first ent_scene_step");
+    // The organ's surface as a target for the exposure query, seen from above.
+    ent_exposure_desc target;
+    ent_exposure_desc_default(&target);
+    target.points_xyz_m = vertices;
+    target.point_count = 8;
+    target.triangles = triangles;
+    target.triangle_count = 12;
+    target.obstacle = organ_id;
+    ent_exposure* exposure = nullptr;
+    double spans[2 * 8], seen[12];
+    ent_exposure_result exposed;
+    std::memset(&exposed, 0, sizeof exposed);
+    exposed.struct_size = sizeof exposed;
+    exposed.span_capacity = 8;
+    exposed.spans_u = spans;
+    exposed.element_visible = seen;
+    const double eye[3] = {0.0, 0.0, 0.4};
+    if (made && !check(ent_exposure_create(scene, &target, &exposure), "ent_exposure_create")) made = false;
     if (made) {
         double position[3] = {0.1, 0.0, 0.0}, orientation[4] = {1.0, 0.0, 0.0, 0.0};
         const double linear[3] = {0.0, 0.0, 0.1}, angular[3] = {0.0, 0.0, 0.0};
@@ -202,10 +221,11 @@ void run_moving_anatomy() {
                  (i < 100 || check(ent_scene_set_gravity(scene, tilted), "ent_scene_set_gravity")) &&
                  check(ent_scene_step(scene, 1e-3), "ent_scene_step") &&
                  check(ent_obstacle_pose(scene, organ_id, position, orientation), "ent_obstacle_pose") &&
-                 check(ent_scene_obstacle_count(scene, &count), "ent_scene_obstacle_count");
+                 check(ent_scene_obstacle_count(scene, &count), "ent_scene_obstacle_count") &&
+                 check(ent_scene_exposure(scene, exposure, eye, &exposed), "ent_scene_exposure");
         }
         const unsigned long in_steps = alloc_counter_stop();
-        if (ok) report("200 steps, moving mesh organ", name, in_steps);
+        if (ok) report("200 steps, moving mesh organ, exposure", name, in_steps);
         // Friction and pins change the stability bounds and the mass matrix's factor, so
         // they allocate (between steps, rarely); the steps after them do not.
         ok = ok && check(ent_obstacle_set_friction(scene, organ_id, 0.5), "ent_obstacle_set_friction") &&
@@ -216,6 +236,7 @@ void run_moving_anatomy() {
         const unsigned long after = alloc_counter_stop();
         if (ok) report("50 steps after unpinning", name, after);
     }
+    ent_exposure_destroy(exposure);
     ent_scene_destroy(scene);
 }
 

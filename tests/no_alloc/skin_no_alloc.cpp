@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "After the first updates it allocates only when the mesh grows beyond any size it had
 // before" (ent_skin_update in enteron.h): the demo's 6 m bowel dropped into the abdominal
 // cavity (self-collision, mesentery, box), moving for 2 simulated seconds, skinned every

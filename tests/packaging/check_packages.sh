@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks the Debian packages that cpack made (scripts/package, ctest packaging.debs), the
 # way a user who installs them would meet them:
 #   1. exactly the expected packages are there, one file each;

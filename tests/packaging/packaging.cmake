@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest packaging.debs (label "package"): cpack makes the Debian packages of this build
 # tree into a scratch directory, then check_packages.sh checks their names, dependencies
 # and lintian, and builds the C consumer against them unpacked. Included from
@@ -22,3 +23,19 @@ set_tests_properties(packaging.debs PROPERTIES
   # cpack installs every component of the build tree, as the consumer tests do.
   RESOURCE_LOCK enteron_install
   ENVIRONMENT "CMAKE=${CMAKE_COMMAND};CC=${CMAKE_C_COMPILER};PKG_CONFIG=${ENTERON_PKG_CONFIG};CMAKE_GENERATOR=${CMAKE_GENERATOR}")
+
+# ctest packaging.bindings (label "package"): the packages packaging.debs made, python3-enteron
+# and libenteron-cil with libenteron0, installed into a scratch root laid over /usr in a mount
+# namespace of its own and used there (check_bindings.sh); skipped where no mount namespace
+# can be made.
+if(ENTERON_PYTHON_BINDING AND ENTERON_CSHARP_BINDING)
+  set_tests_properties(packaging.debs PROPERTIES FIXTURES_SETUP enteron_debs)
+  add_test(NAME packaging.bindings
+    COMMAND ${ENTERON_BASH} "${CMAKE_CURRENT_LIST_DIR}/check_bindings.sh"
+            --packages "${_enteron_packaging_work}/packages" --work-dir "${_enteron_packaging_work}/bindings")
+  set_tests_properties(packaging.bindings PROPERTIES
+    LABELS "package;install;python;csharp"
+    TIMEOUT 300
+    FIXTURES_REQUIRED enteron_debs
+    SKIP_RETURN_CODE 77)
+endif()

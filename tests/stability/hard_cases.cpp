@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hard cases. Each builds its scene through the public C API (JSON, or ent_scene_desc
 // where the control points are computed) and states its bounds; stability_run.cpp checks them.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hard cases of the stability suite (see hard_cases.cpp for each one and its bounds).
 #pragma once
 

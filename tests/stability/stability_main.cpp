@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // enteron_stability: runs hard cases of the stability suite and prints their table.
 //
 //   enteron_stability CASE [--seconds S]   run one case for S simulated seconds (default 30)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability suite's run loop: steps one hard case through the public C API for a given
 // simulated time and checks, after every step, what "stays numerically stable" means:
 //   - every step returns ENT_OK (the guard may roll back and subdivide, but must recover);

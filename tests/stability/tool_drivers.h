@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tool hard cases' drivers: a tool sweeping back and forth through the bowel, a grasp
 // yanked far past the tool's max_force, a tool teleported inside the bowel. Each drives
 // tool 0 of its scene (vertical: identity orientation) and accounts for its work.

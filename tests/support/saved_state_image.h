@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A saved state's header and checksum as the tests see them (docs/scoring-and-state.md,
 // "The image"), so that a test or a fuzzer can change a value in a saved state and re-seal
 // it: the checksum then matches and the damage reaches the check of that value. Written out

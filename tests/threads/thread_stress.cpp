@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Thread stress test of the documented thread model: one thread steps a scene at full speed
 // while reader threads query the last published state, for a given wall time. Run under
 // ThreadSanitizer by scripts/test (preset `tsan`), where a data race fails it.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # viewer.remote_lcm: enteron-viewer --lcm shows a running enteron-lcm-server and drives its
 # tool (docs/viewer.md, "A remote session"). Real processes over udpm, inside a network
 # namespace made here (nothing can leave it); exit 77 (ctest: skipped) where one cannot be

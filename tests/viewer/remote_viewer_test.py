@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """viewer.remote_lcm (run by remote_viewer.sh inside a network namespace of its own).
 
 enteron-lcm-server runs the short bowel over udpm (its device speaks millimetres:

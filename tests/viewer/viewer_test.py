@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Tests of enteron-viewer (docs/viewer.md), run by ctest (label "viewer").
 
 The window tests run the viewer under an Xvfb server of their own (software rendering
@@ -195,6 +196,26 @@ class ViewerTest(unittest.TestCase):
             top[name] = numpy.percentile(numpy.nonzero(liver)[0], 2)  # its top edge (the bowel may hide its foot)
         # 4 cm up is about 20 pixels at this distance and size; the image's rows grow downwards.
         self.assertGreater(top["before"] - top["after"], 8.0, "the liver did not move up: top rows %s" % top)
+
+    def test_headless_laparoscope(self):
+        """--laparoscope (and key V) look through the 30-degree scope from the umbilical port:
+        a round field on black, the bowel's pink inside it, lit from the tip; V goes back to
+        the orbit camera (the grey background again) and forward to the scope."""
+        script = self.write("scope.txt", "\n".join([
+            "0.5 screenshot scope.png", "0.6 key V", "1.0 screenshot orbit.png", "1.1 key V",
+            "1.5 screenshot scope_again.png", ""]))
+        status, out, err = self.run_viewer([ABDOMEN, "--headless", "--laparoscope", "--seconds", "1.6", "--fps", "10",
+                                            "--size", "640x360", "--ui", "none", "--script", script], window=False)
+        self.assertEqual(status, 0, err)
+        height, width = 360, 640
+        rows, columns = numpy.mgrid[0:height, 0:width]
+        outside = numpy.hypot(columns + 0.5 - width / 2, rows + 0.5 - height / 2) > 0.55 * height + 2
+        for name in ("scope.png", "scope_again.png"):
+            rgb, pink, _, _ = colour_classes(self.path(name))
+            self.assertLess(rgb[outside].max(), 0.02, "%s: not black outside the scope's round field" % name)
+            self.assertGreater(pink[~outside].mean(), 0.15, "%s: too little bowel in the scope's field" % name)
+        rgb, _, _, _ = colour_classes(self.path("orbit.png"))
+        self.assertGreater(rgb[:20, :20].mean(), 0.03, "key V did not go back to the orbit camera")
 
     def test_bad_scene_headless(self):
         """A scene file the library refuses: the message naming the key, exit status 1,

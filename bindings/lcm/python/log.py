@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Reads LCM log files -- lcm-logger's recordings and the bridge's journal -- and decodes
 Enteron's messages with the Python types lcm-gen makes from bindings/lcm (the package
 enteron_lcm.enteron, built next to this module). Debian has no `lcm` Python module; the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Enteron: a real-time model of the human small intestine, from Python.
 
 A ctypes binding of the C API of libenteron (no compile step). Quick start:
@@ -37,6 +38,7 @@ from .scene import (CONTACT_DTYPE, CONTACT_OBSTACLE, CONTACT_SELF, CONTACT_TOOL,
                     OBSTACLE_PLANE, OBSTACLE_SPHERE,
                     PIN_BOTH, PIN_FIRST, PIN_LAST, PIN_NONE, SHAPE_HELIX, SHAPE_LINE, SHAPE_POINTS, SHAPE_SERPENTINE,
                     EffectStats, Scene, SceneDesc, Stats, effect_name)
+from .exposure import Exposure, ExposureResult
 from .skin import SKIN_CONVOLUTION, SKIN_POINT_SKELETON, SKIN_TUBE, Mesh, Skin, SkinMetrics
 from .tool import TOOL_MODE_DIRECT, TOOL_MODE_PROXY, Tool, ToolContacts, ToolFeedback, ToolStats, Wrench
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Numpy arrays of what the library hands over: always arrays that own their memory.
 
 The C API copies the axis and the control points into the caller's memory: the binding

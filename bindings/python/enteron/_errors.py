@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """enteron.Error and the status codes of the C API."""
 from ._library import lib
 

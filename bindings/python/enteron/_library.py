@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Finds and loads libenteron, declares the C functions, checks the version.
 
 Search order for the library:
@@ -13,6 +14,7 @@ import glob
 import operator
 import os
 
+from . import _fields
 from . import _structs as s
 
 # The major version this binding speaks; the loaded library must have the same.
@@ -65,13 +67,14 @@ _scene_p = ctypes.c_void_p
 _double_p = ctypes.POINTER(ctypes.c_double)
 
 
-def _checked_integer(base, label, low, high):
+def _checked_integer(base):
     """A ctypes argument type that refuses a Python integer out of base's range (ctypes
     alone would silently keep its low bits: 2**32 + 1 would become 1)."""
     class Checked(base):
         @classmethod
         def from_param(cls, value):
             number = operator.index(value)
+            low, high, label = _fields.bounds(base)
             if not low <= number <= high:
                 raise OverflowError("%d is out of range for %s [%d, %d]" % (number, label, low, high))
             return base(number)
@@ -79,8 +82,7 @@ def _checked_integer(base, label, low, high):
     return Checked
 
 
-_CHECKED = {ctypes.c_int32: _checked_integer(ctypes.c_int32, "int32_t", -2**31, 2**31 - 1),
-            ctypes.c_uint32: _checked_integer(ctypes.c_uint32, "uint32_t", 0, 2**32 - 1)}
+_CHECKED = {ctypes.c_int32: _checked_integer(ctypes.c_int32), ctypes.c_uint32: _checked_integer(ctypes.c_uint32)}
 
 
 def _declare(name, restype, *argtypes):
@@ -141,6 +143,11 @@ _declare("ent_tool_stiffness", _status, _scene_p, ctypes.c_int32, ctypes.POINTER
 _declare("ent_tool_read_stats", _status, _scene_p, ctypes.c_int32, ctypes.POINTER(s.ent_tool_stats))
 _declare("ent_tool_remove", _status, _scene_p, ctypes.c_int32)
 _declare("ent_scene_tool_count", _status, _scene_p, ctypes.POINTER(ctypes.c_int32))
+_exposure_p = ctypes.c_void_p
+_declare("ent_exposure_desc_init", _status, ctypes.POINTER(s.ent_exposure_desc), ctypes.c_uint32)
+_declare("ent_exposure_create", _status, _scene_p, ctypes.POINTER(s.ent_exposure_desc), ctypes.POINTER(_exposure_p))
+_declare("ent_exposure_destroy", None, _exposure_p)
+_declare("ent_scene_exposure", _status, _scene_p, _exposure_p, _double_p, ctypes.POINTER(s.ent_exposure_result))
 _skin_p = ctypes.c_void_p
 _declare("ent_skin_desc_init", _status, ctypes.POINTER(s.ent_skin_desc), ctypes.c_uint32)
 _declare("ent_skin_create", _status, _scene_p, ctypes.POINTER(s.ent_skin_desc), ctypes.POINTER(_skin_p))

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """ctypes mirrors of the structs in include/enteron/enteron.h (this binding's header: 0.1).
 
 Every struct starts with struct_size, so a newer library serves this layout unchanged
@@ -217,6 +218,7 @@ class ent_tool_feedback(ctypes.Structure):
         ("proxy_position_m", _vec3),
         ("commanded_position_m", _vec3),
         ("orientation_wxyz", ctypes.c_double * 4),
+        ("saturated", ctypes.c_int32),
     ]
 
 
@@ -283,6 +285,37 @@ class ent_tool_contacts(ctypes.Structure):
     ]
 
 
+class ent_exposure_desc(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("points_xyz_m", ctypes.POINTER(ctypes.c_double)),
+        ("point_count", ctypes.c_uint32),
+        ("triangles", ctypes.POINTER(ctypes.c_uint32)),
+        ("triangle_count", ctypes.c_uint32),
+        ("weights", ctypes.POINTER(ctypes.c_double)),
+        ("samples_per_edge", ctypes.c_uint32),
+        ("obstacle", ctypes.c_int32),
+        ("axis_chords_per_segment", ctypes.c_uint32),
+    ]
+
+
+class ent_exposure_result(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("span_capacity", ctypes.c_uint32),
+        ("spans_u", ctypes.POINTER(ctypes.c_double)),
+        ("span_hidden_fractions", ctypes.POINTER(ctypes.c_double)),
+        ("span_intestines", ctypes.POINTER(ctypes.c_int32)),
+        ("element_visible", ctypes.POINTER(ctypes.c_double)),
+        ("visible_fraction", ctypes.c_double),
+        ("span_count", ctypes.c_uint32),
+        ("samples", ctypes.c_uint32),
+        ("hidden_samples", ctypes.c_uint32),
+        ("time_s", ctypes.c_double),
+        ("steps", ctypes.c_uint64),
+    ]
+
+
 ALL = (ent_callbacks, ent_scene_desc, ent_stats, ent_effect_stats, ent_obstacle_desc, ent_tool_desc,
        ent_tool_feedback, ent_tool_stats, ent_skin_desc, ent_mesh_view, ent_skin_metrics, ent_contact,
-       ent_contact_summary, ent_tool_contacts)
+       ent_contact_summary, ent_tool_contacts, ent_exposure_desc, ent_exposure_result)

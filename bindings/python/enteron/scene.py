@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Scenes: create, step, query. A Scene owns its ent_scene handle; close it (or use it as a
 context manager) to release it at a known time rather than at garbage collection."""
 import ctypes
@@ -8,6 +9,7 @@ import weakref
 import numpy as np
 
 from . import _buffers
+from . import _fields
 from . import _structs as s
 from ._errors import ERROR_BUFFER_TOO_SMALL, Error, check
 from ._handle import OwnedHandle
@@ -106,9 +108,9 @@ def _mesh_arrays(desc, vertices, triangles):
         raise ValueError("triangles must hold vertex indices from 0 (integers that fit 32 bits)")
     t = np.ascontiguousarray(t, dtype=np.uint32)
     desc.mesh_vertices_xyz_m = v.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
-    desc.mesh_vertex_count = v.shape[0]
+    desc.mesh_vertex_count = _fields.checked_integer(ctypes.c_uint32, v.shape[0], "the vertex count of vertices")
     desc.mesh_triangles = t.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32))
-    desc.mesh_triangle_count = t.shape[0]
+    desc.mesh_triangle_count = _fields.checked_integer(ctypes.c_uint32, t.shape[0], "the triangle count of triangles")
     desc._arrays = (v, t)
 
 
@@ -146,9 +148,13 @@ class SceneDesc:
     gravity_m_per_s2=(0, 0, -9.81), integrator=enteron.INTEGRATOR_RK4). Also:
       effects             a bit mask, or an iterable of effect numbers or names
                           ({"gravity", "stretch"}); default: stretch, bend, damping, gravity
-      shape_points_xyz_m  an (n, 3) array-like (sets shape to SHAPE_POINTS and control_points)
-      pinned_points       an iterable of control point indices
-    The arrays are copied and kept with the description until the scene is created."""
+      shape_points_xyz_m  an (n, 3) array-like (sets shape to SHAPE_POINTS, control_points to
+                          n: a control_points given too must be n, and length_m to 0, the
+                          length of the spline through them, unless length_m is given)
+      pinned_points       an iterable of control point indices (sets pinned_point_count)
+    The arrays are copied and kept with the description until the scene is created. The
+    count of an array always comes from the array; an integer field that its C type cannot
+    hold (control_points=2**32 + 10) raises OverflowError naming the field, never wraps."""
 
     _ARRAYS = ("shape_points_xyz_m", "pinned_points")
 
@@ -157,11 +163,12 @@ class SceneDesc:
         check(lib.ent_scene_desc_init(ctypes.byref(self.struct), ctypes.sizeof(self.struct)),
               "ent_scene_desc_init")
         self._keep = {}
+        self._given = set()
         for name, value in fields.items():
             setattr(self, name, value)
 
     def __setattr__(self, name, value):
-        if name in ("struct", "_keep"):
+        if name in ("struct", "_keep", "_given"):
             object.__setattr__(self, name, value)
             return
         known = {field[0] for field in s.ent_scene_desc._fields_} - {"struct_size", "callbacks", "pinned_point_count"}
@@ -173,14 +180,25 @@ class SceneDesc:
                 mask |= 1 << effect_number(effect)
             value = mask
         if name == "shape_points_xyz_m":
-            points = np.ascontiguousarray(value, dtype=np.float64).reshape(-1, 3)
+            points = np.ascontiguousarray(value, dtype=np.float64)
+            if points.ndim != 2 or points.shape[1] != 3:
+                if points.ndim != 1 or points.size % 3:
+                    raise ValueError("SceneDesc.shape_points_xyz_m must be an (n, 3) array of x y z in m, "
+                                     "got shape %s" % (points.shape,))
+                points = points.reshape(-1, 3)
+            count = _fields.checked_integer(ctypes.c_uint32, len(points), "the point count of shape_points_xyz_m")
+            if "control_points" in self._given and self.struct.control_points != count:
+                raise ValueError(self._disagreement(self.struct.control_points, count))
             self._keep[name] = points
             self.struct.shape_points_xyz_m = points.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
             self.struct.shape = SHAPE_POINTS
-            self.struct.control_points = len(points)
+            self.struct.control_points = count
+            if "length_m" not in self._given:
+                self.struct.length_m = 0.0  # the length of the spline through them: it starts at rest
             return
         if name == "pinned_points":
-            indices = np.ascontiguousarray(list(value), dtype=np.uint32)
+            indices = np.array([_fields.checked_integer(ctypes.c_uint32, index, "SceneDesc.pinned_points[%d]" % n)
+                                for n, index in enumerate(value)], dtype=np.uint32)
             self._keep[name] = indices
             self.struct.pinned_points = indices.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32))
             self.struct.pinned_point_count = len(indices)
@@ -190,8 +208,35 @@ class SceneDesc:
             if len(value) != len(target):
                 raise ValueError("%s needs %d values, got %d" % (name, len(target), len(value)))
             target[:] = [float(v) for v in value]
-        else:
-            setattr(self.struct, name, value)
+            return
+        if name == "control_points" and "shape_points_xyz_m" in self._keep:
+            count = _fields.checked_integer(ctypes.c_uint32, value, "SceneDesc.control_points")
+            if count != len(self._keep["shape_points_xyz_m"]):
+                raise ValueError(self._disagreement(count, len(self._keep["shape_points_xyz_m"])))
+        _fields.set_field(self.struct, name, value, "SceneDesc." + name)
+        self._given.add(name)
+
+    @staticmethod
+    def _disagreement(control_points, points):
+        return ("SceneDesc.control_points is %d but shape_points_xyz_m holds %d points: a points shape "
+                "takes its count from its array (leave control_points out)" % (control_points, points))
+
+    def _checked_struct(self):
+        """The struct, once its (pointer, count) pairs are seen to match the arrays kept: a
+        change made to .struct directly cannot make the library read past an array."""
+        points = self._keep.get("shape_points_xyz_m")
+        if self.struct.shape == SHAPE_POINTS and points is not None:
+            if self.struct.control_points != len(points):
+                raise ValueError(self._disagreement(self.struct.control_points, len(points)))
+            if ctypes.cast(self.struct.shape_points_xyz_m, ctypes.c_void_p).value != points.ctypes.data:
+                raise ValueError("SceneDesc.struct.shape_points_xyz_m was changed behind the description: "
+                                 "set shape_points_xyz_m instead")
+        indices = self._keep.get("pinned_points", np.zeros(0, dtype=np.uint32))
+        pointer = ctypes.cast(self.struct.pinned_points, ctypes.c_void_p).value
+        if self.struct.pinned_point_count != len(indices) or (len(indices) and pointer != indices.ctypes.data):
+            raise ValueError("SceneDesc.pinned_point_count is %d but pinned_points holds %d indices: set "
+                             "pinned_points instead" % (self.struct.pinned_point_count, len(indices)))
+        return self.struct
 
     def __getattr__(self, name):
         if name.startswith("_") or name == "struct":
@@ -260,7 +305,8 @@ class Scene(OwnedHandle):
     anatomy).
     Failures raise enteron.Error. Threads: as in C, one thread drives (step, add_*, the
     moving anatomy's calls, every Tool call) while others query (axis, control_points,
-    stats, effect_stats, obstacle_pose, obstacle_count).
+    stats, effect_stats, obstacle_pose, obstacle_count); close() may come from any thread at
+    any time (the calls in flight finish, later ones raise ValueError).
     """
 
     def __init__(self, description=None, *, desc=None, file=None, log=None):
@@ -281,8 +327,9 @@ class Scene(OwnedHandle):
         if desc is not None:
             if not isinstance(desc, SceneDesc):
                 desc = SceneDesc(**desc)
-            desc.struct.callbacks = ctypes.pointer(self._callbacks) if self._callbacks is not None else None
-            check(lib.ent_scene_create(ctypes.byref(desc.struct), ctypes.byref(handle)), "ent_scene_create")
+            struct = desc._checked_struct()
+            struct.callbacks = ctypes.pointer(self._callbacks) if self._callbacks is not None else None
+            check(lib.ent_scene_create(ctypes.byref(struct), ctypes.byref(handle)), "ent_scene_create")
         elif file is not None:
             callbacks = ctypes.byref(self._callbacks) if self._callbacks is not None else None
             check(lib.ent_scene_create_json_file(str(file).encode(), callbacks, ctypes.byref(handle)),
@@ -294,24 +341,38 @@ class Scene(OwnedHandle):
             callbacks = ctypes.byref(self._callbacks) if self._callbacks is not None else None
             check(lib.ent_scene_create_json_with(text, len(text), callbacks, ctypes.byref(handle)),
                   "ent_scene_create_json")
-        self._handle = handle
+        self._own(handle, lib.ent_scene_destroy)
         self._count = self._control_point_count()
         self._tool_count = self._count_tools() if desc is None else 0
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
-        """Destroys the scene (ent_scene_destroy), after closing its skins. Idempotent; later
-        calls raise ValueError."""
-        handle, self._handle = getattr(self, "_handle", None), None
-        if handle:
-            for skin in list(getattr(self, "_skins", ())):
-                skin.close()
-            lib.ent_scene_destroy(handle)
+        """Destroys the scene (ent_scene_destroy) and closes its skins. Idempotent; later
+        calls raise ValueError. Any thread: calls running on other threads (a step, a query,
+        a save) finish, the scene goes as the last of them returns, and their next calls
+        raise ValueError."""
+        super().close()  # first: a skin made from now on is refused (_adopt)
+        lock = getattr(self, "_lock", None)
+        if lock is None:
+            return
+        with lock:
+            skins = list(self._skins)
+        for skin in skins:
+            skin.close()
+
+    def _adopt(self, skin):
+        """Keeps a new skin, to be closed with the scene; False if the scene was closed
+        while the skin was being made (another thread's close)."""
+        with self._lock:
+            if not self._handle:
+                return False
+            self._skins.add(skin)
+            return True
 
     # ---- driving --------------------------------------------------------------------------
     def step(self, dt_s):
         """Advances by dt_s seconds (ent_scene_step)."""
-        check(lib.ent_scene_step(self._live(), dt_s), "ent_scene_step")
+        check(self._call(lib.ent_scene_step, dt_s), "ent_scene_step")
 
     def add_obstacle(self, kind, **keys):
         """Adds a rigid obstacle (ent_scene_add_obstacle) and returns its index. kind (a name
@@ -324,40 +385,40 @@ class Scene(OwnedHandle):
         between steps."""
         desc = obstacle_desc(kind, **keys)
         index = ctypes.c_int32(-1)
-        check(lib.ent_scene_add_obstacle(self._live(), ctypes.byref(desc), ctypes.byref(index)),
+        check(self._call(lib.ent_scene_add_obstacle, ctypes.byref(desc), ctypes.byref(index)),
               "ent_scene_add_obstacle")
         return index.value
 
     def remove_obstacle(self, obstacle):
         """Removes an obstacle from the next step on (ent_scene_remove_obstacle); the others
         keep their indices."""
-        check(lib.ent_scene_remove_obstacle(self._live(), obstacle), "ent_scene_remove_obstacle")
+        check(self._call(lib.ent_scene_remove_obstacle, obstacle), "ent_scene_remove_obstacle")
 
     def set_obstacle_pose(self, obstacle, position, orientation=(1.0, 0.0, 0.0, 0.0)):
         """Moves an obstacle's frame (ent_obstacle_set_pose): reached at the end of the next
         step, moving within it; position in m, orientation (w, x, y, z)."""
-        check(lib.ent_obstacle_set_pose(self._live(), obstacle, _numbers(position, 3, "position"),
+        check(self._call(lib.ent_obstacle_set_pose, obstacle, _numbers(position, 3, "position"),
                                         _numbers(orientation, 4, "orientation")), "ent_obstacle_set_pose")
 
     def set_obstacle_velocity(self, obstacle, linear, angular=(0.0, 0.0, 0.0)):
         """The velocity the obstacle's contacts see in the next step (ent_obstacle_set_velocity):
         linear of its origin in m/s, angular in rad/s."""
-        check(lib.ent_obstacle_set_velocity(self._live(), obstacle, _numbers(linear, 3, "linear"),
+        check(self._call(lib.ent_obstacle_set_velocity, obstacle, _numbers(linear, 3, "linear"),
                                             _numbers(angular, 3, "angular")), "ent_obstacle_set_velocity")
 
     def set_obstacle_friction(self, obstacle, friction):
         """An obstacle's Coulomb friction coefficient (>= 0; negative: the scene's)."""
-        check(lib.ent_obstacle_set_friction(self._live(), obstacle, float(friction)), "ent_obstacle_set_friction")
+        check(self._call(lib.ent_obstacle_set_friction, obstacle, float(friction)), "ent_obstacle_set_friction")
 
     def obstacle_mesh(self, obstacle):
         """A mesh obstacle's (vertices (n, 3) in m in its frame, triangles (m, 3) uint32):
         copies (ent_obstacle_mesh). Between steps, from the driving thread."""
         vertex_count, triangle_count = ctypes.c_uint32(), ctypes.c_uint32()
-        check(lib.ent_obstacle_mesh(self._live(), obstacle, 0, None, ctypes.byref(vertex_count), 0, None,
+        check(self._call(lib.ent_obstacle_mesh, obstacle, 0, None, ctypes.byref(vertex_count), 0, None,
                                     ctypes.byref(triangle_count)), "ent_obstacle_mesh")
         vertices, vertex_pointer = _buffers.new_array(vertex_count.value, 3)
         triangles = np.zeros((triangle_count.value, 3), dtype=np.uint32)
-        check(lib.ent_obstacle_mesh(self._live(), obstacle, vertex_count.value, vertex_pointer,
+        check(self._call(lib.ent_obstacle_mesh, obstacle, vertex_count.value, vertex_pointer,
                                     ctypes.byref(vertex_count), triangle_count.value,
                                     triangles.ctypes.data_as(ctypes.POINTER(ctypes.c_uint32)),
                                     ctypes.byref(triangle_count)), "ent_obstacle_mesh")
@@ -365,28 +426,28 @@ class Scene(OwnedHandle):
 
     def set_gravity(self, gravity_m_per_s2):
         """Gravity from the next step on, m/s^2 (ent_scene_set_gravity): a table tilt."""
-        check(lib.ent_scene_set_gravity(self._live(), _numbers(gravity_m_per_s2, 3, "gravity")),
+        check(self._call(lib.ent_scene_set_gravity, _numbers(gravity_m_per_s2, 3, "gravity")),
               "ent_scene_set_gravity")
 
     def pin_point(self, control_point, obstacle=NO_OBSTACLE):
         """Holds a control point where it is, in the world or on an obstacle's frame
         (ent_scene_pin_point)."""
-        check(lib.ent_scene_pin_point(self._live(), control_point, obstacle), "ent_scene_pin_point")
+        check(self._call(lib.ent_scene_pin_point, control_point, obstacle), "ent_scene_pin_point")
 
     def unpin_point(self, control_point):
         """Lets a pinned control point go (ent_scene_unpin_point)."""
-        check(lib.ent_scene_unpin_point(self._live(), control_point), "ent_scene_unpin_point")
+        check(self._call(lib.ent_scene_unpin_point, control_point), "ent_scene_unpin_point")
 
     def attach_mesentery(self, obstacle=NO_OBSTACLE):
         """Fixes the mesentery's root to an obstacle's frame, or to the world
         (ent_scene_attach_mesentery)."""
-        check(lib.ent_scene_attach_mesentery(self._live(), obstacle), "ent_scene_attach_mesentery")
+        check(self._call(lib.ent_scene_attach_mesentery, obstacle), "ent_scene_attach_mesentery")
 
     def attach_clamped_end(self, ends, obstacle=NO_OBSTACLE):
         """Fixes clamped ends (PIN_FIRST, PIN_LAST or PIN_BOTH; the scene's clamped_ends) to
         an obstacle's frame, or to the world: the end point and its tangent's direction move
         with the obstacle from where they are now (ent_scene_attach_clamped_end)."""
-        check(lib.ent_scene_attach_clamped_end(self._live(), ends, obstacle), "ent_scene_attach_clamped_end")
+        check(self._call(lib.ent_scene_attach_clamped_end, ends, obstacle), "ent_scene_attach_clamped_end")
 
     def add_tool(self, *, position=(0.0, 0.0, 0.0), orientation=(1.0, 0.0, 0.0, 0.0), **settings):
         """Adds a surgical tool (ent_tool_add) and returns its enteron.Tool. Keywords, SI
@@ -400,7 +461,7 @@ class Scene(OwnedHandle):
         The first tool turns the tools effect on. Allocates: call it between steps."""
         desc = tool_desc(position, orientation, **settings)
         index = ctypes.c_int32(-1)
-        check(lib.ent_tool_add(self._live(), ctypes.byref(desc), ctypes.byref(index)), "ent_tool_add")
+        check(self._call(lib.ent_tool_add, ctypes.byref(desc), ctypes.byref(index)), "ent_tool_add")
         self._tool_count = index.value + 1
         return Tool(self, index.value)
 
@@ -414,13 +475,13 @@ class Scene(OwnedHandle):
         """The scene's tools, in id order (a tuple of Tool), without the removed ones."""
         grasping = ctypes.c_int32()
         return tuple(Tool(self, n) for n in range(self._tool_count)
-                     if lib.ent_tool_state(self._live(), n, ctypes.byref(grasping)) == 0)
+                     if self._call(lib.ent_tool_state, n, ctypes.byref(grasping)) == 0)
 
     @property
     def tool_count(self):
         """The number of tools added and not removed (ent_scene_tool_count)."""
         count = ctypes.c_int32()
-        check(lib.ent_scene_tool_count(self._live(), ctypes.byref(count)), "ent_scene_tool_count")
+        check(self._call(lib.ent_scene_tool_count, ctypes.byref(count)), "ent_scene_tool_count")
         return count.value
 
     def _count_tools(self):
@@ -428,7 +489,7 @@ class Scene(OwnedHandle):
         # one is not found.
         grasping = ctypes.c_int32()
         count = 0
-        while lib.ent_tool_state(self._live(), count, ctypes.byref(grasping)) == 0:
+        while self._call(lib.ent_tool_state, count, ctypes.byref(grasping)) == 0:
             count += 1
         return count
 
@@ -439,20 +500,20 @@ class Scene(OwnedHandle):
 
     def _control_point_count(self):
         count = ctypes.c_uint32()
-        check(lib.ent_scene_control_points(self._live(), 0, None, ctypes.byref(count)), "ent_scene_control_points")
+        check(self._call(lib.ent_scene_control_points, 0, None, ctypes.byref(count)), "ent_scene_control_points")
         return count.value
 
     def axis(self, count=100):
         """count points evenly spaced along the axis, as a (count, 3) float64 array in m."""
         array, pointer = _buffers.new_array(count, 3)
-        check(lib.ent_scene_axis(self._live(), count, pointer), "ent_scene_axis")
+        check(self._call(lib.ent_scene_axis, count, pointer), "ent_scene_axis")
         return array
 
     def control_points(self):
         """The control points, as an (n, 3) float64 array in m (a copy: the C API copies)."""
         array, pointer = _buffers.new_array(self._count, 3)
         count = ctypes.c_uint32()
-        status = lib.ent_scene_control_points(self._live(), self._count, pointer, ctypes.byref(count))
+        status = self._call(lib.ent_scene_control_points, self._count, pointer, ctypes.byref(count))
         if status == ERROR_BUFFER_TOO_SMALL:  # cannot happen today: the count is fixed
             self._count = count.value
             return self.control_points()
@@ -463,14 +524,14 @@ class Scene(OwnedHandle):
     def obstacle_count(self):
         """Obstacles in the last published state, removed ones not counted."""
         count = ctypes.c_uint32()
-        check(lib.ent_scene_obstacle_count(self._live(), ctypes.byref(count)), "ent_scene_obstacle_count")
+        check(self._call(lib.ent_scene_obstacle_count, ctypes.byref(count)), "ent_scene_obstacle_count")
         return count.value
 
     def obstacle_pose(self, obstacle):
         """Where an obstacle's frame rests in the last published state: (position (3,) in m,
         orientation (4,) w x y z), numpy arrays."""
         position, orientation = np.zeros(3), np.zeros(4)
-        check(lib.ent_obstacle_pose(self._live(), obstacle, position.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
+        check(self._call(lib.ent_obstacle_pose, obstacle, position.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
                                     orientation.ctypes.data_as(ctypes.POINTER(ctypes.c_double))),
               "ent_obstacle_pose")
         return position, orientation
@@ -479,7 +540,7 @@ class Scene(OwnedHandle):
         """ent_scene_stats as a Stats dataclass."""
         raw = s.ent_stats()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_scene_stats(self._live(), ctypes.byref(raw)), "ent_scene_stats")
+        check(self._call(lib.ent_scene_stats, ctypes.byref(raw)), "ent_scene_stats")
         return Stats(**{field: getattr(raw, field) for field in Stats.__dataclass_fields__})
 
     def effect_stats(self, effect):
@@ -487,7 +548,7 @@ class Scene(OwnedHandle):
         number = effect_number(effect)
         raw = s.ent_effect_stats()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_scene_effect_stats(self._live(), number, ctypes.byref(raw)), "ent_scene_effect_stats")
+        check(self._call(lib.ent_scene_effect_stats, number, ctypes.byref(raw)), "ent_scene_effect_stats")
         return EffectStats(number, effect_name(number), bool(raw.enabled), raw.calls, raw.total_time_ns)
 
     def all_effect_stats(self):
@@ -504,10 +565,10 @@ class Scene(OwnedHandle):
         then the self-contacts'."""
         while True:
             count = ctypes.c_uint32()
-            check(lib.ent_scene_contacts(self._live(), 0, None, ctypes.byref(count)), "ent_scene_contacts")
+            check(self._call(lib.ent_scene_contacts, 0, None, ctypes.byref(count)), "ent_scene_contacts")
             array = np.zeros(max(count.value, 1), dtype=CONTACT_DTYPE)
             array["struct_size"][0] = CONTACT_DTYPE.itemsize
-            status = lib.ent_scene_contacts(self._live(), len(array), array.ctypes.data, ctypes.byref(count))
+            status = self._call(lib.ent_scene_contacts, len(array), array.ctypes.data, ctypes.byref(count))
             if status == ERROR_BUFFER_TOO_SMALL:  # another thread's step listed more meanwhile
                 continue
             check(status, "ent_scene_contacts")
@@ -517,7 +578,7 @@ class Scene(OwnedHandle):
         """ent_scene_contact_summary as a ContactSummary."""
         raw = s.ent_contact_summary()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_scene_contact_summary(self._live(), ctypes.byref(raw)), "ent_scene_contact_summary")
+        check(self._call(lib.ent_scene_contact_summary, ctypes.byref(raw)), "ent_scene_contact_summary")
         return ContactSummary(**{field: getattr(raw, field) for field in ContactSummary.__dataclass_fields__})
 
     # ---- save and restore (driving calls) ----------------------------------------------------
@@ -526,9 +587,9 @@ class Scene(OwnedHandle):
         restore_state(state), into this scene or one made from the same description, continues
         bit for bit as this one would."""
         size = ctypes.c_size_t()
-        check(lib.ent_scene_save_state(self._live(), None, 0, ctypes.byref(size)), "ent_scene_save_state")
+        check(self._call(lib.ent_scene_save_state, None, 0, ctypes.byref(size)), "ent_scene_save_state")
         buffer = ctypes.create_string_buffer(size.value)
-        check(lib.ent_scene_save_state(self._live(), buffer, size.value, ctypes.byref(size)), "ent_scene_save_state")
+        check(self._call(lib.ent_scene_save_state, buffer, size.value, ctypes.byref(size)), "ent_scene_save_state")
         return buffer.raw[: size.value]
 
     def restore_state(self, state):
@@ -536,4 +597,4 @@ class Scene(OwnedHandle):
         (ent_scene_restore_state). A state that is damaged, of another version or of another
         scene raises enteron.Error naming the problem, and the scene is unchanged."""
         data = bytes(state)
-        check(lib.ent_scene_restore_state(self._live(), data, len(data)), "ent_scene_restore_state")
+        check(self._call(lib.ent_scene_restore_state, data, len(data)), "ent_scene_restore_state")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Skins: the bowel's surface as a triangle mesh (ent_skin), for rendering.
 
     with enteron.Scene(...) as scene, enteron.Skin(scene, "convolution", segments=24) as skin:
@@ -14,10 +15,12 @@ vertices, against milliseconds for its update); call mesh() once per update.
 """
 import ctypes
 import dataclasses
+import threading
 
 import numpy as np
 
 from . import _buffers
+from . import _fields
 from . import _structs as s
 from ._errors import check
 from ._handle import OwnedHandle
@@ -109,6 +112,29 @@ class SkinMetrics:
     has_previous_update: bool
 
 
+class _Serialised:
+    """A call's `with` block under the skin's lock, around its count in flight."""
+
+    __slots__ = ("_lock", "_call")
+
+    def __init__(self, lock, call):
+        self._lock, self._call = lock, call
+
+    def __enter__(self):
+        self._lock.acquire()
+        try:
+            return self._call.__enter__()
+        except BaseException:
+            self._lock.release()
+            raise
+
+    def __exit__(self, *exc):
+        try:
+            return self._call.__exit__(*exc)
+        finally:
+            self._lock.release()
+
+
 class Skin(OwnedHandle):
     """A skin of a scene (ent_skin).
 
@@ -124,8 +150,9 @@ class Skin(OwnedHandle):
     keep the library's defaults.
     The mesh is empty until the first update(). Failures raise enteron.Error.
     The skin keeps its Scene alive; closing the Scene closes its skins first.
-    Threads: one thread per skin (update, mesh, metrics, close must not race), which may
-    differ from the thread that steps the scene.
+    Threads: any, also another than the one that steps the scene. Calls on one skin from
+    several threads take turns (the C library would refuse the second as busy); close() from
+    any thread: an update running elsewhere finishes, and the skin goes as it returns.
     """
 
     def __init__(self, scene, method=None, **knobs):
@@ -137,50 +164,58 @@ class Skin(OwnedHandle):
         for name, value in knobs.items():
             if name not in _KNOBS:
                 raise TypeError("ent_skin_desc has no knob %r (knobs: %s)" % (name, ", ".join(_KNOBS)))
-            setattr(desc, name, value)
+            _fields.set_field(desc, name, value)
         handle = ctypes.c_void_p()
-        check(lib.ent_skin_create(scene._live(), ctypes.byref(desc), ctypes.byref(handle)), "ent_skin_create")
-        self._handle = handle
+        check(scene._call(lib.ent_skin_create, ctypes.byref(desc), ctypes.byref(handle)), "ent_skin_create")
+        self._serial = threading.Lock()
+        self._own(handle, lib.ent_skin_destroy)
         self._scene = scene
         self.method = desc.method
-        scene._skins.add(self)
+        if not scene._adopt(self):  # the scene was closed on another thread meanwhile
+            self.close()
+            raise ValueError("operation on a closed enteron.Scene")
 
     # ---- lifetime -----------------------------------------------------------------------
     def close(self):
         """Destroys the skin (ent_skin_destroy); meshes already taken stay valid (copies).
-        Idempotent; later calls of other methods raise ValueError."""
-        handle, self._handle = getattr(self, "_handle", None), None
-        if handle:
-            lib.ent_skin_destroy(handle)
+        Idempotent; later calls of other methods raise ValueError. Any thread: an update
+        running on another thread finishes first, and the skin goes as it returns."""
+        super().close()
+
+    def _using(self):
+        # One call at a time per skin, whatever the threads: the C library refuses a second
+        # one as busy; here the second waits for the first (and mesh() copies under it).
+        return _Serialised(self._serial, super()._using())
 
     # ---- the mesh -------------------------------------------------------------------------
     def update(self):
         """Rebuilds the mesh from the scene's last published state (ent_skin_update).
         The arrays of earlier mesh() calls keep the mesh they copied."""
-        check(lib.ent_skin_update(self._live()), "ent_skin_update")
+        check(self._call(lib.ent_skin_update), "ent_skin_update")
 
     def mesh(self):
         """The current mesh (ent_skin_mesh) as a Mesh of numpy arrays copied out of the
         library's buffers, which the next update() may reuse and close() frees."""
         raw = s.ent_mesh_view()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_skin_mesh(self._live(), ctypes.byref(raw)), "ent_skin_mesh")
-        v, t = raw.vertex_count, raw.triangle_count
-        return Mesh(positions=_buffers.copy(raw.positions_xyz_m, (v, 3), ctypes.c_float),
-                    normals=_buffers.copy(raw.normals_xyz, (v, 3), ctypes.c_float),
-                    u=_buffers.copy(raw.axis_u, (v,), ctypes.c_float),
-                    indices=_buffers.copy(raw.indices, (t, 3), ctypes.c_uint32),
-                    time_s=raw.time_s, updates=raw.updates,
-                    v=_buffers.copy(raw.around_v, (v,), ctypes.c_float),
-                    tangents=_buffers.copy(raw.tangents_xyz, (v, 3), ctypes.c_float),
-                    topology_serial=raw.topology_serial, topology_changed=bool(raw.topology_changed),
-                    stable_topology=bool(raw.stable_topology))
+        with self._using() as handle:  # the copies too: the view is the skin's memory
+            check(lib.ent_skin_mesh(handle, ctypes.byref(raw)), "ent_skin_mesh")
+            v, t = raw.vertex_count, raw.triangle_count
+            return Mesh(positions=_buffers.copy(raw.positions_xyz_m, (v, 3), ctypes.c_float),
+                        normals=_buffers.copy(raw.normals_xyz, (v, 3), ctypes.c_float),
+                        u=_buffers.copy(raw.axis_u, (v,), ctypes.c_float),
+                        indices=_buffers.copy(raw.indices, (t, 3), ctypes.c_uint32),
+                        time_s=raw.time_s, updates=raw.updates,
+                        v=_buffers.copy(raw.around_v, (v,), ctypes.c_float),
+                        tangents=_buffers.copy(raw.tangents_xyz, (v, 3), ctypes.c_float),
+                        topology_serial=raw.topology_serial, topology_changed=bool(raw.topology_changed),
+                        stable_topology=bool(raw.stable_topology))
 
     def metrics(self):
         """ent_skin_metrics as a SkinMetrics (costs more than an update: not every frame)."""
         raw = s.ent_skin_metrics()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_skin_metrics(self._live(), ctypes.byref(raw)), "ent_skin_metrics")
+        check(self._call(lib.ent_skin_metrics, ctypes.byref(raw)), "ent_skin_metrics")
         values = {field: getattr(raw, field) for field in SkinMetrics.__dataclass_fields__}
         values["watertight"] = bool(values["watertight"])
         values["has_previous_update"] = bool(values["has_previous_update"])

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Surgical tools: rigid capsules driven by the caller (a haptic device, a script) that push
 and grasp the bowel (ent_tool_*).
 
@@ -57,7 +58,8 @@ class ToolFeedback(typing.NamedTuple):
     in N and torque (3,) about the tip in N m on the tool, bounded by its max_force;
     grasping; contacts (collision spheres touching it); time_s and steps of that state;
     stiffness (3, 3) dF/dx in N/m (as Tool.stiffness); proxy_position (3,), the tip of the
-    tool in the scene, and commanded_position (3,), the tip asked for, in m."""
+    tool in the scene, and commanded_position (3,), the tip asked for, in m; saturated: True
+    when max_force bounded the force in that step (the force is the bound)."""
     force: np.ndarray
     torque: np.ndarray
     grasping: bool
@@ -67,6 +69,7 @@ class ToolFeedback(typing.NamedTuple):
     stiffness: np.ndarray
     proxy_position: np.ndarray
     commanded_position: np.ndarray
+    saturated: bool
 
 
 class ToolStats(typing.NamedTuple):
@@ -155,7 +158,7 @@ class Tool:
         self._force = (ctypes.c_double * 3)()
         self._torque = (ctypes.c_double * 3)()
         # Refuses an id the scene does not have (ENT_ERROR_NOT_FOUND, "tool 5 does not exist ...").
-        check(lib.ent_tool_state(scene._live(), self._id, ctypes.byref(self._grasping_flag)), "ent_tool_state")
+        check(scene._call(lib.ent_tool_state, self._id, ctypes.byref(self._grasping_flag)), "ent_tool_state")
 
     @property
     def id(self):
@@ -171,14 +174,14 @@ class Tool:
         position (3 numbers, m) and the orientation (w, x, y, z; normalised by the library).
         The tool moves continuously there across the step's substeps. Any thread: the
         library takes it without a lock, and the last pose set before a step wins."""
-        check(lib.ent_tool_set_pose(self._scene._live(), self._id, _numbers(position, 3, "position"),
+        check(self._scene._call(lib.ent_tool_set_pose, self._id, _numbers(position, 3, "position"),
                                     _numbers(orientation, 4, "orientation")), "ent_tool_set_pose")
 
     def wrench(self):
         """The force (N) and the torque about the tip (N m) the bowel exerted on the tool in
         the last published step (ent_tool_wrench), as a Wrench of two new (3,) float64
         arrays. Zero before the first step; |force| never exceeds max_force. Any thread."""
-        check(lib.ent_tool_wrench(self._scene._live(), self._id, self._force, self._torque), "ent_tool_wrench")
+        check(self._scene._call(lib.ent_tool_wrench, self._id, self._force, self._torque), "ent_tool_wrench")
         return Wrench(np.array(self._force[:]), np.array(self._torque[:]))
 
     def feedback(self):
@@ -186,11 +189,12 @@ class Tool:
         published step, with its time and step count, read at once. Any thread."""
         raw = s.ent_tool_feedback()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_tool_read_feedback(self._scene._live(), self._id, ctypes.byref(raw)),
+        check(self._scene._call(lib.ent_tool_read_feedback, self._id, ctypes.byref(raw)),
               "ent_tool_read_feedback")
         return ToolFeedback(np.array(raw.force_N[:]), np.array(raw.torque_Nm[:]), bool(raw.grasping),
                             raw.contacts, raw.time_s, raw.steps, np.array(raw.stiffness_N_per_m[:]).reshape(3, 3),
-                            np.array(raw.proxy_position_m[:]), np.array(raw.commanded_position_m[:]))
+                            np.array(raw.proxy_position_m[:]), np.array(raw.commanded_position_m[:]),
+                            bool(raw.saturated))
 
     def stiffness(self):
         """The tool's local stiffness at the last published step (ent_tool_stiffness): a new
@@ -198,7 +202,7 @@ class Tool:
         velocities held. A device loop faster than the physics renders F + K (x - x_k).
         Any thread."""
         k = (ctypes.c_double * 9)()
-        check(lib.ent_tool_stiffness(self._scene._live(), self._id, k), "ent_tool_stiffness")
+        check(self._scene._call(lib.ent_tool_stiffness, self._id, k), "ent_tool_stiffness")
         return np.array(k[:]).reshape(3, 3)
 
     def stats(self):
@@ -206,7 +210,7 @@ class Tool:
         Any thread."""
         raw = s.ent_tool_stats()
         raw.struct_size = ctypes.sizeof(raw)
-        check(lib.ent_tool_read_stats(self._scene._live(), self._id, ctypes.byref(raw)), "ent_tool_read_stats")
+        check(self._scene._call(lib.ent_tool_read_stats, self._id, ctypes.byref(raw)), "ent_tool_read_stats")
         return ToolStats(bool(raw.grasping), raw.contacts, raw.energy_in_J, raw.energy_out_J, raw.limiter_energy_J,
                          raw.largest_force_change_N, raw.steps)
 
@@ -214,7 +218,7 @@ class Tool:
         """Removes the tool from its scene (ent_tool_remove): from the next step it touches
         nothing and lets go; its calls then raise enteron.Error (ERROR_NOT_FOUND). A driving
         call: from the thread that steps."""
-        check(lib.ent_tool_remove(self._scene._live(), self._id), "ent_tool_remove")
+        check(self._scene._call(lib.ent_tool_remove, self._id), "ent_tool_remove")
 
     def contacts(self):
         """ent_tool_read_contacts as a ToolContacts, from one snapshot. Any thread."""
@@ -224,7 +228,7 @@ class Tool:
             raw.struct_size = ctypes.sizeof(raw)
             raw.range_capacity = len(ranges)
             raw.ranges_u = ranges.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
-            check(lib.ent_tool_read_contacts(self._scene._live(), self._id, ctypes.byref(raw)),
+            check(self._scene._call(lib.ent_tool_read_contacts, self._id, ctypes.byref(raw)),
                   "ent_tool_read_contacts")
             if raw.range_count <= len(ranges):
                 break
@@ -237,19 +241,19 @@ class Tool:
         """Grasps, at the start of the next step, the collision sphere nearest the tip if it
         is within reach (ent_tool_grasp); grasping shows whether it holds once that step is
         done. Grasping again picks anew. Any thread."""
-        check(lib.ent_tool_grasp(self._scene._live(), self._id), "ent_tool_grasp")
+        check(self._scene._call(lib.ent_tool_grasp, self._id), "ent_tool_grasp")
 
     def release(self):
         """Releases what the tool holds at the start of the next step (ent_tool_release);
         nothing held: no effect. Any thread."""
-        check(lib.ent_tool_release(self._scene._live(), self._id), "ent_tool_release")
+        check(self._scene._call(lib.ent_tool_release, self._id), "ent_tool_release")
 
     @property
     def grasping(self):
         """True while a grasp holds in the last published state; False after a release, a
         grasp with nothing in reach, or a slip (a hold that needed more than max_force)
         (ent_tool_state). Any thread."""
-        check(lib.ent_tool_state(self._scene._live(), self._id, ctypes.byref(self._grasping_flag)),
+        check(self._scene._call(lib.ent_tool_state, self._id, ctypes.byref(self._grasping_flag)),
               "ent_tool_state")
         return bool(self._grasping_flag.value)
 

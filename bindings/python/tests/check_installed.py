@@ -1,8 +1,11 @@
+# SPDX-License-Identifier: Apache-2.0
 """Installs the build into a staging prefix (cmake --install) and imports the installed
 package from a clean interpreter, with neither ENTERON_LIBRARY nor the source tree in
 sight: it must load the installed library found next to the package.
 
-usage: check_installed.py BUILD_DIR WORK_DIR PYTHONDIR LIBDIR   (CMAKE: the cmake to use)
+usage: check_installed.py BUILD_DIR WORK_DIR PYTHONDIR LIBDIR [BINDIR]   (CMAKE: the cmake to use)
+
+With BINDIR, the installed enteron-calibrate must find the installed package too.
 """
 import os
 import shutil
@@ -36,3 +39,11 @@ if os.path.dirname(os.path.realpath(library)) != expected_lib:
 if not os.path.realpath(package).startswith(os.path.realpath(package_dir)):
     sys.exit("FAIL: imported %s, expected the package in %s" % (package, package_dir))
 print("installed package %s loads %s" % (package, library))
+
+if len(sys.argv) > 5:
+    launcher = os.path.join(stage, sys.argv[5], "enteron-calibrate")
+    environment.pop("PYTHONPATH")
+    shown = subprocess.run([launcher, "--help"], cwd=work_dir, env=environment, capture_output=True, text=True)
+    if shown.returncode != 0 or "EXPERIMENT" not in shown.stdout.upper():
+        sys.exit("FAIL: %s --help: status %d: %s" % (launcher, shown.returncode, shown.stderr))
+    print("installed %s finds the installed package" % launcher)

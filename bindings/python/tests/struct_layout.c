@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* Prints the size and field offsets of the public structs as the C compiler lays them out,
  * as JSON, for the Python binding's test_layout (which compares its ctypes mirrors). */
 #include <enteron/enteron.h>
@@ -69,6 +70,15 @@ int main(void) {
     FIELD(grasp_u) FIELD(largest_force_N) FIELD(contact_impulse_Ns) FIELD(contact_impulse_magnitude_Ns)
     FIELD(time_s) FIELD(steps)
     END()
+    BEGIN(ent_exposure_desc)
+    FIELD(struct_size) FIELD(points_xyz_m) FIELD(point_count) FIELD(triangles) FIELD(triangle_count) FIELD(weights)
+    FIELD(samples_per_edge) FIELD(obstacle) FIELD(axis_chords_per_segment)
+    END()
+    BEGIN(ent_exposure_result)
+    FIELD(struct_size) FIELD(span_capacity) FIELD(spans_u) FIELD(span_hidden_fractions) FIELD(span_intestines)
+    FIELD(element_visible) FIELD(visible_fraction) FIELD(span_count) FIELD(samples) FIELD(hidden_samples)
+    FIELD(time_s) FIELD(steps)
+    END()
     BEGIN(ent_tool_desc)
     FIELD(struct_size) FIELD(radius_m) FIELD(length_m) FIELD(max_force_N) FIELD(grasp_margin_m)
     FIELD(grasp_stiffness_N_per_m) FIELD(grasp_damping_N_s_per_m) FIELD(position_m) FIELD(orientation_wxyz)
@@ -78,6 +88,7 @@ int main(void) {
     BEGIN(ent_tool_feedback)
     FIELD(struct_size) FIELD(grasping) FIELD(force_N) FIELD(torque_Nm) FIELD(contacts) FIELD(time_s) FIELD(steps)
     FIELD(stiffness_N_per_m) FIELD(proxy_position_m) FIELD(commanded_position_m) FIELD(orientation_wxyz)
+    FIELD(saturated)
     END()
     BEGIN(ent_tool_stats)
     FIELD(struct_size) FIELD(grasping) FIELD(contacts) FIELD(reserved) FIELD(energy_in_J) FIELD(energy_out_J)

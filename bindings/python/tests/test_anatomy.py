@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Moving anatomy through the binding: a mesh obstacle holds the bowel as the analytic shape
 does, an obstacle moved between steps carries a pin with it, gravity and friction change
 between steps, obstacles are removed and counted, a scene file finds its mesh next to it,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Arrays of memory the library lends (the skin mesh): copies that own their data, so that
 they stay valid whatever the library does with its buffer afterwards."""
 import ctypes

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Contacts and save/restore through the binding: the contact array against the penalty law
 the test works out itself, a tool's contacts against its wrench, and a restored scene that
 continues bit for bit; a damaged, forged, cut or foreign state refused with the library's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The ctypes mirrors have the C compiler's layout, and the binding loaded the library
 it was told to, with the header's version."""
 import ctypes

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """A Python user can never crash the interpreter through the package (issue 16, defect 1).
 
 Each pattern that crashed or read freed memory runs in its own interpreter, so that a crash
@@ -95,6 +96,88 @@ PATTERNS = {
             scene.step(0.001)
         done.set(); t.join()
         assert tool.feedback().steps == 300
+    """,
+    # Issue 27, defect 1: SIGSEGV in 3 of 4 runs. A thread calls on the scene in a loop (a
+    # step, a skin's update, a save); the main thread closes the scene at a varying moment.
+    # The loop's next call raises ValueError; the call in flight finishes first.
+    "closing a scene while other threads step it, update its skin and save it": """
+        import time
+        for round in range(12):
+            scene = enteron.Scene(SCENE); skin = enteron.Skin(scene, "convolution")
+            tool = scene.add_tool(position=(0.3, 0, 0.03))
+            started = threading.Barrier(4); ended = []
+            def loop(name, calls):
+                started.wait()
+                while True:
+                    try:
+                        for call in calls:
+                            call()
+                    except ValueError as error:
+                        assert "closed" in str(error), error
+                        ended.append(name)
+                        return
+                    except enteron.Error as error:  # a step and a save overlapping: busy
+                        assert error.status == enteron.ERROR_BUSY, error
+            threads = [threading.Thread(target=loop, args=("step", (lambda: scene.step(0.001), tool.feedback))),
+                       threading.Thread(target=loop, args=("skin", (skin.update, skin.mesh))),
+                       threading.Thread(target=loop, args=("save", (scene.save_state, scene.stats)))]
+            for t in threads: t.start()
+            started.wait(); time.sleep(0.0005 * (round % 6))
+            scene.close()
+            for t in threads: t.join()
+            assert sorted(ended) == ["save", "skin", "step"], ended
+            assert scene.closed and skin.closed
+    """,
+    # Issue 27, defect 2: free(): corrupted unsorted chunks, SIGABRT in 3 of 4 runs.
+    "closing a skin while another thread updates it": """
+        import time
+        scene = enteron.Scene(SCENE)
+        for round in range(20):
+            skin = enteron.Skin(scene, "convolution" if round % 2 else "point_skeleton")
+            started = threading.Event(); ended = []
+            def render():
+                started.set()
+                try:
+                    while True:
+                        skin.update(); skin.mesh(); skin.metrics()
+                except ValueError:
+                    ended.append(True)
+            t = threading.Thread(target=render); t.start()
+            started.wait(); time.sleep(0.0005 * (round % 5))
+            skin.close(); t.join()
+            assert ended == [True]
+            scene.step(0.001)
+    """,
+    # "One thread per skin" is a rule for correctness: two threads on one skin take turns.
+    "two threads updating one skin": """
+        scene = enteron.Scene(SCENE); skin = enteron.Skin(scene, "convolution")
+        def render():
+            for _ in range(30):
+                skin.update(); mesh = skin.mesh()
+                assert (mesh.indices < mesh.vertex_count).all() and np.isfinite(mesh.positions).all()
+        threads = [threading.Thread(target=render) for _ in range(3)]
+        for t in threads: t.start()
+        for t in threads: t.join()
+        assert skin.mesh().updates == 90
+    """,
+    # Issue 27, defect 3: a count larger than its array was read past the array's end.
+    "a description whose count disagrees with its array": """
+        points = np.column_stack([np.linspace(0, 0.45, 10), np.zeros(10), np.zeros(10)])
+        for count in (100000, 12, 4):
+            try:
+                enteron.Scene(desc=enteron.SceneDesc(shape_points_xyz_m=points, control_points=count))
+            except ValueError as error:
+                assert "control_points" in str(error) and "shape_points_xyz_m" in str(error), error
+            else:
+                raise AssertionError("control_points=%d with 10 points was not refused" % count)
+        desc = enteron.SceneDesc(shape_points_xyz_m=points)
+        desc.struct.control_points = 100000  # behind the description's back
+        try:
+            enteron.Scene(desc=desc)
+        except ValueError as error:
+            assert "control_points" in str(error), error
+        else:
+            raise AssertionError("a struct changed behind the description was not refused")
     """,
 }
 

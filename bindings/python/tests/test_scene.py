@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Scenes through the binding: the values are the C API's, errors raise, handles close."""
 import ctypes
 import threading
@@ -201,6 +202,68 @@ class Errors(unittest.TestCase):
             enteron.Scene()
         with self.assertRaises(TypeError):
             enteron.Scene(FREE_FALL, desc={})
+
+
+class Descriptions(unittest.TestCase):
+    """Issue 27, defects 3 and 4: a description says what was written, or is refused."""
+
+    POINTS = np.column_stack([np.linspace(0, 0.45, 10), np.zeros(10), np.zeros(10)])
+
+    def test_a_count_comes_from_its_array(self):
+        desc = enteron.SceneDesc(shape_points_xyz_m=self.POINTS, pinned_points=[0, 9])
+        self.assertEqual((desc.control_points, desc.struct.pinned_point_count), (10, 2))
+        enteron.SceneDesc(control_points=10, shape_points_xyz_m=self.POINTS)  # agreeing: fine
+        for fields in ({"shape_points_xyz_m": self.POINTS, "control_points": 100000},
+                       {"control_points": 12, "shape_points_xyz_m": self.POINTS}):
+            with self.subTest(order=list(fields)):
+                with self.assertRaises(ValueError) as caught:
+                    enteron.SceneDesc(**fields)
+                self.assertIn("SceneDesc.control_points is", str(caught.exception))
+                self.assertIn("shape_points_xyz_m holds 10 points", str(caught.exception))
+        with self.assertRaises(ValueError) as caught:
+            enteron.SceneDesc(shape_points_xyz_m=np.zeros(7))
+        self.assertIn("shape_points_xyz_m must be an (n, 3) array", str(caught.exception))
+        desc = enteron.SceneDesc(shape_points_xyz_m=self.POINTS, pinned_points=[0])
+        desc.struct.pinned_point_count = 1000  # behind the description's back: refused at creation
+        with self.assertRaises(ValueError) as caught:
+            enteron.Scene(desc=desc)
+        self.assertIn("pinned_point_count is 1000 but pinned_points holds 1 indices", str(caught.exception))
+
+    def test_points_start_at_rest(self):
+        # Issue 27, defect 5: without length_m the rest length is the spline's through the
+        # points (a straight 0.45 m line here), not the 6 m default.
+        desc = enteron.SceneDesc(shape_points_xyz_m=self.POINTS, effects={"stretch"})
+        self.assertEqual(desc.length_m, 0.0)
+        with enteron.Scene(desc=desc) as scene:
+            self.assertLess(abs(scene.contact_summary().largest_stretch), 1e-9)
+            self.assertLess(scene.stats().potential_energy_J, 1e-12)
+        self.assertEqual(enteron.SceneDesc(length_m=1.0, shape_points_xyz_m=self.POINTS).length_m, 1.0)
+
+    def test_integer_fields_do_not_wrap(self):
+        cases = [(lambda: enteron.SceneDesc(control_points=2**32 + 10), "SceneDesc.control_points must fit uint32_t"),
+                 (lambda: enteron.SceneDesc(control_points=2**40), "got 1099511627776"),
+                 (lambda: enteron.SceneDesc(control_points=-1), "SceneDesc.control_points must fit uint32_t"),
+                 (lambda: enteron.SceneDesc(integrator=2**31), "SceneDesc.integrator must fit int32_t"),
+                 (lambda: enteron.SceneDesc(max_substeps=2**32), "SceneDesc.max_substeps"),
+                 (lambda: enteron.SceneDesc(pinned_points=[1, 2**32]), "SceneDesc.pinned_points[1] must fit uint32_t"),
+                 (lambda: enteron.SceneDesc(pinned_points=[-1]), "SceneDesc.pinned_points[0]")]
+        for make, text in cases:
+            with self.subTest(text=text):
+                with self.assertRaises(OverflowError) as caught:
+                    make()
+                self.assertIn(text, str(caught.exception))
+        with self.assertRaises(TypeError) as caught:
+            enteron.SceneDesc(control_points=40.5)
+        self.assertIn("SceneDesc.control_points must be an integer", str(caught.exception))
+        with enteron.Scene(FREE_FALL) as scene:
+            for knob, value in (("segments", 2**32 + 8), ("cap_rings", -1), ("stable_topology", 2**31)):
+                with self.subTest(knob=knob):
+                    with self.assertRaises(OverflowError) as caught:
+                        enteron.Skin(scene, "tube", **{knob: value})
+                    self.assertIn("ent_skin_desc.%s must fit" % knob, str(caught.exception))
+            with enteron.Skin(scene, "tube", segments=8) as skin:  # in range: as before
+                skin.update()
+                self.assertGreater(skin.mesh().vertex_count, 0)
 
 
 class Lifetime(unittest.TestCase):

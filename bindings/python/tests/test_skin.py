@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Skins through the binding: the mesh arrays are the C API's buffers (no copy), a fresh
 mesh() follows each update, errors raise enteron.Error, handles close safely."""
 import ctypes

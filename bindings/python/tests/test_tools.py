@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Tools through the binding: a push moves the bowel and the force opposes the motion within
 max_force, a grasp lifts, a release drops, bad input raises naming the input and changes
 nothing; obstacles added from Python equal those of the JSON description."""
@@ -94,6 +95,15 @@ class Push(unittest.TestCase):
             self.assertTrue(all(bounded))
             self.assertGreater(largest, 0.99, "the bound is reached")
             self.assertTrue(np.isfinite(scene.control_points()).all())
+            # Held at the bound: the feedback says the force is max_force's, not the bowel's
+            # (issue 27, defect 6).
+            feedback = tool.feedback()
+            self.assertAlmostEqual(float(np.linalg.norm(feedback.force)), 1.0, places=9)
+            self.assertIs(feedback.saturated, True)
+            tool.set_pose(above)
+            for _ in range(50):
+                scene.step(H)
+            self.assertIs(tool.feedback().saturated, False)
 
 
 class Grasp(unittest.TestCase):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The collision spheres of a remote session: scene_state_t carries the axis sampled evenly
 // in arc length, not the spheres' centres (which are the axis sampled evenly at the
 // spheres' count, ent_scene_axis). The polyline resampled evenly along its length gives

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bowel as a tube of radius R around its axis polyline, for a remote session whose
 // server sends no mesh (enteron-lcm-server's default, --mesh-hz 0): scene_state_t carries
 // the axis sampled evenly in arc length and the radius, which is all a tube needs.

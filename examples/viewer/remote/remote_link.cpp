@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "remote_link.h"
 
 #include <enteron/enteron.h>
@@ -26,11 +27,20 @@ std::string describe_tool_status(std::int32_t status) {
         {ENTERON_TOOL_FEEDBACK_T_STATUS_RATE_LIMITED, "rate limited"},
         {ENTERON_TOOL_FEEDBACK_T_STATUS_UNSTABLE, "unstable"},
         {ENTERON_TOOL_FEEDBACK_T_STATUS_FORCE_DISABLED, "force disabled"}};
+    // The reason of a rejection, bits 8-15 (REJECTED_*, 1 to 7).
+    static const char* const reasons[] = {"size", "fingerprint", "not finite", "zero quaternion",
+                                          "unknown tool", "out of range", "sequence"};
     std::string words;
     for (const auto& [bit, name] : names) {
         if ((status & bit) == 0) continue;
         words += (words.empty() ? "" : ", ") + std::string(name);
         status &= ~bit;
+    }
+    if ((status & ENTERON_TOOL_FEEDBACK_T_STATUS_COMMANDS_REJECTED) != 0) {
+        const int reason = (status & ENTERON_TOOL_FEEDBACK_T_REJECTION_MASK) >> ENTERON_TOOL_FEEDBACK_T_REJECTION_SHIFT;
+        words += (words.empty() ? "" : ", ") + std::string("commands rejected (") +
+                 (reason >= 1 && reason <= 7 ? reasons[reason - 1] : "reason " + std::to_string(reason)) + ")";
+        status &= ~(ENTERON_TOOL_FEEDBACK_T_STATUS_COMMANDS_REJECTED | ENTERON_TOOL_FEEDBACK_T_REJECTION_MASK);
     }
     if (status != 0) words += (words.empty() ? "" : ", ") + std::string("bits ") + std::to_string(status);
     return words;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The viewer's end of an LCM session with enteron-lcm-server (docs/lcm.md, docs/viewer.md):
 // one thread of its own that receives ENTERON_SESSION, ENTERON_STATE and ENTERON_MESH,
 // checks every message before decoding it (ent_lcm_check_message, then the values: finite

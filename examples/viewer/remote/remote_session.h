@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene simulated by enteron-lcm-server, seen over LCM (enteron-viewer --lcm URL): the
 // Session the viewer draws, filled from the newest messages the RemoteLink's thread
 // checked and handed over, and the tools the mouse drives sent back as tool_command_t.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the bridge's C API tests share: the scene, a bridge made from it, commands encoded
 // and feedback decoded with lcm-gen's C types, as a device would. Public headers only.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C API's contract (enteron_lcm.h): defaults, settings refused with a message that names
 // them, a bad scene refused with libenteron's message, the feedback and stats accessors'
 // errors, the workspace mapping seen end to end by a millimetre device with turned axes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hostile input on the command path: wrong size, wrong fingerprint, NaN, a zero quaternion,
 // an unknown tool, repeated and decreasing seq, bytes that are not a message at all, and a
 // flood of 100 000 commands while the physics thread runs: every one rejected or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The journal: a 10 s session with contacts and a grasp (10 000 ticks, run faster than real
 // time by ticking by hand on the bridge's clock) replays bit for bit; a journal with one
 // entry changed fails at exactly that tick; a damaged entry is reported at its tick; a

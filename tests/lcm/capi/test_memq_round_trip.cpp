@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A command in, the feedback of that tick out, in one process over memq:// (the bridge's own
 // LCM instance, ent_lcm_bridge_lcm): the feedback carries the command's seq and utime and a
 // force within the tool's bound. Then the bridge's own physics thread: feedback every tick,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The watchdog (the device stops sending): within the watchdog time and one tick the force
 // is zero, STALE is set and the tool is held; when commands come back the tool moves at its
 // bounded speed and the force ramps back in (its change per tick stays small), where

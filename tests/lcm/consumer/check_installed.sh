@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # lcm.installed: cmake --install puts the bridge where a user finds it (library, header,
 # CMake package component, enteron_lcm.pc, the two programs, the .lcm types and the Python
 # reader), and a C program builds and runs against it both through find_package and

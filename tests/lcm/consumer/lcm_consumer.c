@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: Apache-2.0 */
 /* A program built against an installed libenteron_lcm: makes a bridge without a network,
  * feeds it one command, ticks it, reads the feedback back. Exit 0 when all of it works. */
 #include <enteron/enteron_lcm.h>

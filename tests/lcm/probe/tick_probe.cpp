@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "The tick makes no system call and allocates nothing": 3000 ticks of a bridge at work
 // (commands arriving from another thread, a grasp, a watchdog trip, the journal on, the
 // publishing and report threads busy over memq) run on a thread where

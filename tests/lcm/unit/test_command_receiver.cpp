@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The receive side (command_receiver.h): every reason a command is rejected for, counted
 // and logged once per reason then summed; sequences, gaps, a restarted sender, coalescing.
 #include <gtest/gtest.h>
@@ -9,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "command_receiver.h"
+#include "lcm/command_receiver.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 constexpr int64_t kMs = 1000000;
@@ -148,4 +149,4 @@ TEST_F(CommandReceiverTest, TheFirstRejectionOfEachReasonIsLoggedThenTheyAreSumm
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

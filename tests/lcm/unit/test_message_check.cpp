@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ent_lcm_check_message's rule (message_check.h): bytes encoded by lcm-gen's own encoders
 // pass, whatever their counts; any other size, a negative count, a string without its NUL
 // or another type's fingerprint do not. And the layout it relies on: counts last among the
@@ -17,9 +18,9 @@
 #include <vector>
 
 #include "enteron/enteron_lcm.h"
-#include "message_check.h"
+#include "lcm/message_check.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 template <class Message>
@@ -146,4 +147,4 @@ TEST(MessageCheck, UnknownTypesAreNamed) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

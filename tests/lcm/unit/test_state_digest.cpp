@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The state digest (state_digest.h): a change of any one bit of any one value it covers
 // (control points, time, the tools' pose and grasp action) changes it; so do the order and
 // the count of the values.
@@ -7,9 +8,9 @@
 #include <cstring>
 #include <vector>
 
-#include "state_digest.h"
+#include "lcm/state_digest.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 void flip(double& value, int bit) {
@@ -55,4 +56,4 @@ TEST(StateDigest, DependsOnOrderAndCount) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

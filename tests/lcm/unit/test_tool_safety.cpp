@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
 // The safety rules of one tool (tool_safety.h), tick by tick, against the numbers they
 // promise: the watchdog's time, the ramp's slope, the speed bounds, the clamps.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "tool_safety.h"
+#include "lcm/tool_safety.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 constexpr int64_t kMs = 1000000;  // ns
@@ -30,8 +31,9 @@ protected:
         return c;
     }
 
-    static void render(ToolSafety& safety, double force_x, bool step_ok = true) {
-        safety.render(Eigen::Vector3d(force_x, 0, 0), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), step_ok);
+    static void render(ToolSafety& safety, double force_x, bool step_ok = true, bool saturated = false) {
+        safety.render(Eigen::Vector3d(force_x, 0, 0), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), saturated,
+                      step_ok);
     }
 
     SafetyLimits limits;
@@ -140,6 +142,25 @@ TEST_F(ToolSafetyTest, ClampsToMaxForceToTheDeviceLimitAndToTheChangePerTick) {
     EXPECT_NEAR(unlimited_device.device_force().x(), 5.0, 1e-12) << "at the tool's max_force";
 }
 
+// Issue 27, defect 6: libenteron bounds the force at max_force itself, so the force the
+// bridge gets is exactly 5 N, which its own test (> max_force) misses; the library's
+// saturated flag says it.
+TEST_F(ToolSafetyTest, AForceTheLibraryBoundedIsSaidLimited) {
+    limits.force_ramp_s = 0.0;
+    ToolSafety safety = make();
+    const AcceptedCommand c = command(1, 0);
+    safety.plan(&c, 0);
+    render(safety, 5.0);
+    EXPECT_EQ(safety.status() & kForceLimited, 0) << "at max_force but not bounded: the contacts asked 5 N";
+    safety.plan(nullptr, kMs);
+    render(safety, 5.0, true, true);
+    EXPECT_EQ(safety.status() & kForceLimited, kForceLimited);
+    EXPECT_NEAR(safety.device_force().x(), 5.0, 1e-12) << "rendered as given";
+    safety.plan(nullptr, 2 * kMs);
+    render(safety, 5.0, false, true);
+    EXPECT_EQ(safety.status() & kForceLimited, 0) << "a failed step renders nothing: nothing is limited";
+}
+
 TEST_F(ToolSafetyTest, StopsAreImmediateWhateverTheChangeLimit) {
     limits.force_ramp_s = 0.0;
     limits.max_force_change_per_tick = 0.01;
@@ -183,4 +204,4 @@ TEST_F(ToolSafetyTest, GraspIsALevelActedOnOnlyWhenItChanges) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exchanges between the tick and the bridge's other threads: the SPSC queue and the
 // "newest value wins" mailbox, alone and between two threads (run under ThreadSanitizer by
 // scripts/test), and the publisher's wakeup.
@@ -8,11 +9,11 @@
 #include <cstdint>
 #include <thread>
 
-#include "latest_mailbox.h"
-#include "spsc_queue.h"
-#include "wakeup.h"
+#include "lcm/latest_mailbox.h"
+#include "lcm/spsc_queue.h"
+#include "lcm/wakeup.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 TEST(SpscQueue, HoldsItsCapacityInOrderThenRefuses) {
@@ -153,4 +154,4 @@ TEST(Wakeup, NotifyWakesAWaiterAndWorkAlreadyThereIsNotSleptOn) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
 // The workspace mapping (workspace_mapping.h) against hand-computed frames, and its
 // force, torque and stiffness maps against the definitions they follow from.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "workspace_mapping.h"
+#include "lcm/workspace_mapping.h"
 
-namespace enteron::bridge {
+namespace enteron::lcm {
 namespace {
 
 // A device reporting millimetres, its x axis along the scene's y (a quarter turn about z),
@@ -65,4 +66,4 @@ TEST(WorkspaceMapping, TorqueIsTheMomentOfTheMappedForce) {
 }
 
 }  // namespace
-}  // namespace enteron::bridge
+}  // namespace enteron::lcm

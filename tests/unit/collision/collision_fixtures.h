@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the collision tests: the default bowel radius, axes that touch themselves, and
 // a contact effect evaluated the way Dynamics does.
 #pragma once
@@ -11,6 +12,9 @@
 #include "collision/contact_model.h"
 #include "collision/self_contact_force.h"
 #include "collision/sphere_loads.h"
+#include "collision/tool_contacts.h"
+#include "collision/tool_motion.h"
+#include "collision/tool_state.h"
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 #include "mechanics/state.h"
@@ -68,6 +72,39 @@ struct Axis {
     State state;
     AxisModel model;
     double length;
+};
+
+// A straight axis along +x from the origin: n control points `spacing` apart.
+inline std::vector<double> straight(std::size_t n, double spacing) {
+    std::vector<double> q;
+    for (std::size_t i = 0; i < n; ++i) q.insert(q.end(), {spacing * double(i), 0.0, 0.0});
+    return q;
+}
+
+// A tool's contact law (tool_direct_contacts.h, tool_proxy_contacts.h) on a straight bowel
+// 0.4 m long, at rest, its spheres placed: evaluate() runs it for one tool into `contacts`.
+template <class Law>
+struct ToolLawBench {
+    ToolLawBench() : axis(straight(21, 0.02)), spheres(axis.make_spheres()), force(axis.state.q.size(), 0.0) {
+        spheres.update(axis.state.q.data());
+        contacts.reserve(spheres.size() + 1);
+        law.reserve(spheres.size());
+    }
+    // The tool's contacts 1 ms after its proxy was placed (its commanded pose at rest),
+    // explicit without `lin`; the grasp's rest length `grasp_rest`.
+    void evaluate(enteron::collision::ToolState& tool, const enteron::mechanics::Linearization* lin = nullptr,
+                  double grasp_rest = 0.0) {
+        const double t = 1e-3;
+        contacts.begin(force.data(), lin);
+        const enteron::collision::ShaftAt at = enteron::collision::commanded_shaft(
+            tool.current, tool.target, tool.settings.length, enteron::collision::StepSpan{}, t);
+        law.evaluate(tool, at, t, grasp_rest, axis.state, spheres, contacts);
+    }
+    Axis axis;
+    CollisionSpheres spheres;
+    std::vector<double> force;
+    enteron::collision::ToolContacts contacts{std::pmr::new_delete_resource()};
+    Law law{std::pmr::new_delete_resource()};
 };
 
 // A U-turn: two straight legs along x, `gap` apart axis to axis, joined by a half circle.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The collision spheres (lib/collision/collision_spheres.h): spread evenly by arc length along
 // the axis, centred on the spline, their weights and velocities those of the spline.
 #include "collision/collision_spheres.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The penalty contact law (lib/collision/contact_model.h): it never pulls, damps only
 // while the surfaces approach, and its friction opposes sliding within the Coulomb bound.
 #include "collision/contact_model.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The environment effect (lib/collision/environment_force.h): the contact law of every
 // sphere against the obstacles, mapped to the control points.
 #include "collision/environment_force.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contacts each obstacle of lib/collision/obstacle.h reports for a sphere: depth and
 // unit normal, for box walls and corners, planes, spheres and capsules.
 #include "collision/obstacle.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The passivity observer and limiter (lib/collision/passivity_observer.h) on their own: the
 // work of the wrench on the commanded motion is split into energy in and out; the limiter
 // keeps the balance non-negative within max_force and counts what it took.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Self-contact of the bowel (lib/collision/self_contact_force.h): folds closer than 2R push
 // apart, neighbours along the axis never collide, and the kept list of near pairs finds what
 // a fresh search finds.

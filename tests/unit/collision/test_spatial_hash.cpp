@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The spatial hash (lib/collision/spatial_hash.h) finds exactly the pairs a brute-force
 // search finds, whether built at once or refiled point by point.
 #include "collision/spatial_hash.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contact loads the contact effects share (lib/collision/sphere_loads.h): gathered per
 // sphere and applied once, they equal each effect applying its own.
 #include "collision/sphere_loads.h"

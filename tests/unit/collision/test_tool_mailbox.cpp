@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tools' mailboxes and channels (lib/collision/tool_mailbox.h, tool_channels.h): a pose
 // is taken once, the last post wins, a grasp command is taken once and the last one wins;
 // posts from several threads at once never tear a pose (each pose taken is one that some
@@ -90,26 +91,39 @@ TEST(ToolMailbox, ConcurrentPostsNeverTearAPose) {
     EXPECT_EQ(backwards, 0);
 }
 
+// A tool added with this radius (mm), to tell them apart.
+ToolConfig tool_of_radius(std::size_t millimetres) {
+    ToolConfig tool;
+    tool.settings.radius = 1e-3 * static_cast<double>(millimetres);
+    return tool;
+}
+
 TEST(ToolChannels, ToolsAddedWhileOthersPostKeepEveryMailboxValid) {
     ToolChannels channels(std::pmr::new_delete_resource());
     EXPECT_EQ(channels.size(), 0u);
     EXPECT_EQ(channels.mailbox(0), nullptr);
-    ASSERT_EQ(channels.add(), 0u);
+    EXPECT_EQ(channels.added(0), nullptr);
+    ASSERT_EQ(channels.add(tool_of_radius(0)), 0u);
     ToolMailbox* first = channels.mailbox(0);
     ASSERT_NE(first, nullptr);
 
     std::atomic<bool> done{false};
     std::atomic<long> posts{0};
+    std::atomic<long> wrong{0};
     std::thread poster([&] {
         for (int i = 1; !done.load(); ++i) {
             // Looked up anew each time, as the C API does, while tools are being added.
             if (ToolMailbox* mailbox = channels.mailbox(0)) mailbox->post_pose(pose(i));
             if (ToolMailbox* last = channels.mailbox(channels.size() - 1)) last->post_grasp(ToolMailbox::Grasp::grasp);
+            // What a tool was added with is there as soon as the tool is, and stays.
+            const std::size_t newest = channels.size() - 1;
+            const ToolConfig* added = channels.added(newest);
+            if (added == nullptr || added->settings.radius != 1e-3 * static_cast<double>(newest)) ++wrong;
             ++posts;
         }
     });
     while (posts.load() == 0) std::this_thread::yield();
-    for (std::size_t i = 1; i < 200; ++i) EXPECT_EQ(channels.add(), i);
+    for (std::size_t i = 1; i < 200; ++i) EXPECT_EQ(channels.add(tool_of_radius(i)), i);
     const long before = posts.load();
     while (posts.load() == before) std::this_thread::yield();  // it posted after the last add too
     done = true;
@@ -118,6 +132,8 @@ TEST(ToolChannels, ToolsAddedWhileOthersPostKeepEveryMailboxValid) {
     EXPECT_EQ(channels.outputs().size(), 200u);
     EXPECT_EQ(channels.mailbox(0), first) << "mailboxes never move";
     EXPECT_EQ(channels.mailbox(200), nullptr);
+    EXPECT_EQ(wrong.load(), 0);
+    EXPECT_DOUBLE_EQ(channels.added(199)->settings.radius, 0.199);
     ToolPose taken;
     EXPECT_TRUE(first->take_pose(taken));
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tool's proxy (lib/collision/tool_proxy.h) on its own, against a few collision spheres:
 // in free space it rests where the coupling pulls nothing; pressed into the bowel it stops
 // on its surface however far the device goes, within max_force; and its device stiffness

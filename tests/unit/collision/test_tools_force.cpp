@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tools effect (lib/collision/tools_force.h) on its own: the force of a tool on the
 // bowel and the wrench it reports are action and reaction, within max_force however deep
 // the tool presses, with the torque of the contact points about the tip; a grasp pulled
@@ -36,12 +37,6 @@ constexpr double kStep = 1e-3;  // s
 struct Bench {
     Bench() : axis(straight(21, 0.02)), spheres(axis.make_spheres()), channels(memory), tools(spheres, contact, axis.state, channels, memory) {}
 
-    static std::vector<double> straight(std::size_t n, double spacing) {
-        std::vector<double> q;
-        for (std::size_t i = 0; i < n; ++i) q.insert(q.end(), {spacing * double(i), 0.0, 0.0});
-        return q;
-    }
-
     // A tool along +x from x = -0.1 to 0.5 (the whole bowel under its shaft), its axis
     // `height` above the bowel's.
     static ToolConfig lying_tool(double height, double max_force) {
@@ -60,7 +55,7 @@ struct Bench {
     // the tool's output.
     std::vector<double> step(const enteron::mechanics::State& state, ToolOutput* output) {
         std::vector<double> force(state.q.size(), 0.0);
-        tools.begin_step(axis.state, kStep);
+        tools.take_commands(axis.state, kStep);
         tools.begin_attempt();
         tools.evaluate(state, force.data(), nullptr);
         tools.evaluation_used(kStep, nullptr);  // one explicit evaluation over the whole step
@@ -132,7 +127,7 @@ TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
     enteron::mechanics::State at_end = bench.axis.state;
     at_end.time = bench.axis.state.time + kStep;  // where the tool has reached the new pose
     std::vector<double> force(at_end.q.size(), 0.0);
-    bench.tools.begin_step(bench.axis.state, kStep);
+    bench.tools.take_commands(bench.axis.state, kStep);
     bench.tools.begin_attempt();
     bench.tools.evaluate(at_end, force.data(), nullptr);
     // The grasp slipped: no force on the bowel (the tool is far above it) and no energy

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the tests of lib/mechanics: a small axis and a stretched state of it, and
 // checks of an effect against its energy and against finite differences. Every conservative
 // force must be minus the gradient of its potential energy, and the linearisation handed to

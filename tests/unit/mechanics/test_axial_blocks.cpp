@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The shared axial blocks (lib/mechanics/axial_blocks.h): the stretch and the axial damper
 // adding their blocks into one set equal each adding its own.
 #include "mechanics/axial_blocks.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bdf2 integrator's history and order reduction (lib/mechanics/bdf2.h): a rolled-back
 // step is retried with implicit Euler steps from the history it had; the first substep, a
 // restart, a substep grown beyond the zero-stable ratio and the substep after a change of

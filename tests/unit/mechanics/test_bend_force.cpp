@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bend effect (lib/mechanics/bend_force.h): minus the gradient of its energy, and a
 // linearisation that is its Jacobian.
 #include "mechanics/bend_force.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Damping (lib/mechanics/damping_force.h): a linearisation that is its velocity Jacobian,
 // it only dissipates, and a rigid translation feels only the drag.
 #include "mechanics/damping_force.h"

@@ -1,5 +1,7 @@
-// Dynamics around the step (lib/mechanics/dynamics.h): the effects' step hooks run in order
-// and in the right sequence, and the guard's report finds the effect behind a failure.
+// SPDX-License-Identifier: Apache-2.0
+// Dynamics around the step (lib/mechanics/dynamics.h): the effects' step hooks run in order,
+// the driven effects' (driven_effect.h) only for them, the border is sized for their bodies,
+// and the guard's report finds the effect behind a failure.
 #include <gtest/gtest.h>
 
 #include <memory_resource>
@@ -26,66 +28,105 @@ AxisModel model() {
 
 // Records its hook calls in a shared log; pushes control point `point` with `force` (N) and
 // stores `energy` per metre the point has moved along +x.
-class Recorder final : public Effect {
+class Recorder : public Effect {
 public:
-    Recorder(EffectId id, std::vector<std::string>& log, bool changes_energy, std::size_t point = 0,
-             double force = 0.0, double energy_per_m = 0.0)
-        : id_(id), log_(log), changes_energy_(changes_energy), point_(point), force_(force),
-          energy_per_m_(energy_per_m) {}
+    Recorder(EffectId id, std::vector<std::string>& log, std::size_t point = 0, double force = 0.0,
+             double energy_per_m = 0.0)
+        : id_(id), log_(log), point_(point), force_(force), energy_per_m_(energy_per_m) {}
     EffectId id() const override { return id_; }
     void evaluate(const State&, double* force, const Linearization*) override { force[3 * point_] += force_; }
     double potential_energy(const State& state) const override { return energy_per_m_ * state.q[3 * point_]; }
-    bool begin_step(const State&, double dt) override {
-        log_.push_back(name() + " begin_step " + std::to_string(dt));
-        return changes_energy_;
-    }
+    void begin_step(double dt) override { log_.push_back(name() + " begin_step " + std::to_string(dt)); }
     void begin_attempt() override { log_.push_back(name() + " begin_attempt"); }
-    void end_step(bool accepted) override { log_.push_back(name() + (accepted ? " accepted" : " aborted")); }
 
-private:
+protected:
     std::string name() const { return effect_name(id_); }
     EffectId id_;
     std::vector<std::string>& log_;
-    bool changes_energy_;
     std::size_t point_;
     double force_;
     double energy_per_m_;
 };
 
-TEST(Dynamics, StepHooksRunForEveryEffectInOrder) {
+// An effect driven from outside (driven_effect.h) that records its own hooks too.
+class DrivenRecorder final : public DrivenEffect {
+public:
+    DrivenRecorder(EffectId id, std::vector<std::string>& log, bool changes_energy, std::size_t bodies = 0)
+        : recorder_(id, log), log_(log), changes_energy_(changes_energy), bodies_(bodies) {}
+    EffectId id() const override { return recorder_.id(); }
+    void evaluate(const State& state, double* force, const Linearization* lin) override {
+        recorder_.evaluate(state, force, lin);
+    }
+    void begin_step(double dt) override { recorder_.begin_step(dt); }
+    void begin_attempt() override { recorder_.begin_attempt(); }
+    bool take_commands(const State&, double dt) override {
+        log_.push_back(name() + " take_commands " + std::to_string(dt));
+        return changes_energy_;
+    }
+    void evaluation_used(double duration, const State* after) override {
+        log_.push_back(name() + " used " + std::to_string(duration) + (after != nullptr ? " implicit" : " explicit"));
+    }
+    std::size_t border_bodies() const override { return bodies_; }
+    void end_step(bool accepted) override { log_.push_back(name() + (accepted ? " accepted" : " aborted")); }
+
+private:
+    std::string name() const { return effect_name(recorder_.id()); }
+    Recorder recorder_;
+    std::vector<std::string>& log_;
+    bool changes_energy_;
+    std::size_t bodies_;
+};
+
+TEST(Dynamics, StepHooksRunForEveryEffectInOrderAndTheDrivenOnesOnlyForTheDrivenEffects) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
     Dynamics dynamics(model(), memory);
-    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::tools, log, false));
-    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, false));
+    DrivenRecorder& tools = dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::tools, log, false));
+    Recorder& environment = dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log));
+    EXPECT_EQ(tools.id(), EffectId::tools) << "add_effect hands back the effect added, typed";
+    EXPECT_EQ(environment.id(), EffectId::environment);
     dynamics.finalize();
     State state;
     state.resize(kPoints);
 
-    EXPECT_FALSE(dynamics.begin_step(state, 0.5)) << "no effect changed its energy";
+    EXPECT_FALSE(dynamics.take_commands(state, 0.5)) << "no effect changed its energy";
+    dynamics.begin_step(0.5);
     dynamics.begin_attempt();
+    dynamics.evaluation_used(0.25, nullptr);
     dynamics.begin_attempt();
+    dynamics.evaluation_used(0.5, &state);
     dynamics.end_step(false);
     dynamics.end_step(true);
     const std::vector<std::string> expected = {
-        "tools begin_step 0.500000",    "environment begin_step 0.500000", "tools begin_attempt",
-        "environment begin_attempt",    "tools begin_attempt",             "environment begin_attempt",
-        "tools aborted",                "environment aborted",             "tools accepted",
-        "environment accepted"};
+        "tools take_commands 0.500000", "tools begin_step 0.500000", "environment begin_step 0.500000",
+        "tools begin_attempt",          "environment begin_attempt", "tools used 0.250000 explicit",
+        "tools begin_attempt",          "environment begin_attempt", "tools used 0.500000 implicit",
+        "tools aborted",                "tools accepted"};
     EXPECT_EQ(log, expected);
 }
 
-TEST(Dynamics, BeginStepReportsAnEffectThatChangedItsEnergy) {
+TEST(Dynamics, TakeCommandsReportsADrivenEffectThatChangedItsEnergy) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
     Dynamics dynamics(model(), memory);
-    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::stretch, log, false));
-    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::tools, log, true));
+    dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::tools, log, true));
+    dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::stretch, log, false));
     dynamics.finalize();
     State state;
     state.resize(kPoints);
-    EXPECT_TRUE(dynamics.begin_step(state, 1e-3));
-    EXPECT_EQ(log.size(), 2u) << "every effect's hook runs, also after one reported a change";
+    EXPECT_TRUE(dynamics.take_commands(state, 1e-3));
+    EXPECT_EQ(log.size(), 2u) << "every driven effect's hook runs, also after one reported a change";
+}
+
+TEST(Dynamics, TheBorderHoldsTheBodiesOfEveryDrivenEffect) {
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    std::vector<std::string> log;
+    Dynamics dynamics(model(), memory);
+    dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::tools, log, false, 2));
+    dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::environment, log, false, 1));
+    dynamics.finalize();
+    ASSERT_NE(dynamics.border(), nullptr);
+    EXPECT_EQ(dynamics.border()->capacity(), 3u);
 }
 
 TEST(Dynamics, TheStrongestForceOnAPointAndTheLargestEnergyGainNameTheirEffects) {
@@ -94,9 +135,9 @@ TEST(Dynamics, TheStrongestForceOnAPointAndTheLargestEnergyGainNameTheirEffects)
     Dynamics dynamics(model(), memory);
     dynamics.add_effect(make_owned<GravityForce>(memory, model(), enteron::Vec3(0.0, 0.0, -9.81), memory));
     // Pushes point 3 with 100 N, far more than its weight (about 0.3 N); stores 5 J/m.
-    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, false, 3, 100.0, 5.0));
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, 3, 100.0, 5.0));
     // Pushes point 1 with 0.01 N; stores 1 J/m of point 1's x.
-    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::mesentery, log, false, 1, 0.01, 1.0));
+    dynamics.add_effect(make_owned<Recorder>(memory, EffectId::mesentery, log, 1, 0.01, 1.0));
     dynamics.finalize();
     State before;
     before.resize(kPoints);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gravity (lib/mechanics/gravity_force.h): minus the gradient of its energy, summing to the
 // weight of the bowel.
 #include "mechanics/gravity_force.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mesentery (lib/mechanics/mesentery_force.h): tension-only springs, minus the gradient
 // of their energy with a linearisation that is their Jacobian; slack springs pull nothing.
 #include "mechanics/mesentery_force.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The products of lib/mechanics/per_coordinate_matrix.h by diagonals against the band
 // matrix's own row-by-row multiply: the same terms in the same order, so the same bits, at
 // every size (bands shorter than 7 points run only the edge rows).

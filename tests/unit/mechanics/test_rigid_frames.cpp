@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid frames moved between steps: within a step the origin moves linearly and the
 // orientation by nlerp, the velocity is the pose change over the step (or the one given),
 // the frame rests at its target once the step is accepted and stays where it was if not,

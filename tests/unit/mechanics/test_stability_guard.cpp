@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stability guard (lib/mechanics/stability_guard.h): each check rejects exactly past its
 // bound, says what it found (the check, the control point, by how much), and every rejection
 // counts one rollback.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stretch effect (lib/mechanics/stretch_force.h): minus the gradient of its energy, zero
 // at rest, the energy of a uniform stretch, and a linearisation that is its Jacobian.
 #include "mechanics/stretch_force.h"

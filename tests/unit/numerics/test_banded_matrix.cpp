@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The banded SPD matrix of lib/numerics against a dense reference written here.
 #include "numerics/banded_matrix.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The JSON v1 loader (lib/scene/json_loader.h): what a document turns into, and the exact
 // error (code and message) for each kind of mistake.
 #include <gtest/gtest.h>
@@ -447,13 +448,20 @@ TEST(JsonLoader, ValuesOutOfRangeNameThePathAndTheLimit) {
         {R"({"intestine": {"shape": {"kind": "line", "direction": [0, 0, 0]}}})",
          "intestine.shape.direction must be non-zero, got [0, 0, 0]"},
         {R"({"intestine": {"shape": {"kind": "line", "direction": [1e200, 0, 0]}}})",
-         "intestine.shape.direction must have a finite length, got [1e+200, 0, 0]"},
+         "intestine.shape.direction must have a length between 1e-150 and 1e150, got [1e+200, 0, 0]"},
         {R"({"intestine": {"shape": {"kind": "serpentine", "leg_length": 0}}})",
          "intestine.shape.leg_length must be > 0, got 0"},
         {R"({"intestine": {"radius": 0.01, "shape": {"kind": "serpentine", "leg_spacing": 0.015}}})",
          "intestine.shape.leg_spacing must be >= 2 x intestine.radius (0.02), got 0.015"},
         {R"({"intestine": {"shape": {"helix_radius": -0.1}}})",
          "intestine.shape.helix_radius must be > 0, got -0.1"},
+        // A size whose square overflows left the helix no points to place: the scene hung.
+        {R"({"intestine": {"shape": {"helix_radius": 1e200}}})",
+         "intestine.shape.helix_radius must be <= 1000, got 1e+200"},
+        {R"({"intestine": {"shape": {"helix_pitch": 1e300}}})",
+         "intestine.shape.helix_pitch must be <= 1000, got 1e+300"},
+        {R"({"intestine": {"shape": {"kind": "serpentine", "leg_length": 1001}}})",
+         "intestine.shape.leg_length must be <= 1000, got 1001"},
         {R"({"intestine": {"radius": 0.0125, "shape": {"helix_pitch": 0.01}}})",
          "intestine.shape.helix_pitch must be >= 2 x intestine.radius (0.025), got 0.01"},
         {R"({"intestine": {"control_points": 5, "shape": {"kind": "points",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ranges a human abdomen gives a scene (lib/scene/plausible_ranges.h): a value inside is
 // silent, one outside names itself and, where a unit mistake explains it, that mistake; the
 // warnings name each key as the caller wrote it.
@@ -9,6 +10,7 @@
 #include "base/logger.h"
 #include "scene/plausible_ranges.h"
 #include "scene/scene_config.h"
+#include "scene/scene_table.h"
 #include "scene/validate.h"
 
 namespace enteron::scene {
@@ -29,7 +31,7 @@ std::vector<std::string> warnings_of(const SceneConfig& config, const FieldNames
 }
 
 TEST(PlausibleRanges, AValueInsideIsSilentAndOneOutsideNamesTheLikelyUnit) {
-    const PlausibleRange& radius = *plausible_range(Field::radius);
+    const PlausibleRange& radius = *find_path(scene_block(), "intestine.radius").field->plausible;
     EXPECT_EQ(implausibility(radius, 0.0125), "");
     const std::string millimetres = implausibility(radius, 12.5);
     EXPECT_TRUE(contains(millimetres, "12.5 m is far above a human small bowel's radius")) << millimetres;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The snapshot publisher (lib/scene/snapshot.h): readers see the latest published state and
 // keep the slot they pinned unchanged while they read it; the writer never fills a pinned
 // slot (it skips a publication when every other slot is pinned); and a reader on another

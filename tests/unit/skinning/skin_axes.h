@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact axes for the skinning tests: control points of a straight line, a tight U-turn and
 // a coil. The spline passes through its control points, so these are the axes themselves
 // (up to the spline's small deviation between points on the curved parts).

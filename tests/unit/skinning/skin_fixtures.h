@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the skinning tests: the default radius, the default settings of each method,
 // and a skin updated on an axis and measured against the ideal tube.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The iso-value calibrated for the bend of the axis (lib/skinning/bend_calibration.h): on
 // exact tight folds (arcs, U-turns, coils of radius 1.5 R to 4 R, the analytic tube of
 // radius R as reference) both implicit skins stay within 1 % RMS of R.

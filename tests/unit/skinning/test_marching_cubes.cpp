@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Marching cubes on sparse voxel blocks (lib/skinning/marching_cubes.h): random fields give
 // closed, consistently wound surfaces, across blocks too.
 #include "skinning/marching_cubes.h"

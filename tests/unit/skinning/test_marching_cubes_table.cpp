@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The marching cubes table (lib/skinning/marching_cubes_table.h): single-corner cases face
 // away from the inside corner, and no triangle edge joins what a face leaves apart.
 #include "skinning/marching_cubes_table.h"

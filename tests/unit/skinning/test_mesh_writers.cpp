@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OBJ and PLY writers (lib/skinning/mesh_writers.h) describe the mesh.
 #include "skinning/mesh_writers.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ring placement (lib/skinning/ring_placement.h): rings come closer on a bend by the chord
 // error bound.
 #include "skinning/ring_placement.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rotation-minimising frames (lib/skinning/rotation_minimizing_frames.h) stay orthonormal
 // and do not twist on a planar curve.
 #include "skinning/rotation_minimizing_frames.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The closed-form convolution of a segment with 1/r^3 (lib/skinning/segment_kernel.h)
 // against a numerical integral.
 #include "skinning/segment_kernel.h"

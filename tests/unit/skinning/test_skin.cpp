@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The skins (lib/skinning/skin.h) on exact axes: accuracy against the ideal tube, no
 // blending between folds, closed meshes, warm starts.
 #include "skinning/skin.h"

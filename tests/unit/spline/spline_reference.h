@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test-side reference of the spline of docs/architecture.md, written from the formula and
 // not from lib/spline: the uniform Catmull-Rom segment on explicit phantom points
 // q_{-1} = 2 q_0 - q_1 and q_n = 2 q_{n-1} - q_{n-2}, plus helpers shared by the unit tests.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Arc length along the spline (lib/spline/arc_length.h).
 #include "spline/arc_length.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Catmull-Rom basis of lib/spline: interpolation, C1 joints, partition of unity, the end
 // treatment, and agreement with the formula of docs/architecture.md.
 #include "spline/catmull_rom.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gram matrices of the spline basis (lib/spline/gram_matrix.h), checked against integrals
 // computed here with Simpson's rule over the formula of docs/architecture.md.
 #include "spline/gram_matrix.h"
