@@ -17,6 +17,17 @@
 // (ring_spacing_radii) against rings closer where the axis bends
 // (ring_chord_error_radii, at most R apart), at 16 segments: error against triangles.
 //
+// Contacts (docs/skinning.md): every row has the contact measures of ent_skin_metrics as
+// counters (overlap_pct: the deepest vertex inside another fold's skin, % of R;
+// overlap_area_mm2; tube_overlap_pct: inside another fold's ideal tube; gap_pct: the contact
+// surfaces' largest gap; shape_volume_pct; free_rms_pct: the radius error away from
+// contacts and bends tighter than R), and <pile>/<method>/default_no_contacts the same skin
+// with contact_surfaces 0, for the cost of the contacts. <pile>/convolution/skeleton_*: the
+// skeleton following the curvature (skeleton_spacing_radii h, skeleton_chord_error_radii e)
+// against even ones. popping/<pile>/<method>: a tool sweeps through the settled pile, the
+// skin updated every 16 ms of simulation: the largest motion of a vertex beyond the motion
+// of its axis point between two updates (excess_pct, % of R), over 40 updates.
+//
 // marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
 // (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
 // grid: the point-skeleton field of the settled demo pile (the library's internals, not the
@@ -28,12 +39,16 @@
 //
 // --mesh_dir=DIR also writes the mesh of each method at its default resolution, all of the
 // same state of the demo pile, as DIR/<method>.ply and DIR/<method>.obj
-// (scripts/render_mesh.py draws them).
+// (scripts/render_mesh.py draws them). --contact_mesh_dir=DIR writes a fold pressed 0.3 R
+// into another (two legs of a U-turn), each method with contact surfaces and without, as
+// DIR/<method>_{contacts,through}.ply (scripts/render_contacts.py draws their cross-sections
+// through the contact: docs/images/skin_contacts.png).
 #include <enteron/enteron.h>
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -76,6 +91,8 @@ struct Resolution {
     uint32_t segments;
     double ring_spacing, skeleton_spacing, voxel_size;
     double ring_chord_error = 0.0;
+    int32_t contact_surfaces = 1;
+    double skeleton_chord_error = 0.0;
 };
 constexpr Resolution kResolutions[] = {
     {"coarse", 8, 1.0, 0.5, 0.5},
@@ -100,6 +117,8 @@ ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resoluti
     desc.skeleton_spacing_radii = resolution.skeleton_spacing;
     desc.voxel_size_radii = resolution.voxel_size;
     desc.ring_chord_error_radii = resolution.ring_chord_error;
+    desc.contact_surfaces = resolution.contact_surfaces;
+    desc.skeleton_chord_error_radii = resolution.skeleton_chord_error;
     ent_skin* skin = nullptr;
     if (ent_skin_create(scene, &desc, &skin) != ENT_OK || ent_skin_update(skin) != ENT_OK ||
         ent_skin_update(skin) != ENT_OK) {
@@ -145,8 +164,65 @@ void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pil
         state.counters["blended"] = m.blended_vertices;
         state.counters["inverted"] = m.inverted_triangles;
         state.counters["watertight"] = m.watertight;
+        state.counters["overlap_pct"] = 100.0 * m.overlap_depth_max;
+        state.counters["overlap_area_mm2"] = 1e6 * m.overlap_area_m2;
+        state.counters["tube_overlap_pct"] = 100.0 * m.tube_overlap_depth_max;
+        state.counters["gap_pct"] = 100.0 * m.contact_gap_max;
+        state.counters["shape_volume_pct"] = 100.0 * m.shape_volume_error;
+        state.counters["free_rms_pct"] = 100.0 * m.free_radius_error_rms;
     }
     ent_skin_destroy(skin);
+}
+
+// A tool sweeps through the settled pile while the skin follows at 60 Hz: the largest
+// motion of a vertex beyond the motion of its axis point between two updates.
+void popping_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method) {
+    for (auto _ : state) {
+        ent_scene* scene = enteron::bench::settle_pile(*pile);
+        ent_skin* skin = scene != nullptr ? make_skin(scene, method, kDefault) : nullptr;
+        if (skin == nullptr) {
+            state.SkipWithError(ent_last_error());
+            ent_scene_destroy(scene);
+            return;
+        }
+        // The tool: vertical, from one side of the pile to the other 2 R above its floor.
+        double box[6];
+        enteron::bench::axis_bounds(scene, box);
+        ent_tool_desc tool;
+        ent_tool_desc_default(&tool);
+        tool.max_force_N = 8.0;
+        const double y = 0.5 * (box[1] + box[4]), z = box[2] + 2.0 * kRadius;
+        tool.position_m[0] = box[0] - 2.0 * kRadius;
+        tool.position_m[1] = y;
+        tool.position_m[2] = z;
+        int32_t id = -1;
+        const double identity[4] = {1.0, 0.0, 0.0, 0.0};
+        double excess = 0.0, motion = 0.0;
+        constexpr int kFrames = 40;
+        if (ent_tool_add(scene, &tool, &id) == ENT_OK) {
+            for (int frame = 1; frame <= kFrames; ++frame) {
+                for (int step = 0; step < 16; ++step) {
+                    const double a = double((frame - 1) * 16 + step) / (kFrames * 16.0);
+                    const double p[3] = {box[0] - 2.0 * kRadius + a * (box[3] - box[0] + 4.0 * kRadius), y, z};
+                    ent_tool_set_pose(scene, id, p, identity);
+                    ent_scene_step(scene, 1e-3);
+                }
+                ent_skin_update(skin);
+                struct ent_skin_metrics m;
+                std::memset(&m, 0, sizeof m);
+                m.struct_size = sizeof m;
+                if (ent_skin_metrics(skin, &m) == ENT_OK) {
+                    excess = std::max(excess, m.vertex_excess_motion_max);
+                    motion = std::max(motion, m.vertex_motion_max);
+                }
+            }
+        }
+        state.counters["excess_pct"] = 100.0 * excess;
+        state.counters["motion_pct"] = 100.0 * motion;
+        state.counters["updates"] = kFrames;
+        ent_skin_destroy(skin);
+        ent_scene_destroy(scene);
+    }
 }
 
 // ---- meshes for people ----------------------------------------------------------------
@@ -180,6 +256,59 @@ bool write_meshes(const std::string& dir) {
                      view.triangle_count);
     }
     return true;
+}
+
+// A fold pressed into another: the legs of a U-turn 3 R apart along -x, the middle of the
+// second (x = -0.1 m) pushed 1.3 R towards the first over 6 R either way, so that their
+// tubes overlap by 0.3 R there; each method with and without contact surfaces.
+bool write_contact_meshes(const std::string& dir) {
+    std::vector<double> q;
+    const double leg = 0.2, r = 1.5 * kRadius, step = 0.25 * kRadius, pi = 3.14159265358979323846;
+    for (double x = -leg; x < 0.0; x += step) q.insert(q.end(), {x, -r, 0.0});
+    for (int i = 0; i < 12; ++i) q.insert(q.end(), {r * std::sin(pi * i / 12), -r * std::cos(pi * i / 12), 0.0});
+    for (double x = 0.0; x >= -leg - 1e-9; x -= step) {
+        const double c = std::fabs(x + 0.1) < 6.0 * kRadius ? std::cos(0.5 * pi * (x + 0.1) / (6.0 * kRadius)) : 0.0;
+        q.insert(q.end(), {x, r - 1.3 * kRadius * c * c, 0.0});
+    }
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    desc.effects = 0;
+    desc.shape = ENT_SHAPE_POINTS;
+    desc.control_points = uint32_t(q.size() / 3);
+    desc.shape_points_xyz_m = q.data();
+    desc.radius_m = kRadius;
+    ent_scene* scene = nullptr;
+    if (ent_scene_create(&desc, &scene) != ENT_OK) return false;
+    bool ok = true;
+    for (const Method& method : kMethods)
+        for (int32_t contacts : {1, 0}) {
+            Resolution resolution = kDefault;
+            resolution.contact_surfaces = contacts;
+            ent_skin* skin = make_skin(scene, method.id, resolution);
+            const ent_mesh_view view = skin != nullptr ? enteron::bench::mesh_of(skin) : ent_mesh_view{};
+            if (skin == nullptr || view.vertex_count == 0) {
+                std::fprintf(stderr, "skin %s: %s\n", method.name, ent_last_error());
+                ent_skin_destroy(skin);
+                ok = false;
+                continue;
+            }
+            sk::Mesh mesh;
+            mesh.positions.assign(view.positions_xyz_m, view.positions_xyz_m + 3 * std::size_t(view.vertex_count));
+            mesh.normals.assign(view.normals_xyz, view.normals_xyz + 3 * std::size_t(view.vertex_count));
+            mesh.u.assign(view.axis_u, view.axis_u + view.vertex_count);
+            mesh.indices.assign(view.indices, view.indices + 3 * std::size_t(view.triangle_count));
+            ent_skin_destroy(skin);
+            const std::string path = dir + "/" + method.name + (contacts ? "_contacts.ply" : "_through.ply");
+            std::ofstream ply(path, std::ios::binary);
+            if (!sk::write_ply(mesh, ply)) {
+                std::fprintf(stderr, "cannot write %s\n", path.c_str());
+                ok = false;
+                continue;
+            }
+            std::fprintf(stderr, "wrote %s (%zu triangles)\n", path.c_str(), mesh.triangle_count());
+        }
+    ent_scene_destroy(scene);
+    return ok;
 }
 
 // ---- marching cubes against VTK on the same field ---------------------------------------
@@ -319,12 +448,14 @@ void vtk_marching_cubes(benchmark::State& state, enteron::peers::VtkFilter filte
 
 int main(int argc, char** argv) {
     // Our own flag first (Google Benchmark refuses flags it does not know).
-    std::string mesh_dir;
+    std::string mesh_dir, contact_mesh_dir;
     int kept = 1;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument.rfind("--mesh_dir=", 0) == 0) {
             mesh_dir = argument.substr(std::strlen("--mesh_dir="));
+        } else if (argument.rfind("--contact_mesh_dir=", 0) == 0) {
+            contact_mesh_dir = argument.substr(std::strlen("--contact_mesh_dir="));
         } else {
             argv[kept++] = argv[i];
         }
@@ -340,6 +471,33 @@ int main(int argc, char** argv) {
                 benchmark::RegisterBenchmark(name.c_str(), skin_benchmark, &pile, method.id, resolution)
                     ->Unit(benchmark::kMillisecond);
             }
+    // Contacts: the default skins without contact surfaces, for their cost; the convolution's
+    // skeleton following the curvature.
+    for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) {
+        const std::string prefix = &pile == &enteron::bench::kSkinPiles[0] ? "skin" : pile.name;
+        for (const Method& method : kMethods) {
+            if (method.id == ENT_SKIN_TUBE) continue;  // no contact surfaces
+            Resolution without = kDefault;
+            without.contact_surfaces = 0;
+            benchmark::RegisterBenchmark((prefix + "/" + method.name + "/default_no_contacts").c_str(), skin_benchmark,
+                                         &pile, method.id, without)
+                ->Unit(benchmark::kMillisecond);
+        }
+        for (const auto& [h, e] : {std::pair{1.0, 0.0}, {1.0, 0.01}, {1.0, 0.005}, {1.0, 0.002}, {0.5, 0.002}}) {
+            char name[96];
+            std::snprintf(name, sizeof name, "%s/convolution/skeleton_h%.2f_e%.3f", prefix.c_str(), h, e);
+            Resolution follows = kDefault;
+            follows.skeleton_spacing = h;
+            follows.skeleton_chord_error = e;
+            benchmark::RegisterBenchmark(name, skin_benchmark, &pile, ENT_SKIN_CONVOLUTION, follows)
+                ->Unit(benchmark::kMillisecond);
+        }
+        for (const Method& method : kMethods)
+            benchmark::RegisterBenchmark((std::string("popping/") + pile.name + "/" + method.name).c_str(),
+                                         popping_benchmark, &pile, method.id)
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(1);
+    }
     // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
     for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
         char name[64];
@@ -373,6 +531,7 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     if (!mesh_dir.empty() && !write_meshes(mesh_dir)) return 1;
+    if (!contact_mesh_dir.empty() && !write_contact_meshes(contact_mesh_dir)) return 1;
     for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) {
         const ent_scene* scene = settled(pile);
         if (scene == nullptr) continue;

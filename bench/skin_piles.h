@@ -75,6 +75,18 @@ inline ent_scene* settle_pile(const SkinPile& pile) {
     return scene;
 }
 
+// The box around the axis of `scene` (sampled every R / 8 or so): min x y z, max x y z, m.
+inline void axis_bounds(const ent_scene* scene, double box[6]) {
+    std::vector<double> points(3 * 2000);
+    for (int c = 0; c < 3; ++c) box[c] = 1e300, box[c + 3] = -1e300;
+    if (ent_scene_axis(scene, 2000, points.data()) != ENT_OK) return;
+    for (std::size_t i = 0; i < 2000; ++i)
+        for (int c = 0; c < 3; ++c) {
+            box[c] = std::min(box[c], points[3 * i + std::size_t(c)]);
+            box[c + 3] = std::max(box[c + 3], points[3 * i + std::size_t(c)]);
+        }
+}
+
 // The skin's mesh view (ent_skin_mesh), or an empty one (vertex_count 0) on failure.
 inline ent_mesh_view mesh_of(const ent_skin* skin) {
     ent_mesh_view view;
@@ -82,6 +94,51 @@ inline ent_mesh_view mesh_of(const ent_skin* skin) {
     view.struct_size = sizeof view;
     if (ent_skin_mesh(skin, &view) != ENT_OK) view.vertex_count = 0;
     return view;
+}
+
+// A fold pressed by a tool in a small pile: a limp 0.6 m bowel released as a coil into a
+// small box settles for 1.5 s into loops resting on each other; a vertical tool then
+// comes down on the highest point of its axis and presses, with 8 N, 4 R down over 0.3 s
+// and holds for 0.2 s. The tool's tip (its last commanded position) in `tip`. NULL on
+// failure (ent_last_error() says why).
+inline ent_scene* pressed_small_pile(double tip[3]) {
+    static const char json[] =
+        "{\"intestine\": {\"length\": 0.6, \"radius\": 0.0125, \"control_points\": 48, \"linear_density\": 0.3,"
+        " \"stretch_stiffness\": 100, \"bend_stiffness\": 2e-5,"
+        " \"shape\": {\"kind\": \"helix\", \"center\": [0, 0, 0.05], \"helix_radius\": 0.03, \"helix_pitch\": 0.03}},"
+        " \"solver\": {\"integrator\": \"implicit_euler\", \"timestep\": 0.001}, \"gravity\": [0, 0, -9.81],"
+        " \"damping\": {\"drag\": 0.05, \"stretch\": 0.05, \"bend\": 0},"
+        " \"environment\": [{\"type\": \"box_inside\", \"center\": [0, 0, 0.1], \"half_extents\": [0.06, 0.06, 0.1]}],"
+        " \"self_collision\": {}}";
+    const double radius = 0.0125;
+    ent_scene* scene = nullptr;
+    if (ent_scene_create_json(json, sizeof json - 1, &scene) != ENT_OK) return nullptr;
+    const auto fail = [&] {
+        ent_scene_destroy(scene);
+        return nullptr;
+    };
+    for (int i = 0; i < 1500; ++i)
+        if (ent_scene_step(scene, 1e-3) != ENT_OK) return fail();
+    std::vector<double> axis(3 * 400);
+    if (ent_scene_axis(scene, 400, axis.data()) != ENT_OK) return fail();
+    double top[3] = {0.0, 0.0, -1e300};
+    for (std::size_t i = 0; i < axis.size(); i += 3)
+        if (axis[i + 2] > top[2]) std::copy(&axis[i], &axis[i] + 3, top);
+    ent_tool_desc tool;
+    ent_tool_desc_default(&tool);
+    tool.max_force_N = 8.0;
+    std::copy(top, top + 3, tool.position_m);
+    tool.position_m[2] += 2.0 * radius;
+    int32_t id = -1;
+    if (ent_tool_add(scene, &tool, &id) != ENT_OK) return fail();
+    const double identity[4] = {1.0, 0.0, 0.0, 0.0};
+    for (int i = 1; i <= 500; ++i) {
+        tip[0] = top[0];
+        tip[1] = top[1];
+        tip[2] = top[2] + 2.0 * radius - 4.0 * radius * std::min(1.0, i / 300.0);
+        if (ent_tool_set_pose(scene, id, tip, identity) != ENT_OK || ent_scene_step(scene, 1e-3) != ENT_OK) return fail();
+    }
+    return scene;
 }
 
 // How tightly an axis bends, in units of the bowel's radius R.

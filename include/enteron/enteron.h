@@ -1376,6 +1376,23 @@ typedef struct ent_skin_desc {
      *  the stretch. point_skeleton: ignored, its topology changes on every update. Added after
      *  ring_chord_error_radii: a caller built against an older, smaller ent_skin_desc gets 1. */
     int32_t stable_topology;
+    /** point_skeleton, convolution: 1 (default) where two folds press into each other (their tubes of radius R
+     *  around the axis overlap, the axis more than pi R apart along it) their surfaces meet on a shared contact
+     *  surface, half-way between the two axes, instead of passing through each other, and the volume pushed out
+     *  of the contact shows as a bulge beside it that keeps each cross-section's area (at most 11 % of R high,
+     *  reaching at most 0.75 R from the other fold; more is lost: ent_skin_metrics.shape_volume_error). Continuous
+     *  as contacts come and go. 0: the folds' surfaces pass through each other. The tube has no contact surfaces
+     *  (they would cost several times its update; docs/skinning.md). Every method keeps its rings from folding
+     *  over at bends tighter than R, whatever this says. Added after stable_topology: a caller built against an
+     *  older, smaller ent_skin_desc gets 1. */
+    int32_t contact_surfaces;
+    /** convolution: 0 (default) places the segment ends evenly, skeleton_spacing_radii apart. Above 0 (in R, up to
+     *  0.1) they follow the axis' curvature: closer where it bends, so that the polyline departs from the axis by
+     *  at most this (its chords' sag), from skeleton_spacing_radii on straight parts down to an eighth of it (e.g.
+     *  skeleton_spacing_radii 1 with 0.005: on a gently folded bowel the accuracy of even R / 4 for less time;
+     *  docs/skinning.md). point_skeleton: ignored (its points stay even). Added with contact_surfaces: an older,
+     *  smaller ent_skin_desc gets 0. */
+    double skeleton_chord_error_radii;
 } ent_skin_desc;
 
 /**
@@ -1495,6 +1512,40 @@ struct ent_skin_metrics {
      *  Added after the first skins: not written for an older, smaller struct_size. */
     double facet_error_rms;
     double facet_error_max;        /**< largest of those. */
+    /* Where folds meet, and motion between updates. Added after facet_error_max: not written for an older,
+     * smaller struct_size.
+     * "Another fold" of a vertex: the mesh and axis more than pi R away along the axis from the vertex's own
+     * axis point (the mechanics' neighbour window). Depths, gaps and motions in units of R. */
+    /** Deepest vertex inside another fold's part of the mesh (signed distance to its nearest triangle): 0 when
+     *  the folds meet on contact surfaces, the folds' pressing depth when their surfaces pass through each other. */
+    double overlap_depth_max;
+    /** Area of the triangles whose three corners lie inside another fold's part of the mesh by more than R / 100, m^2. */
+    double overlap_area_m2;
+    /** Deepest vertex inside another fold's ideal tube (radius R around its axis): how hard the folds press. */
+    double tube_overlap_depth_max;
+    /** Area of the triangles whose three corners lie inside another fold's ideal tube by more than R / 100, m^2:
+     *  about the contact surfaces' area. */
+    double tube_overlap_area_m2;
+    /** Largest distance from a vertex inside another fold's ideal tube to that fold's skin, where the vertex lies
+     *  outside it: folds pressed together whose surfaces do not meet. */
+    double contact_gap_max;
+    /** (V - V_tube) / V_tube, V_tube the volume of the same triangles with every vertex moved onto the ideal tube
+     *  (R from its own axis point, in its own direction): the volume the skin's shape adds or loses (contacts,
+     *  bulges, radius error), without the share of the facets and the rounded ends that volume_error carries. */
+    double shape_volume_error;
+    /** RMS radius error (like radius_error_rms) over the vertices nothing may deform: farther than 1.75 R from any
+     *  other fold's axis, where the axis (R either way) bends with a radius above R. */
+    double free_radius_error_rms;
+    /** Largest distance from a vertex to the previous update's mesh: how far the surface moved there (a vertex
+     *  sliding along the surface does not count), at most 1. */
+    double vertex_motion_max;
+    /** Largest amount by which the surface at a vertex moved farther, since the update before, than the tube
+     *  around its own axis point A(u) did (|dA(u)| + R |dt(u)|, t the axis' tangent): popping, a change of the
+     *  surface the axis under it does not explain. */
+    double vertex_excess_motion_max;
+    uint32_t free_vertex_count;    /**< vertices free_radius_error_rms is over. */
+    /** 1 if vertex_motion_max and vertex_excess_motion_max compare with an update before (from the second update on), else 0. */
+    int32_t has_previous_update;
 };
 
 /**

@@ -272,6 +272,12 @@ public:
         detail::check(ent_tool_read_stats(scene_, id_, &out));
         return out;
     }
+    /** The settings it was added with and the pose it was added at (ent_tool_read_desc). */
+    ToolDesc desc() const {
+        ToolDesc out;
+        detail::check(ent_tool_read_desc(scene_, id_, &out));
+        return out;
+    }
     /** Takes the tool out of the scene from the next step on (ent_tool_remove; a driving
      *  call); its id is not reused, and this handle's calls then throw ENT_ERROR_NOT_FOUND. */
     void remove() { detail::check(ent_tool_remove(scene_, id_)); }
@@ -371,6 +377,12 @@ public:
     ent_stats stats() const {
         ent_stats out = sized<ent_stats>();
         detail::check(ent_scene_stats(scene_, &out));
+        return out;
+    }
+    /** The description it was made from, without its arrays (ent_scene_read_desc). */
+    SceneDesc desc() const {
+        SceneDesc out;
+        detail::check(ent_scene_read_desc(scene_, &out));
         return out;
     }
     ent_effect_stats effect_stats(int32_t effect) const {

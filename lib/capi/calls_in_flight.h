@@ -7,8 +7,9 @@
 // owner's count. Whoever brings the count to zero tears the object down: the destroy itself
 // when no call is in flight, else the last call in flight as it returns (on its thread, so
 // the memory goes then). A call that starts after the destroy while the handle still exists
-// (a skin holds its scene's handle, or a call is still in flight) finds the count at zero
-// and fails with a status without touching the object.
+// (a skin holds its scene's handle, or a call is still in flight) finds the object
+// destroyed (the count at zero, or the destroyed flag set) and fails with a status without
+// touching it.
 //
 // Entering and leaving are one atomic read-modify-write each on the handle: no lock, no
 // system call, no allocation, so the step keeps its promises (tests/no_alloc).
@@ -21,11 +22,12 @@ namespace enteron::capi {
 
 class CallsInFlight {
 public:
-    // Counts a call in; false once the object was destroyed (the call must not touch it).
+    // Counts a call in; false once the object was destroyed (the call must not touch it),
+    // also while calls begun before the destroy still run.
     bool enter() noexcept {
         uint32_t users = users_.load(std::memory_order_relaxed);
         do {
-            if (users == 0) return false;
+            if (users == 0 || destroyed_.load(std::memory_order_relaxed)) return false;
         } while (!users_.compare_exchange_weak(users, users + 1, std::memory_order_acquire, std::memory_order_relaxed));
         return true;
     }

@@ -91,11 +91,13 @@ void check_knob(T value, T low, T high, const char* field) {
 // field its header lacks; those fields take their defaults.
 //   0.1 first skins  without ring_chord_error_radii.
 //   0.1 skins' LOD   without stable_topology.
-//   0.1              the current header.
+//   0.1              without contact_surfaces and skeleton_chord_error_radii.
+//   the current header.
 void check_skin_desc_size(uint32_t struct_size) {
     enteron::capi::check_struct_size(struct_size,
                                      {offsetof(ent_skin_desc, ring_chord_error_radii),
-                                      offsetof(ent_skin_desc, stable_topology), sizeof(ent_skin_desc)},
+                                      offsetof(ent_skin_desc, stable_topology),
+                                      offsetof(ent_skin_desc, contact_surfaces), sizeof(ent_skin_desc)},
                                      "ent_skin_desc");
 }
 
@@ -105,11 +107,14 @@ void check_mesh_view_size(uint32_t struct_size) {
                                      "ent_mesh_view");
 }
 
-// The sizes of ent_skin_metrics: without facet_error_rms and facet_error_max, and now.
+// The sizes of ent_skin_metrics: without facet_error_rms and facet_error_max, without the
+// contact and motion measures (overlap_depth_max and what follows), and now.
 void check_skin_metrics_size(uint32_t struct_size) {
-    enteron::capi::check_struct_size(
-        struct_size, {offsetof(struct ent_skin_metrics, facet_error_rms), sizeof(struct ent_skin_metrics)},
-        "ent_skin_metrics");
+    enteron::capi::check_struct_size(struct_size,
+                                     {offsetof(struct ent_skin_metrics, facet_error_rms),
+                                      offsetof(struct ent_skin_metrics, overlap_depth_max),
+                                      sizeof(struct ent_skin_metrics)},
+                                     "ent_skin_metrics");
 }
 
 ent_skin_desc default_desc() {
@@ -124,6 +129,8 @@ ent_skin_desc default_desc() {
     defaults.window_radii = 1.0;
     defaults.ring_chord_error_radii = 0.0;
     defaults.stable_topology = 1;
+    defaults.contact_surfaces = 1;
+    defaults.skeleton_chord_error_radii = 0.0;
     return defaults;
 }
 
@@ -147,6 +154,8 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, d
         .below(2.0);
     check_knob(desc.ring_chord_error_radii, 0.0, 1.0, "ring_chord_error_radii");
     check_knob(desc.stable_topology, 0, 1, "stable_topology");
+    check_knob(desc.contact_surfaces, 0, 1, "contact_surfaces");
+    check_knob(desc.skeleton_chord_error_radii, 0.0, 0.1, "skeleton_chord_error_radii");
     enteron::skinning::SkinSettings s;
     s.method = static_cast<enteron::skinning::SkinMethod>(desc.method);
     s.radius = radius;
@@ -158,6 +167,8 @@ enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, d
     s.window = desc.window_radii * radius;
     s.ring_chord_error = desc.ring_chord_error_radii * radius;
     s.stable_topology = desc.stable_topology != 0;
+    s.contact_surfaces = desc.contact_surfaces != 0;
+    s.skeleton_chord_error = desc.skeleton_chord_error_radii * radius;
     return s;
 }
 
@@ -249,8 +260,16 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
         full.struct_size = out->struct_size;
         if (h.updates > 0) {
             const auto& sk = *h.skin;
-            const enteron::skinning::SkinMetrics m = enteron::skinning::measure_skin(
-                sk.mesh(), sk.axis_points(), sk.axis_count(), sk.arc_length(), sk.settings().radius);
+            enteron::skinning::PreviousFrame previous;
+            if (sk.has_previous()) {
+                previous.mesh = &sk.previous_mesh();
+                previous.points_xyz = sk.previous_axis_points();
+                previous.count = sk.previous_axis_count();
+                previous.table = &sk.previous_arc_length();
+            }
+            const enteron::skinning::SkinMetrics m =
+                enteron::skinning::measure_skin(sk.mesh(), sk.axis_points(), sk.axis_count(), sk.arc_length(),
+                                                sk.settings().radius, sk.has_previous() ? &previous : nullptr);
             full.vertex_count = static_cast<uint32_t>(m.vertices);
             full.triangle_count = static_cast<uint32_t>(m.triangles);
             full.watertight = m.watertight ? 1 : 0;
@@ -267,6 +286,17 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
             full.volume_m3 = m.volume;
             full.volume_error = m.volume_error;
             full.axis_length_m = m.axis_length;
+            full.overlap_depth_max = m.overlap_depth_max;
+            full.overlap_area_m2 = m.overlap_area;
+            full.tube_overlap_depth_max = m.tube_overlap_depth_max;
+            full.tube_overlap_area_m2 = m.tube_overlap_area;
+            full.contact_gap_max = m.contact_gap_max;
+            full.shape_volume_error = m.shape_volume_error;
+            full.free_radius_error_rms = m.free_radius_error_rms;
+            full.vertex_motion_max = m.vertex_motion_max;
+            full.vertex_excess_motion_max = m.vertex_excess_motion_max;
+            full.free_vertex_count = static_cast<uint32_t>(m.free_vertices);
+            full.has_previous_update = sk.has_previous() ? 1 : 0;
         }
         full.last_update_ns = h.last_update_ns;
         std::memcpy(out, &full, out->struct_size);

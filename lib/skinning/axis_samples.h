@@ -28,10 +28,11 @@ public:
     // The intervals whose step is closest to `spacing` along `length` (both m), at least 1.
     static std::size_t intervals_for(double length, double spacing);
 
-    // Samples the spline at the given arc lengths (increasing, from 0 to the total length;
-    // no phantoms), e.g. rings placed closer where the axis bends (ring_placement.h).
+    // Samples the spline at the given arc lengths (increasing, from 0 to the total length),
+    // e.g. rings or skeleton points placed closer where the axis bends (ring_placement.h),
+    // with phantoms over `extension` beyond each end at that end's own spacing.
     void build_at(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
-                  const std::vector<double>& arc_lengths, Curvature curvature);
+                  const std::vector<double>& arc_lengths, Curvature curvature, double extension = 0.0);
 
     std::size_t size() const { return position_.size(); }  // all samples, phantoms included
     std::size_t phantoms() const { return phantoms_; }        // phantom samples before (and after) the axis
@@ -55,6 +56,17 @@ public:
     // of curvature), 1/m; the phantoms' that of their end. Only if built with
     // Curvature::compute.
     const Vec3& curvature(std::size_t i) const { return curvature_[i]; }
+    bool has_curvature() const { return !position_.empty() && curvature_.size() == position_.size(); }
+
+    // The unit tangent at arc length s (interpolated between samples, normalised), and the
+    // mean bend of the axis over [s - half, s + half]: its turning angle over 2 half, in
+    // the direction of t(s + half) - t(s - half), 1/m. Exact on an arc (the turning angle
+    // from the chord of the tangents, 2 asin(|dt| / 2)); the mean curvature elsewhere.
+    // Unlike the curvature at a point, it is continuous in s where the spline's curvature
+    // jumps (at its control points, C1 but not C2): a ring sliding across one sees the
+    // bend change gradually. (s +- half within the samples, phantoms included.)
+    Vec3 tangent_at(double s) const;
+    Vec3 mean_bend(double s, double half) const;
 
 private:
     // Positions and tangents of the real samples k = 0 .. intervals_, at arc_length_of(k).
@@ -62,6 +74,9 @@ private:
     void sample(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
                 ArcLengthOf arc_length_of, Curvature curvature);
 
+    // The phantoms beyond each end (phantoms_ of them), at each end's spacing.
+    void extend_ends(const double* points_xyz, std::size_t count, double first_spacing, double last_spacing,
+                     Curvature curvature);
     // dt/ds of the spline at parameter s, from its first derivative d there and t = d / |d|.
     static Vec3 curvature_vector(const double* points_xyz, std::size_t count, double s, const Vec3& d,
                                  const Vec3& t);
@@ -69,7 +84,7 @@ private:
     std::vector<Vec3> position_;
     std::vector<Vec3> tangent_;
     std::vector<Vec3> curvature_;
-    std::vector<double> arc_;  // arc length of each sample when uneven (build_at), else empty
+    std::vector<double> arc_;  // arc length of each sample (phantoms included) when uneven (build_at), else empty
     std::size_t phantoms_ = 0;
     std::size_t intervals_ = 0;
     double spacing_ = 0.0;

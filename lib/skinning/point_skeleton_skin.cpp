@@ -46,11 +46,6 @@ int32_t ceil_int(double x) {
 
 float lane_sum(float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
-Vec3 any_perpendicular(Vec3 t) {
-    const Vec3 axis = std::fabs(t.x()) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-    return normalized_or(t.cross(axis), Vec3{0, 0, 1});
-}
-
 }  // namespace
 
 PointSkeletonSkin::PointSkeletonSkin(const SkinSettings& settings) : Skin(settings) {
@@ -65,8 +60,8 @@ PointSkeletonSkin::PointSkeletonSkin(const SkinSettings& settings) : Skin(settin
     // Calibration on a skeleton along an arc of curvature k, at distance R in direction c
     // (bend_calibration.h), averaged over the two extreme phases of the points (a surface
     // point level with a skeleton point, and half-way between two).
-    auto window_field = [&](double k, double c) {
-        const Vec3 p = BendCalibration::point_off_arc(R, c);
+    auto field_off_arc = [&](double r, double k, double c) {
+        const Vec3 p = BendCalibration::point_off_arc(r, c);
         double sum = 0.0;
         for (double phase : {0.0, 0.5}) {
             double f = 0.0;
@@ -82,8 +77,13 @@ PointSkeletonSkin::PointSkeletonSkin(const SkinSettings& settings) : Skin(settin
         }
         return 0.5 * sum;
     };
+    const auto window_field = [&](double k, double c) { return field_off_arc(R, k, c); };
     iso_ = window_field(0.0, 0.0);
     bend_.build(R, window_field);
+    // Where no bulge can lift the field to the iso-value: a bulge raises the surface by at
+    // most 4 kMaxBulgeReach / 27 of R (contact_profile.h); a fifth more than the straight
+    // field there, less a quarter for the bend's scale.
+    bulge_floor_ = 0.75 * field_off_arc((1.0 + 1.2 * 4.0 * kMaxBulgeReach / 27.0) * R, 0.0, 0.0);
 }
 
 void PointSkeletonSkin::load_skeleton() {
@@ -112,7 +112,9 @@ void PointSkeletonSkin::load_skeleton() {
     resize_buffer(bend_axes_, n);
     const double R = settings_.radius;
     for (std::size_t j = 0; j < n; ++j) {
-        const Vec3& bend = skeleton_.curvature(j);
+        // The mean bend over the window: gradual as the points slide along the axis (the
+        // spline's curvature at a point jumps at its control points).
+        const Vec3 bend = skeleton_.mean_bend(skeleton_.arc_length(j), settings_.window);
         const double curvature = bend.norm();
         bend_rows_[j] = bend_.row(curvature);
         bend_axes_[j] = curvature > 0.0 ? Vec3((1.0 / (curvature * R)) * bend) : Vec3::Zero();
@@ -184,8 +186,15 @@ template <bool kGradient>
     return h * lane_sum(f);
 }
 
-double PointSkeletonSkin::field(Vec3 p, std::size_t k, Vec3* gradient) const {
+double PointSkeletonSkin::field(Vec3 given, std::size_t k, Vec3* gradient, bool with_bulge) const {
     const std::size_t first = skeleton_.phantoms(), last = first + skeleton_.intervals();
+    // Near a contact, the field of the point pulled towards the skeleton point by the bulge
+    // (the surface swells by the factor 1 + D).
+    double bulge = 0.0, bulge_slope = 0.0;
+    Vec3 level_gradient = Vec3::Zero();
+    const Vec3& skeleton_point = skeleton_.position(k);
+    if (with_bulge && !bulge_reach_.empty()) bulge = bulge_at(given, k, &bulge_slope, &level_gradient);
+    const Vec3 p = bulge > 0.0 ? Vec3(skeleton_point + (1.0 / (1.0 + bulge)) * (given - skeleton_point)) : given;
     // Beyond an end: the field of the straight continuation, made radial about the end
     // point, so the surface closes as a hemisphere of radius R.
     Vec3 centre = Vec3::Zero(), q = p;
@@ -214,16 +223,107 @@ double PointSkeletonSkin::field(Vec3 p, std::size_t k, Vec3* gradient) const {
     const double f = window_sum<true>(float(q.x()), float(q.y()), float(q.z()), k, g);
     // grad (scale F) = scale grad F + F d scale/dc grad c, with grad c = -bend_axis.
     const Vec3 grad = scale * Vec3{g[0], g[1], g[2]} - (f * d_scale_dc) * bend_axis;
+    Vec3 at_p = grad;
     if (radial) {
         // F(p) = G(|p - end|): the gradient is radial with the slope of G.
         const Vec3 r = q - centre;
         const double rn = r.norm();
         const Vec3 dir = normalized_or(p - centre, Vec3{0, 0, 1});
-        *gradient = (rn > 0.0 ? grad.dot(r) / rn : 0.0) * dir;
-    } else {
-        *gradient = grad;
+        at_p = (rn > 0.0 ? grad.dot(r) / rn : 0.0) * dir;
     }
+    // Through the pull: p = c + (given - c) / (1 + D(x(given))).
+    const double inverse = 1.0 / (1.0 + bulge);
+    *gradient = bulge > 0.0 ? Vec3(inverse * at_p - (bulge_slope * inverse * inverse * at_p.dot(given - skeleton_point)) *
+                                                        level_gradient)
+                            : at_p;
     return scale * f;
+}
+
+void PointSkeletonSkin::prepare_contacts() {
+    bulge_reach_.clear();
+    if (!settings_.contact_surfaces) return;
+    const double R = settings_.radius, h = skeleton_.spacing();
+    folds_.build(skeleton_, R, 1.5 * R);
+    if (contact_cosine_.size() != kContactRays) {
+        contact_cosine_.resize(kContactRays);
+        contact_sine_.resize(kContactRays);
+        for (std::size_t j = 0; j < kContactRays; ++j) {
+            contact_cosine_[j] = std::cos(2.0 * kPi * double(j) / double(kContactRays));
+            contact_sine_[j] = std::sin(2.0 * kPi * double(j) / double(kContactRays));
+        }
+    }
+    // Rings every R / 2 along the real skeleton points, the last at the last point.
+    contact_stride_ = std::max<std::size_t>(1, std::size_t(std::lround(0.5 * R / h)));
+    const std::size_t first = skeleton_.phantoms(), intervals = skeleton_.intervals();
+    const std::size_t rings = (intervals + contact_stride_ - 1) / contact_stride_ + 1;
+    resize_buffer(bulge_reach_, rings);
+    resize_buffer(contact_rays_, rings * kContactRays);
+    double free[kContactRays], out[kContactRays];
+    std::fill_n(free, kContactRays, R);
+    RingContacts::Ring ring;
+    ring.radius = R;
+    ring.rays = kContactRays;
+    ring.cosine = contact_cosine_.data();
+    ring.sine = contact_sine_.data();
+    ring.measure_all = true;
+    const double ceiling = 2.0 + kMaxBulgeReach;  // a level no bulge reaches
+    for (std::size_t m = 0; m < rings; ++m) {
+        const std::size_t k = first + std::min(m * contact_stride_, intervals);
+        ring.centre = skeleton_.position(k);
+        ring.normal = frames_.normal(k);
+        ring.binormal = frames_.binormal(k);
+        ring.tangent = skeleton_.tangent(k);
+        ring.arc_length = skeleton_.arc_length(k);
+        ring.curvature = skeleton_.mean_bend(ring.arc_length, settings_.window);
+        bulge_reach_[m] = contacts_.deform(folds_, ring, free, out).bulge_reach;
+        for (std::size_t j = 0; j < kContactRays; ++j) {
+            ContactRaySample& sample = contact_rays_[m * kContactRays + j];
+            sample.point = ring.centre + R * contacts_.direction(j);
+            const double level = contacts_.level(j);
+            sample.level = std::min(level, ceiling);
+            sample.gradient = level < ceiling ? contacts_.gradient(j) : Vec3(Vec3::Zero());
+        }
+    }
+}
+
+double PointSkeletonSkin::bulge_at(const Vec3& p, std::size_t k, double* slope, Vec3* gradient) const {
+    // The two contact rings around k, and their reach.
+    const std::size_t first = skeleton_.phantoms(), rings = bulge_reach_.size();
+    const double position = double(std::min(k - std::min(k, first), skeleton_.intervals())) / double(contact_stride_);
+    const std::size_t m0 = std::min(std::size_t(position), rings - 2);
+    const double along = std::clamp(position - double(m0), 0.0, 1.0);
+    const double w = (1.0 - along) * bulge_reach_[m0] + along * bulge_reach_[m0 + 1];
+    if (!(w > 0.0)) return 0.0;
+    // The two rays around p's angle, in the frames along the skeleton (which do not twist).
+    const double around = turns_around(p - skeleton_.position(k), frames_.normal(k), frames_.binormal(k)) *
+                          double(kContactRays);
+    const std::size_t j0 = std::min(std::size_t(around), kContactRays - 1), j1 = j0 + 1 < kContactRays ? j0 + 1 : 0;
+    const double turn = around - double(j0);
+    double level = 0.0;
+    Vec3 g = Vec3::Zero();
+    for (std::size_t m : {m0, m0 + 1}) {
+        const double wm = m == m0 ? 1.0 - along : along;
+        for (std::size_t j : {j0, j1}) {
+            const double weight = wm * (j == j0 ? 1.0 - turn : turn);
+            const ContactRaySample& sample = contact_rays_[m * kContactRays + j];
+            level += weight * (sample.level + sample.gradient.dot(p - sample.point));
+            g += weight * sample.gradient;
+        }
+    }
+    // x for a free radius of R: o - 1.
+    const double x = level - 1.0;
+    if (!(x > 0.0)) return 0.0;  // inside the other fold: the union's
+    *gradient = g;
+    return contact_deformation(x, w, slope);
+}
+
+double PointSkeletonSkin::band_field(const Vec3& p, std::size_t k) const {
+    // The bulge only raises the field: a corner inside stays inside and one below the floor
+    // stays outside, and marching cubes needs only their sides (the Newton steps of pass 4
+    // then project every vertex onto the bulged surface).
+    const double plain = field(p, k, nullptr, false);
+    if (bulge_reach_.empty() || plain >= iso_ || plain <= bulge_floor_) return plain;
+    return field(p, k, nullptr, true);
 }
 
 void PointSkeletonSkin::splat() {
@@ -348,7 +448,7 @@ void PointSkeletonSkin::evaluate_band() {
                         continue;
                     }
                     block.nearest[i] = nearest_key(float(d2), uint32_t(k));
-                    block.field[i] = float(field(p, k, nullptr));
+                    block.field[i] = float(band_field(p, k));
                     ++evaluations;
                 }
     }
@@ -388,6 +488,7 @@ void PointSkeletonSkin::project_vertices() {
             k = nearest_from(p, k, &d2);
             if (step2 < last_step2) break;
         }
+
         const Vec3 n = normalized_or(-1.0 * g, Vec3{0, 0, 1});
         // u: project p on the axis polyline next to its nearest skeleton point, the foot
         // w of the way from point a to a + 1.
@@ -430,6 +531,7 @@ void PointSkeletonSkin::rebuild() {
                     D + 2.0 * h, AxisSamples::Curvature::compute);
     frames_.build(&skeleton_.position(0), &skeleton_.tangent(0), skeleton_.size());
     load_skeleton();
+    prepare_contacts();
     splat();
     evaluate_band();
     cubes_.extract(grid_, iso_, mesh_, seeds_);

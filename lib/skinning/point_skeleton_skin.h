@@ -23,13 +23,28 @@
 //  4. each vertex is projected onto the iso-surface by Newton steps on the field until a
 //     step is below R / 50; its normal is the field gradient of the last step and its u
 //     the projection of the vertex on the axis next to its nearest skeleton point.
+//
+// Contacts: a point of space takes the field of its nearest skeleton point's window, so
+// where two folds press into each other the field switches from one fold's to the
+// other's on the plane half-way between their axes (the contact surface of equal radii),
+// and the surface drawn is the two folds' union: their skins never pass through each
+// other, and the shared contact surface lies inside the mesh, where nothing is drawn.
+// What the union loses is the lens where the folds overlap; before the band's pass 2,
+// rings of 16 rays every R / 2 along the skeleton (ring_contacts.h, free radius R) find
+// the bulge reach w that gives each cross-section its area back, and the nearest fold's
+// level on each ray. The field at p is then taken at c + (p - c) / (1 + D(x; w)), c the
+// nearest skeleton point and x the fold's level at p interpolated from the four nearest
+// rays' linear models (contact_profile.h): the surface swells by D around the contact,
+// continuously in p, so marching cubes and the Newton steps see one smooth field.
 #pragma once
 
 #include <vector>
 
 #include "skinning/axis_samples.h"
 #include "skinning/bend_calibration.h"
+#include "skinning/fold_contacts.h"
 #include "skinning/marching_cubes.h"
+#include "skinning/ring_contacts.h"
 #include "skinning/rotation_minimizing_frames.h"
 #include "skinning/skin.h"
 #include "skinning/sparse_voxel_grid.h"
@@ -43,6 +58,7 @@ public:
     double iso_value() const { return iso_; }
     // Marching cubes make new triangles every update, whatever the settings.
     bool stable_topology() const override { return false; }
+    bool rebuilds_whole_mesh() const override { return true; }
     std::size_t skeleton_points() const { return skeleton_.intervals() + 1; }
     // Field evaluations (window sums) of the last update: band corners and Newton steps.
     std::size_t last_field_evaluations() const { return evaluations_; }
@@ -52,8 +68,11 @@ public:
 private:
     void rebuild() override;
     // Field and gradient at p for the window around skeleton point k (an index into
-    // skeleton_, real points only).
-    double field(Vec3 p, std::size_t k, Vec3* gradient) const;
+    // skeleton_, real points only), with the bulge of the contacts or without.
+    double field(Vec3 p, std::size_t k, Vec3* gradient, bool with_bulge = true) const;
+    // The field marching cubes needs at a band corner: the bulge only where it may change
+    // the corner's side.
+    double band_field(const Vec3& p, std::size_t k) const;
     // The real skeleton point nearest to p, searching from k along the axis; *distance2
     // receives its squared distance to p.
     std::size_t nearest_from(Vec3 p, std::size_t k, double* distance2) const;
@@ -62,6 +81,11 @@ private:
     template <bool kGradient>
     float window_sum(float qx, float qy, float qz, std::size_t k, float* gradient) const;
     void load_skeleton();
+    // The contact rings: their bulge reach and the folds' linear models per ray.
+    void prepare_contacts();
+    // D(x; w) at p near skeleton point k (0 without contacts or beyond the bulge), with
+    // dD/dx in *slope and grad x in *gradient.
+    double bulge_at(const Vec3& p, std::size_t k, double* slope, Vec3* gradient) const;
     void splat();
     void evaluate_band();
     void project_vertices();
@@ -85,6 +109,21 @@ private:
     SparseVoxelGrid grid_;
     MarchingCubes cubes_;
     std::vector<int32_t> seeds_;  // per vertex: nearest skeleton point of its edge's inside corner
+
+    // Contacts (empty without contact surfaces).
+    static constexpr std::size_t kContactRays = 16;
+    struct ContactRaySample {
+        Vec3 point;     // the ray's point at R, m
+        Vec3 gradient;  // of the nearest fold's level o there, 1/m
+        double level;   // o there
+    };
+    FoldContacts folds_;
+    RingContacts contacts_;
+    std::size_t contact_stride_ = 1;              // skeleton points between two contact rings
+    double bulge_floor_ = 0.0;                    // below this field no bulge reaches the iso-value
+    std::vector<double> bulge_reach_;             // per contact ring: w
+    std::vector<ContactRaySample> contact_rays_;  // per contact ring, kContactRays each
+    std::vector<double> contact_cosine_, contact_sine_;
 };
 
 }  // namespace enteron::skinning

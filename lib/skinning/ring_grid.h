@@ -39,6 +39,8 @@ public:
     // cos and sin of the angle of vertex j around a ring, 2 pi j / segments.
     double cosine(std::size_t j) const { return cosine_[j]; }
     double sine(std::size_t j) const { return sine_[j]; }
+    const double* cosines() const { return cosine_.data(); }
+    const double* sines() const { return sine_.data(); }
 
     // v of every vertex (angle around the ring / 2 pi: j / segments; 0 at the poles).
     void around(float* v) const;

@@ -26,9 +26,7 @@ const std::vector<double>& RingPlacement::place(const AxisSamples& axis, double 
         double curvature = 0.0;
         for (std::size_t j = i - std::min(i, reach); j <= std::min(n - 1, i + reach); ++j)
             curvature = std::max(curvature, curvature_[j]);
-        const double wanted = curvature > 0.0 ? std::sqrt(8.0 * chord_error / (curvature * (1.0 + curvature * radius)))
-                                              : max_spacing;
-        density_[i] = 1.0 / std::clamp(wanted, min_spacing, max_spacing);
+        density_[i] = 1.0 / spacing_for(curvature, radius, chord_error, min_spacing, max_spacing);
     }
     // Rings at equal steps of the integral of the density (trapezoids between samples).
     double total = 0.0;

@@ -2,7 +2,9 @@
 // Where the rings of the convolution skin go along the axis: the level of detail. Evenly
 // spaced rings make flat facets where the axis bends; these rings come closer there, so
 // that the chord between two rings departs from the tube by at most a tolerance, and stay
-// `max_spacing` apart where the axis is straight.
+// `max_spacing` apart where the axis is straight. The implicit skins' skeletons follow
+// the curvature the same way, with a radius of 0: the chord between two skeleton points
+// departs from the axis itself by at most the tolerance.
 //
 // Two rings of radius R, Delta apart on a bend of curvature k: on the outer side the ring
 // points are Delta (1 + k R) apart on a circle of radius 1 / k + R, so the straight edge
@@ -18,6 +20,8 @@
 // (hysteresis: a bowel swaying around a level boundary does not flip between two counts).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "skinning/axis_samples.h"
@@ -26,6 +30,15 @@ namespace enteron::skinning {
 
 class RingPlacement {
 public:
+    // The spacing for a chord error e on a bend of curvature k (1/m) at distance `radius`
+    // from the axis: sqrt(8 e / (k (1 + k radius))), within [min_spacing, max_spacing].
+    static double spacing_for(double curvature, double radius, double chord_error, double min_spacing,
+                              double max_spacing) {
+        const double wanted =
+            curvature > 0.0 ? std::sqrt(8.0 * chord_error / (curvature * (1.0 + curvature * radius))) : max_spacing;
+        return std::clamp(wanted, min_spacing, max_spacing);
+    }
+
     // The rings' places (arc lengths, m, increasing from 0 to the axis length), from `axis`:
     // samples of the axis with their tangents, no more than min_spacing apart (the skin's
     // skeleton samples). level_step > 0: the ring count in steps of that many (above);

@@ -8,15 +8,10 @@
 
 namespace enteron::skinning {
 
-namespace {
-
-// Any unit vector perpendicular to t (t unit).
-Vec3 any_perpendicular(Vec3 t) {
+Vec3 any_perpendicular(const Vec3& t) {
     const Vec3 axis = std::fabs(t.x()) < 0.6 ? Vec3{1, 0, 0} : (std::fabs(t.y()) < 0.6 ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
     return normalized_or(t.cross(axis), Vec3{0, 0, 1});
 }
-
-}  // namespace
 
 void RotationMinimizingFrames::build(const Vec3* x, const Vec3* t, std::size_t count) {
     resize_buffer(normal_, count);

@@ -28,6 +28,12 @@ private:
     Vec3 first_normal_{0.0, 0.0, 0.0};
 };
 
+// Any unit vector perpendicular to the unit vector t: t crossed with the first coordinate
+// axis that is not nearly parallel to it (|component| < 0.6). The skins' one rule for a
+// direction around an axis where nothing else gives one (a frame's first normal on a new
+// axis; a point on the axis line itself).
+Vec3 any_perpendicular(const Vec3& t);
+
 // The angle of direction d around the axis in the frame (normal, binormal), in turns:
 // atan2(d.binormal, d.normal) / (2 pi), in [0, 1). Within 2e-6 turn (a polynomial for atan,
 // several times cheaper than std::atan2: the point skeleton takes one per vertex).

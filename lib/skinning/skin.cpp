@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "skinning/skin.h"
 
+#include <utility>
+
 #include "skinning/axis_samples.h"
 #include "skinning/convolution_skin.h"
 #include "skinning/point_skeleton_skin.h"
@@ -8,7 +10,26 @@
 
 namespace enteron::skinning {
 
+void Skin::keep_previous() {
+    has_previous_ = !points_.empty();
+    if (!has_previous_) return;
+    // The table refers to its points' buffer: both move together.
+    points_.swap(previous_points_);
+    std::swap(table_, previous_table_);
+    if (rebuilds_whole_mesh()) {
+        std::swap(mesh_, previous_mesh_);
+        return;
+    }
+    previous_mesh_.positions.assign(mesh_.positions.begin(), mesh_.positions.end());
+    if (previous_indices_of_ != topology_changes_) {
+        previous_mesh_.indices.assign(mesh_.indices.begin(), mesh_.indices.end());
+        previous_mesh_.u.assign(mesh_.u.begin(), mesh_.u.end());
+        previous_indices_of_ = topology_changes_;
+    }
+}
+
 void Skin::update(const double* points_xyz, std::size_t count) {
+    keep_previous();
     points_.assign(points_xyz, points_xyz + 3 * count);
     table_.build(points_.data(), count);
     if (!(reference_length_ > 0.0)) reference_length_ = table_.total_length();

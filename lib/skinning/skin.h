@@ -43,10 +43,26 @@ public:
     uint64_t topology_changes() const { return topology_changes_; }
     // Whether this skin keeps its topology while the axis moves (see above).
     virtual bool stable_topology() const { return settings_.stable_topology; }
+    // Whether every update rebuilds every buffer of the mesh, indices included (marching
+    // cubes); the ring skins rewrite the positions every update and the rest with the
+    // topology.
+    virtual bool rebuilds_whole_mesh() const { return false; }
     // The axis of the last update.
     const double* axis_points() const { return points_.data(); }
     std::size_t axis_count() const { return points_.size() / 3; }
     const spline::ArcLengthTable& arc_length() const { return table_; }
+
+    // The update before the last (for the motion metrics), once there were two: its mesh
+    // (positions always; indices and u as they were) and its axis. The ring skins copy
+    // only the positions each update (the indices and u when they change); a skin that
+    // rebuilds its whole mesh every update keeps the old one by swapping buffers.
+    bool has_previous() const { return has_previous_; }
+    const Mesh& previous_mesh() const { return previous_mesh_; }
+    const double* previous_axis_points() const { return previous_points_.data(); }
+    std::size_t previous_axis_count() const { return previous_points_.size() / 3; }
+    const spline::ArcLengthTable& previous_arc_length() const { return previous_table_; }
+    // Whether vertex i of the previous mesh is vertex i of this one (no topology change).
+    bool same_vertices_as_previous() const { return has_previous_ && !topology_changed_; }
 
 protected:
     // Fills mesh_ from points_ / table_, and sets topology_changed_.
@@ -63,8 +79,16 @@ protected:
     spline::ArcLengthTable table_;
 
 private:
+    // Keeps the mesh and axis of the last update as the previous frame.
+    void keep_previous();
+
     uint64_t topology_changes_ = 0;
     double reference_length_ = 0.0;
+    Mesh previous_mesh_;
+    std::vector<double> previous_points_;
+    spline::ArcLengthTable previous_table_;
+    uint64_t previous_indices_of_ = ~uint64_t{0};  // topology_changes_ when previous_mesh_'s indices were copied
+    bool has_previous_ = false;
 };
 
 // Makes the skin of settings.method. The settings must have been validated.

@@ -2,10 +2,13 @@
 #include "skinning/skin_metrics.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
 #include "base/geometry.h"
+#include "collision/closest_point_on_triangle.h"
+#include "skinning/contact_profile.h"
 #include "spline/catmull_rom.h"
 
 namespace enteron::skinning {
@@ -82,6 +85,22 @@ public:
         }
     }
 
+    // The largest curvature of the axis within `reach` (m) of arc length s, 1/m (second
+    // differences of the samples).
+    double largest_curvature(double s, double reach) const {
+        if (curvature_.empty()) {
+            curvature_.assign(positions_.size(), 0.0);
+            for (std::size_t i = 1; i + 1 < positions_.size(); ++i)
+                curvature_[i] = (positions_[i + 1] - 2.0 * positions_[i] + positions_[i - 1]).norm() / (step_ * step_);
+        }
+        const double last = double(positions_.size() - 1);
+        const auto lo = std::size_t(std::clamp(std::floor((s - reach) / step_), 0.0, last));
+        const auto hi = std::size_t(std::clamp(std::ceil((s + reach) / step_), 0.0, last));
+        double largest = 0.0;
+        for (std::size_t i = lo; i <= hi; ++i) largest = std::max(largest, curvature_[i]);
+        return largest;
+    }
+
     // Distance from p to the axis, searching downhill from arc length s.
     double distance(Vec3 p, double s) const {
         const std::size_t last = positions_.size() - 1;
@@ -104,12 +123,174 @@ public:
 private:
     double step_ = 0.0;
     std::vector<Vec3> positions_;
+    mutable std::vector<double> curvature_;  // made on first use
 };
+
+// The triangles of a mesh filed in the cells their bounding boxes overlap, with the
+// pseudo-normals that sign a distance to them (Baerentzen and Aanaes 2005: the face's
+// normal, the sum of an edge's two faces', the angle-weighted sum around a corner).
+class TriangleGrid {
+public:
+    TriangleGrid(const Mesh& mesh, double cell) : mesh_(mesh), cell_(cell) {
+        const std::size_t triangles = mesh.triangle_count(), vertices = mesh.vertex_count();
+        face_normals_.resize(triangles);
+        vertex_normals_.assign(vertices, Vec3::Zero());
+        std::vector<std::pair<uint64_t, uint32_t>> entries;
+        std::vector<uint32_t> corner_count(vertices + 1, 0);
+        for (std::size_t t = 0; t < triangles; ++t) {
+            const Vec3 p[3] = {corner(t, 0), corner(t, 1), corner(t, 2)};
+            face_normals_[t] = normalized_or((p[1] - p[0]).cross(p[2] - p[0]), Vec3::Zero());
+            for (int c = 0; c < 3; ++c) {
+                const Vec3 e1 = p[(c + 1) % 3] - p[c], e2 = p[(c + 2) % 3] - p[c];
+                const double angle = std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+                vertex_normals_[mesh.indices[3 * t + std::size_t(c)]] += angle * face_normals_[t];
+                edges_.push_back({edge_key(t, c), uint32_t(t)});
+                ++corner_count[mesh.indices[3 * t + std::size_t(c)] + 1];
+            }
+            const std::array<long, 3> lo = cell_of(p[0].cwiseMin(p[1]).cwiseMin(p[2])),
+                                      hi = cell_of(p[0].cwiseMax(p[1]).cwiseMax(p[2]));
+            for (long z = lo[2]; z <= hi[2]; ++z)
+                for (long y = lo[1]; y <= hi[1]; ++y)
+                    for (long x = lo[0]; x <= hi[0]; ++x) entries.push_back({key({x, y, z}), uint32_t(t)});
+        }
+        std::sort(edges_.begin(), edges_.end(), [](const Edge& a, const Edge& b) { return a.key < b.key; });
+        // The triangles around each vertex (compressed rows).
+        for (std::size_t v = 0; v < vertices; ++v) corner_count[v + 1] += corner_count[v];
+        corner_begin_ = corner_count;
+        corner_triangles_.resize(3 * triangles);
+        for (std::size_t t = 0; t < triangles; ++t)
+            for (int c = 0; c < 3; ++c) corner_triangles_[corner_count[mesh.indices[3 * t + std::size_t(c)]]++] = uint32_t(t);
+        std::sort(entries.begin(), entries.end());
+        triangles_.resize(entries.size());
+        for (std::size_t i = 0; i < entries.size();) {
+            std::size_t j = i;
+            while (j < entries.size() && entries[j].first == entries[i].first) triangles_[j] = entries[j].second, ++j;
+            cells_.emplace(entries[i].first, std::make_pair(uint32_t(i), uint32_t(j)));
+            i = j;
+        }
+    }
+
+    struct Closest {
+        bool found = false;
+        double distance = 0.0;  // m, signed: < 0 inside (behind the pseudo-normal)
+        bool on_edge = false;   // on the border of the admitted triangles: the sign means nothing there
+    };
+    // The nearest of the triangles accept(t) admits within `reach` of p, searching shells of
+    // cells outwards until no nearer triangle can remain; its signed distance.
+    template <class Accept>
+    Closest closest(const Vec3& p, double reach, Accept accept) const {
+        Closest best;
+        double best2 = reach * reach;
+        std::size_t best_triangle = 0;
+        collision::TrianglePoint best_point{Vec3::Zero(), collision::TriangleFeature::face};
+        const std::array<long, 3> c = cell_of(p);
+        for (long k = 0; double(k - 1) * cell_ < std::sqrt(best2); ++k) {
+            for (long dz = -k; dz <= k; ++dz)
+                for (long dy = -k; dy <= k; ++dy)
+                    for (long dx = -k; dx <= k; ++dx) {
+                        if (std::max({std::labs(dx), std::labs(dy), std::labs(dz)}) != k) continue;  // the shell only
+                        const auto cell = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+                        if (cell == cells_.end()) continue;
+                        for (uint32_t e = cell->second.first; e < cell->second.second; ++e) {
+                            const std::size_t t = triangles_[e];
+                            if (!accept(t)) continue;
+                            const collision::TrianglePoint q =
+                                collision::closest_point_on_triangle(p, corner(t, 0), corner(t, 1), corner(t, 2));
+                            const double d2 = (p - q.point).squaredNorm();
+                            if (d2 < best2) best2 = d2, best.found = true, best_point = q, best_triangle = t;
+                        }
+                    }
+        }
+        if (best.found) {
+            const double distance = std::sqrt(best2);
+            best.on_edge = on_border(best_triangle, best_point.feature, accept);
+            best.distance = (p - best_point.point).dot(pseudo_normal(best_triangle, best_point.feature)) < 0.0 ? -distance
+                                                                                                                : distance;
+        }
+        return best;
+    }
+
+private:
+    struct Edge {
+        uint64_t key;
+        uint32_t triangle;
+    };
+    Vec3 corner(std::size_t t, int c) const { return vertex_at(mesh_.positions, mesh_.indices[3 * t + std::size_t(c)]); }
+    uint64_t edge_key(std::size_t t, int c) const {
+        const uint32_t a = mesh_.indices[3 * t + std::size_t(c)], b = mesh_.indices[3 * t + std::size_t((c + 1) % 3)];
+        return (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    }
+    template <class Visit>
+    void edge_triangles(uint64_t k, Visit visit) const {
+        for (auto it = std::lower_bound(edges_.begin(), edges_.end(), k, [](const Edge& e, uint64_t v) { return e.key < v; });
+             it != edges_.end() && it->key == k; ++it)
+            visit(it->triangle);
+    }
+    static int edge_of(collision::TriangleFeature feature) {
+        using F = collision::TriangleFeature;
+        return feature == F::edge_ab ? 0 : feature == F::edge_bc ? 1 : feature == F::edge_ca ? 2 : -1;
+    }
+    static int corner_of(collision::TriangleFeature feature) {
+        using F = collision::TriangleFeature;
+        return feature == F::corner_a ? 0 : feature == F::corner_b ? 1 : feature == F::corner_c ? 2 : -1;
+    }
+    Vec3 pseudo_normal(std::size_t t, collision::TriangleFeature feature) const {
+        if (const int c = corner_of(feature); c >= 0) return vertex_normals_[mesh_.indices[3 * t + std::size_t(c)]];
+        if (const int e = edge_of(feature); e >= 0) {
+            Vec3 sum = Vec3::Zero();
+            edge_triangles(edge_key(t, e), [&](uint32_t other) { sum += face_normals_[other]; });
+            return sum;
+        }
+        return face_normals_[t];
+    }
+    // Whether the feature touches a triangle accept() refuses.
+    template <class Accept>
+    bool on_border(std::size_t t, collision::TriangleFeature feature, Accept accept) const {
+        bool border = false;
+        if (const int c = corner_of(feature); c >= 0) {
+            const uint32_t v = mesh_.indices[3 * t + std::size_t(c)];
+            for (uint32_t i = corner_begin_[v]; i < corner_begin_[v + 1]; ++i) border = border || !accept(corner_triangles_[i]);
+        } else if (const int e = edge_of(feature); e >= 0) {
+            edge_triangles(edge_key(t, e), [&](uint32_t other) { border = border || !accept(other); });
+        }
+        return border;
+    }
+    std::array<long, 3> cell_of(const Vec3& p) const {
+        return {long(std::floor(p.x() / cell_)), long(std::floor(p.y() / cell_)), long(std::floor(p.z() / cell_))};
+    }
+    static uint64_t key(const std::array<long, 3>& c) {
+        const auto m = [](long v) { return uint64_t(v + (1L << 20)) & 0x1fffffULL; };
+        return (m(c[0]) << 42) | (m(c[1]) << 21) | m(c[2]);
+    }
+
+    const Mesh& mesh_;
+    double cell_;
+    std::vector<Vec3> face_normals_, vertex_normals_;
+    std::vector<Edge> edges_;
+    std::vector<uint32_t> corner_begin_, corner_triangles_;
+    std::vector<uint32_t> triangles_;  // per cell entry
+    std::unordered_map<uint64_t, std::pair<uint32_t, uint32_t>> cells_;  // a cell's entries in triangles_
+};
+
+Vec3 axis_point(const double* points, std::size_t count, const spline::ArcLengthTable& table, double s) {
+    return spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value));
+}
+
+Vec3 axis_tangent(const double* points, std::size_t count, const spline::ArcLengthTable& table, double s) {
+    return normalized_or(spline::evaluate(points, spline::weights_at(count, table.parameter_at(s), spline::Derivative::first)),
+                         Vec3::Zero());
+}
+
+double triangle_area(const Mesh& mesh, std::size_t t) {
+    const Vec3 a = vertex_at(mesh.positions, mesh.indices[3 * t]), b = vertex_at(mesh.positions, mesh.indices[3 * t + 1]),
+               c = vertex_at(mesh.positions, mesh.indices[3 * t + 2]);
+    return 0.5 * (b - a).cross(c - a).norm();
+}
 
 }  // namespace
 
 SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
-                         const spline::ArcLengthTable& table, double radius) {
+                         const spline::ArcLengthTable& table, double radius, const PreviousFrame* previous) {
     SkinMetrics m;
     const double R = radius;
     const double length = table.total_length();
@@ -120,16 +301,18 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
 
     // Per vertex: radius error, normal deviation, blending; keep the analytic directions.
     const AxisPointGrid grid(table, points_xyz, count, R / 8.0, 2.0 * R);
-    std::vector<Vec3> radial(m.vertices);
-    double sum_radius2 = 0.0, sum_normal2 = 0.0;
+    const AxisPolyline polyline(table, points_xyz, count, R / 16.0);
+    std::vector<Vec3> radial(m.vertices), on_tube(m.vertices);
+    std::vector<double> other_fold(m.vertices);  // distance to the nearest other fold's axis (kOtherFoldArc), m
+    double sum_radius2 = 0.0, sum_normal2 = 0.0, sum_free2 = 0.0;
     for (std::size_t i = 0; i < m.vertices; ++i) {
         const double s = double(mesh.u[i]) * length;
-        const Vec3 a =
-            spline::evaluate(points_xyz, spline::weights_at(count, table.parameter_at(s), spline::Derivative::value));
+        const Vec3 a = axis_point(points_xyz, count, table, s);
         const Vec3 v = vertex_at(mesh.positions, i);
         const Vec3 r = v - a;
         const double distance = r.norm();
         radial[i] = normalized_or(r, Vec3{0, 0, 0});
+        on_tube[i] = a + R * radial[i];
         const double error = std::fabs(distance - R) / R;
         sum_radius2 += error * error;
         m.radius_error_max = std::max(m.radius_error_max, error);
@@ -138,13 +321,83 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         sum_normal2 += angle * angle;
         m.normal_deviation_max = std::max(m.normal_deviation_max, angle);
         if (grid.nearest_other_fold(v, s, kNeighbourWindow * R) < kBlendBand * R) ++m.blended_vertices;
+        other_fold[i] = grid.nearest_other_fold(v, s, kOtherFoldArc * R);
+        // Free: beyond any bulge's reach from another fold, on a stretch bending with a
+        // radius above R.
+        if (other_fold[i] >= (1.0 + kMaxBulgeReach) * R && polyline.largest_curvature(s, R) * R <= 1.0) {
+            sum_free2 += error * error;
+            ++m.free_vertices;
+        }
     }
     m.radius_error_rms = std::sqrt(sum_radius2 / double(m.vertices));
     m.normal_deviation_rms = std::sqrt(sum_normal2 / double(m.vertices));
+    m.free_radius_error_rms = m.free_vertices > 0 ? std::sqrt(sum_free2 / double(m.free_vertices)) : 0.0;
 
-    // Per triangle: facet error, orientation against the axis, volume, edges.
-    const AxisPolyline polyline(table, points_xyz, count, R / 16.0);
-    double sum_facet2 = 0.0;
+    // Where folds meet: each vertex near another fold against that fold's ideal tube and its
+    // triangles (those whose corners are all another fold's to the vertex).
+    std::vector<double> skin_depth(m.vertices, 0.0), tube_depth(m.vertices, 0.0);
+    if (m.triangles > 0) {
+        const TriangleGrid triangles(mesh, 0.25 * R);
+        for (std::size_t i = 0; i < m.vertices; ++i) {
+            if (!(other_fold[i] < 1.25 * R)) continue;  // no skin reaches it: R, a bulge and the radius error
+            const double s = double(mesh.u[i]) * length;
+            tube_depth[i] = std::max(0.0, R - other_fold[i]);
+            m.tube_overlap_depth_max = std::max(m.tube_overlap_depth_max, tube_depth[i] / R);
+            const auto other = [&](std::size_t t) {
+                for (int c = 0; c < 3; ++c)
+                    if (std::fabs(double(mesh.u[mesh.indices[3 * t + std::size_t(c)]]) * length - s) <= kOtherFoldArc * R)
+                        return false;
+                return true;
+            };
+            const TriangleGrid::Closest closest = triangles.closest(vertex_at(mesh.positions, i), R, other);
+            // On the border of the other fold's triangles (where a union's crease joins the
+            // two folds) neither inside nor a gap can be told.
+            if (closest.on_edge) continue;
+            if (closest.found && closest.distance < 0.0) {
+                skin_depth[i] = -closest.distance;
+                m.overlap_depth_max = std::max(m.overlap_depth_max, skin_depth[i] / R);
+            } else if (tube_depth[i] > 0.0) {
+                // Pressed into another fold, outside its skin: a gap (at least R when none is near).
+                m.contact_gap_max = std::max(m.contact_gap_max, closest.found ? closest.distance / R : 1.0);
+            }
+        }
+        for (std::size_t t = 0; t < m.triangles; ++t) {
+            const uint32_t* corners = &mesh.indices[3 * t];
+            const auto deeper = [&](const std::vector<double>& depth) {
+                return depth[corners[0]] > kOverlapFloor * R && depth[corners[1]] > kOverlapFloor * R &&
+                       depth[corners[2]] > kOverlapFloor * R;
+            };
+            if (deeper(skin_depth)) m.overlap_area += triangle_area(mesh, t);
+            if (deeper(tube_depth)) m.tube_overlap_area += triangle_area(mesh, t);
+        }
+    }
+
+    // Motion since the previous update: each vertex's distance to the previous mesh (the
+    // surface's change, whether or not the vertices are the same), beyond what the tube
+    // around its axis point moved there: the point's motion and R times its tangent's turn
+    // (the local tube moved rigidly).
+    if (previous != nullptr && previous->mesh != nullptr && previous->mesh->triangle_count() > 0 &&
+        previous->table != nullptr) {
+        const TriangleGrid before(*previous->mesh, 0.25 * R);
+        const double before_length = previous->table->total_length();
+        for (std::size_t i = 0; i < m.vertices; ++i) {
+            const TriangleGrid::Closest closest =
+                before.closest(vertex_at(mesh.positions, i), R, [](std::size_t) { return true; });
+            const double motion = closest.found ? std::fabs(closest.distance) : R;  // at least R
+            const double u = mesh.u[i];
+            const Vec3 a = axis_point(points_xyz, count, table, u * length);
+            const Vec3 a_before = axis_point(previous->points_xyz, previous->count, *previous->table, u * before_length);
+            const Vec3 turn = axis_tangent(points_xyz, count, table, u * length) -
+                              axis_tangent(previous->points_xyz, previous->count, *previous->table, u * before_length);
+            const double tube_motion = (a - a_before).norm() + R * turn.norm();
+            m.vertex_motion_max = std::max(m.vertex_motion_max, motion / R);
+            m.vertex_excess_motion_max = std::max(m.vertex_excess_motion_max, (motion - tube_motion) / R);
+        }
+    }
+
+    // Per triangle: facet error, orientation against the axis, volume (also of the ideal
+    // tube through the same triangles), edges.
+    double sum_facet2 = 0.0, ideal_volume6 = 0.0;
     std::vector<uint64_t> edges;
     edges.reserve(3 * m.triangles);
     const Vec3 origin = vertex_at(mesh.positions, 0);
@@ -168,6 +421,10 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
             m.facet_error_max = std::max(m.facet_error_max, error);
         }
         volume6 += p0.dot(p1.cross(p2));
+        {
+            const Vec3 q0 = on_tube[i0] - origin, q1 = on_tube[i1] - origin, q2 = on_tube[i2] - origin;
+            ideal_volume6 += q0.dot(q1.cross(q2));
+        }
         // Facing the axis as seen from each corner's own axis point. (Not the sum of the
         // three radial directions: where two folds touch, marching cubes joins them with
         // triangles whose corners belong to different folds, radial directions nearly
@@ -193,6 +450,7 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
     m.volume = volume6 / 6.0;
     const double ideal = kPi * R * R * length;
     m.volume_error = ideal > 0.0 ? (m.volume - ideal) / ideal : 0.0;
+    m.shape_volume_error = ideal_volume6 != 0.0 ? (volume6 - ideal_volume6) / ideal_volume6 : 0.0;
     return m;
 }
 

@@ -16,12 +16,16 @@ struct SkinSettings {
     double ring_spacing = 0.00625;   // arc length between rings, m (tube, convolution); the largest if adaptive
     double ring_chord_error = 0.0;   // convolution: > 0 places rings closer at bends, chord error tolerance, m
     uint32_t cap_rings = 4;          // rings of each hemispherical end cap (tube, convolution)
-    double skeleton_spacing = 0.003125;  // arc length between skeleton samples, m
+    double skeleton_spacing = 0.003125;  // arc length between skeleton samples, m (the largest if adaptive)
+    double skeleton_chord_error = 0.0;   // > 0: skeleton samples closer where the axis bends, chord sag tolerance, m
     double voxel_size = 0.0041667;   // marching-cubes cell edge, m (point_skeleton)
     double window = 0.0125;          // half-width of the local blending window in arc length, m
     // Tube, convolution: keep the vertex count and the triangle indices while the axis moves
     // (skin.h). Point_skeleton: ignored (its topology follows the surface).
     bool stable_topology = true;
+    // Folds that touch meet on contact surfaces, with a bulge that keeps the volume
+    // (contact_profile.h); false: their surfaces pass through each other.
+    bool contact_surfaces = true;
 };
 
 }  // namespace enteron::skinning

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "skinning/tube_skin.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "skinning/fold_over_limit.h"
 
 namespace enteron::skinning {
 
@@ -28,6 +32,10 @@ void TubeSkin::rebuild() {
         const auto u = float(rings_.fraction(k));
         const bool pole = row == 0 || row + 1 == grid_.rows();
         const std::size_t count = pole ? 1 : S;
+        // Body rings stop short of their neighbours' planes (no fold-over, fold_over_limit.h).
+        const bool body = phi == 0.0;
+        const Vec3* previous = body && k > 0 ? &rings_.position(k - 1) : nullptr;
+        const Vec3* next = body && k + 1 < n ? &rings_.position(k + 1) : nullptr;
         for (std::size_t j = 0; j < count; ++j) {
             // The outward direction at (phi, angle j), and its derivative in phi: the tangent
             // along the meridian, towards the last pole (the axis tangent on body rows).
@@ -35,7 +43,10 @@ void TubeSkin::rebuild() {
             const Vec3 direction = pole ? (row == 0 ? -1.0 * t : t) : across * radial + along * t;
             const Vec3 tangent = across * t - along * radial;
             const std::size_t v = grid_.vertex(row, j);
-            store_vec3(mesh_.positions, v, centre + R * direction);
+            double limit = std::numeric_limits<double>::infinity();
+            for (const Vec3* neighbour : {previous, next})
+                if (neighbour != nullptr) limit = std::min(limit, fold_over_limit(centre, radial, *neighbour));
+            store_vec3(mesh_.positions, v, centre + below_fold_over_limit(R, limit) * direction);
             store_vec3(mesh_.normals, v, direction);
             store_vec3(mesh_.tangents, v, tangent);
             mesh_.u[v] = u;

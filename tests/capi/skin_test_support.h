@@ -13,14 +13,18 @@ struct SkinDeleter {
 };
 using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
 
+inline SkinPtr make_skin(ent_scene* scene, const ent_skin_desc& desc) {
+    ent_skin* skin = nullptr;
+    EXPECT_EQ(ent_skin_create(scene, &desc, &skin), ENT_OK) << ent_last_error();
+    return SkinPtr(skin);
+}
+
 // desc: ent_skin_desc_default, then `method`.
 inline SkinPtr make_skin(ent_scene* scene, int32_t method) {
     ent_skin_desc desc;
     ent_skin_desc_default(&desc);
     desc.method = method;
-    ent_skin* skin = nullptr;
-    EXPECT_EQ(ent_skin_create(scene, &desc, &skin), ENT_OK) << ent_last_error();
-    return SkinPtr(skin);
+    return make_skin(scene, desc);
 }
 
 inline struct ent_skin_metrics metrics(const ent_skin* skin) {

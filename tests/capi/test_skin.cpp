@@ -80,15 +80,16 @@ TEST(Skin, TightUTurnImplicitMethodsDoNotBlendTheLegs) {
         EXPECT_EQ(m.blended_vertices, 0u) << "method " << method;
         EXPECT_EQ(m.watertight, 1) << "method " << method;
     }
-    // The tube stays exact at this bend (radius of curvature 1.1 R) but folds over at a
-    // tighter one: the artefact the metrics count.
+    // The tube stays exact at this bend (radius of curvature 1.1 R); at a tighter one its
+    // rings would fold over on the inner side, and stop short of each other instead.
     SkinPtr tube = make_skin(scene.get(), ENT_SKIN_TUBE);
     ASSERT_EQ(ent_skin_update(tube.get()), ENT_OK);
     EXPECT_EQ(metrics(tube.get()).inverted_triangles, 0u);
     ScenePtr tight = points_scene(u_turn(0.15, 1.4 * kR, 0.25 * kR));
     SkinPtr folded = make_skin(tight.get(), ENT_SKIN_TUBE);
     ASSERT_EQ(ent_skin_update(folded.get()), ENT_OK);
-    EXPECT_GT(metrics(folded.get()).inverted_triangles, 0u);
+    EXPECT_EQ(metrics(folded.get()).inverted_triangles, 0u);
+    EXPECT_GT(metrics(folded.get()).overlap_depth_max, 0.3);  // its legs pass through each other
 }
 
 TEST(Skin, RenderThreadUpdatesWhileThePhysicsThreadSteps) {
@@ -138,7 +139,7 @@ TEST(Skin, RenderThreadUpdatesWhileThePhysicsThreadSteps) {
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK);
     const struct ent_skin_metrics m = metrics(skin.get());
     EXPECT_EQ(m.watertight, 1);
-    EXPECT_LT(m.radius_error_rms, 0.05);
+    EXPECT_LT(m.free_radius_error_rms, 0.05);  // away from the coils' contacts
 }
 
 }  // namespace

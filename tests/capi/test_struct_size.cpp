@@ -128,6 +128,40 @@ TEST(StructSize, OldSkinDescriptionsAreServedWithEvenRings) {
     EXPECT_TRUE(contains_text(ent_last_error(), "ring_chord_error_radii")) << ent_last_error();
 }
 
+// ent_skin_desc before contact surfaces and the curvature-following skeleton, and
+// ent_skin_metrics before the contact and motion measures.
+constexpr uint32_t kPreContactSkinDescSize = offsetof(ent_skin_desc, contact_surfaces);
+constexpr uint32_t kPreContactSkinMetricsSize = offsetof(struct ent_skin_metrics, overlap_depth_max);
+
+TEST(StructSize, SkinDescriptionsFromBeforeContactsGetTheirDefaults) {
+    ent_skin_desc full;
+    ent_skin_desc_default(&full);
+    EXPECT_EQ(full.contact_surfaces, 1);
+    EXPECT_EQ(full.skeleton_chord_error_radii, 0.0);
+    ent_skin_desc old;
+    std::memset(&old, 0xcd, sizeof old);
+    ASSERT_EQ(ent_skin_desc_init(&old, kPreContactSkinDescSize), ENT_OK) << ent_last_error();
+    EXPECT_TRUE(all_bytes(&old, kPreContactSkinDescSize, sizeof old, 0xcd)) << "written past the old size";
+    // What lies past the old struct (0xcd: out of range for both fields) is not read.
+    ScenePtr scene = create(default_desc());
+    ent_skin* skin = nullptr;
+    ASSERT_EQ(ent_skin_create(scene.get(), &old, &skin), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_skin_update(skin), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_skin_update(skin), ENT_OK) << ent_last_error();
+    struct ent_skin_metrics m;
+    std::memset(&m, 0xcd, sizeof m);
+    m.struct_size = kPreContactSkinMetricsSize;
+    EXPECT_EQ(ent_skin_metrics(skin, &m), ENT_OK) << ent_last_error();
+    EXPECT_GT(m.triangle_count, 0u);
+    EXPECT_TRUE(all_bytes(&m, kPreContactSkinMetricsSize, sizeof m, 0xcd)) << "contact measures written past the old size";
+    // The current size: the motion measures compare with the update before.
+    m.struct_size = sizeof m;
+    EXPECT_EQ(ent_skin_metrics(skin, &m), ENT_OK) << ent_last_error();
+    EXPECT_EQ(m.has_previous_update, 1);
+    EXPECT_LT(m.vertex_excess_motion_max, 1e-6);  // the same state twice
+    ent_skin_destroy(skin);
+}
+
 // ent_tool_feedback before `saturated` (issue 27): served, nothing written past it; a size
 // between two released ones is refused.
 TEST(StructSize, ToolFeedbackBeforeSaturatedIsServed) {

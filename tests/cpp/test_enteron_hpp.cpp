@@ -314,6 +314,11 @@ TEST(CppLayer, ToolsReportWrenchStiffnessAndStatsAndCanBeRemoved) {
     enteron::Tool tool = scene.add_tool(desc);
     enteron::Tool other = scene.add_tool(desc);
     EXPECT_EQ(scene.tool_count(), 2);
+    // What they were made from reads back (ent_tool_read_desc, ent_scene_read_desc).
+    EXPECT_EQ(tool.desc().position_m[2], desc.position_m[2]);
+    EXPECT_EQ(tool.desc().max_force_N, desc.max_force_N);
+    EXPECT_EQ(scene.desc().control_points, 17u);
+    EXPECT_EQ(scene.desc().length_m, 0.4);
     const double identity[4] = {1, 0, 0, 0};
     for (int i = 1; i <= 100; ++i) {
         const double tip[3] = {0.0, 0.0, 2 * 0.0125 + 0.004 - 1e-4 * i};

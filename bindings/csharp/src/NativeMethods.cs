@@ -80,6 +80,9 @@ namespace Enteron
         internal static extern Status ent_scene_stats(SceneHandle scene, ref Stats stats);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_scene_read_desc(SceneHandle scene, ref SceneDesc desc);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern Status ent_scene_effect_stats(SceneHandle scene, Effect effect, ref EffectStats stats);
 
         [DllImport(Library, CallingConvention = Cdecl)]
@@ -171,6 +174,9 @@ namespace Enteron
 
         [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern Status ent_tool_read_stats(SceneHandle scene, int tool, ref ToolStats stats);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_tool_read_desc(SceneHandle scene, int tool, ref ToolDesc desc);
 
         [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern Status ent_tool_remove(SceneHandle scene, int tool);

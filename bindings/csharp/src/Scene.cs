@@ -450,6 +450,17 @@ namespace Enteron
             return stats;
         }
 
+        /// <summary>
+        /// The description the scene was made from (ent_scene_read_desc), without its arrays
+        /// (shape points and pinned points read back as none): a JSON scene's too.
+        /// </summary>
+        public SceneDesc ReadDescription()
+        {
+            SceneDesc desc = SceneDesc.Default();
+            EnteronException.Check(NativeMethods.ent_scene_read_desc(Handle, ref desc), "ent_scene_read_desc");
+            return desc;
+        }
+
         /// <summary>What one effect cost so far (ent_scene_effect_stats).</summary>
         public EffectStats GetEffectStats(Effect effect)
         {

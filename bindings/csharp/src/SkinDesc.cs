@@ -30,6 +30,10 @@ namespace Enteron
         public double ring_chord_error_radii;
         /// <summary>tube, convolution: 1 (default) keeps vertex count and indices while the bowel moves</summary>
         public int stable_topology;
+        /// <summary>point_skeleton, convolution: 1 (default) folds pressed together meet on a contact surface, with a bulge beside it, instead of passing through each other</summary>
+        public int contact_surfaces;
+        /// <summary>convolution: 0 (default) even segment ends; above 0 (in R, up to 0.1) they follow the curvature, each chord within this of the axis</summary>
+        public double skeleton_chord_error_radii;
 
         /// <summary>The library's defaults (ent_skin_desc_init) with this method.</summary>
         public static SkinDesc Default(SkinMethod method = SkinMethod.Convolution)

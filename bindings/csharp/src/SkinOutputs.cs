@@ -101,5 +101,27 @@ namespace Enteron
         public double facet_error_rms;
         /// <summary>largest of those</summary>
         public double facet_error_max;
+        /// <summary>deepest vertex inside another fold's part of the mesh, in R (0 on contact surfaces)</summary>
+        public double overlap_depth_max;
+        /// <summary>area of triangles inside another fold's part of the mesh by more than R / 100, m^2</summary>
+        public double overlap_area_m2;
+        /// <summary>deepest vertex inside another fold's ideal tube, in R: how hard the folds press</summary>
+        public double tube_overlap_depth_max;
+        /// <summary>area of triangles inside another fold's ideal tube by more than R / 100, m^2</summary>
+        public double tube_overlap_area_m2;
+        /// <summary>largest distance from a vertex inside another fold's tube to that fold's skin, in R</summary>
+        public double contact_gap_max;
+        /// <summary>(V - V_tube) / V_tube: the volume the skin's shape adds or loses</summary>
+        public double shape_volume_error;
+        /// <summary>RMS radius error away from contacts and creases</summary>
+        public double free_radius_error_rms;
+        /// <summary>largest distance from a vertex to the previous update's mesh, in R</summary>
+        public double vertex_motion_max;
+        /// <summary>largest motion beyond what the tube around the vertex's axis point moved, in R: popping</summary>
+        public double vertex_excess_motion_max;
+        /// <summary>vertices free_radius_error_rms is over</summary>
+        public uint free_vertex_count;
+        /// <summary>1 if the motion measures compare with an update before</summary>
+        public int has_previous_update;
     }
 }

@@ -100,6 +100,14 @@ namespace Enteron
             return stiffness;
         }
 
+        /// <summary>The settings the tool was added with and the pose it was added at (ent_tool_read_desc).</summary>
+        public ToolDesc ReadDescription()
+        {
+            ToolDesc desc = ToolDesc.Default();
+            EnteronException.Check(NativeMethods.ent_tool_read_desc(Scene.Handle, Id, ref desc), "ent_tool_read_desc");
+            return desc;
+        }
+
         /// <summary>The tool's passivity observer and counters since it was added (ent_tool_read_stats).</summary>
         public ToolStats ReadStats()
         {

@@ -102,6 +102,11 @@ namespace Enteron.Tests
                 fromDescription.ControlPoints(a);
                 fromJson.ControlPoints(b);
                 Bits.AssertSame(a, b, "control points after 0.2 s");
+                // Each reads back the description it was made from (ent_scene_read_desc).
+                SceneDesc read = fromJson.ReadDescription();
+                Assert.AreEqual(1.0, read.length_m);
+                Assert.AreEqual(40U, read.control_points);
+                Assert.AreEqual(desc.radius_m, fromDescription.ReadDescription().radius_m);
             }
         }
 

@@ -106,6 +106,9 @@ namespace Enteron.Tests
                 Assert.AreEqual(2, scene.ToolCount);
                 scene.Step(0.001);
                 Assert.AreEqual(new Vec3(0.1, 0.2, 0.1), second.ReadFeedback().proxy_position_m, "direct mode: where it was put");
+                ToolDesc read = second.ReadDescription();
+                Assert.AreEqual(ToolMode.Direct, read.mode, "ent_tool_read_desc: what it was added with");
+                Assert.AreEqual(desc.position_m, read.position_m);
                 second.Remove();
                 scene.Step(0.001);
                 Assert.AreEqual(1, scene.ToolCount);

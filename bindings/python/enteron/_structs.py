@@ -106,6 +106,8 @@ class ent_skin_desc(ctypes.Structure):
         ("window_radii", ctypes.c_double),
         ("ring_chord_error_radii", ctypes.c_double),
         ("stable_topology", ctypes.c_int32),
+        ("contact_surfaces", ctypes.c_int32),
+        ("skeleton_chord_error_radii", ctypes.c_double),
     ]
 
 
@@ -149,6 +151,17 @@ class ent_skin_metrics(ctypes.Structure):
         ("last_update_ns", ctypes.c_uint64),
         ("facet_error_rms", ctypes.c_double),
         ("facet_error_max", ctypes.c_double),
+        ("overlap_depth_max", ctypes.c_double),
+        ("overlap_area_m2", ctypes.c_double),
+        ("tube_overlap_depth_max", ctypes.c_double),
+        ("tube_overlap_area_m2", ctypes.c_double),
+        ("contact_gap_max", ctypes.c_double),
+        ("shape_volume_error", ctypes.c_double),
+        ("free_radius_error_rms", ctypes.c_double),
+        ("vertex_motion_max", ctypes.c_double),
+        ("vertex_excess_motion_max", ctypes.c_double),
+        ("free_vertex_count", ctypes.c_uint32),
+        ("has_previous_update", ctypes.c_int32),
     ]
 
 

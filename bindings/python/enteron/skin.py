@@ -98,6 +98,18 @@ class SkinMetrics:
     last_update_ns: int
     facet_error_rms: float
     facet_error_max: float
+    # Where folds meet (in R, areas m^2) and motion since the update before (in R): see enteron.h.
+    overlap_depth_max: float
+    overlap_area_m2: float
+    tube_overlap_depth_max: float
+    tube_overlap_area_m2: float
+    contact_gap_max: float
+    shape_volume_error: float
+    free_radius_error_rms: float
+    vertex_motion_max: float
+    vertex_excess_motion_max: float
+    free_vertex_count: int
+    has_previous_update: bool
 
 
 class _Serialised:
@@ -132,7 +144,9 @@ class Skin(OwnedHandle):
     its fields (segments, ring_spacing_radii, cap_rings, skeleton_spacing_radii,
     voxel_size_radii, window_radii, ring_chord_error_radii: the convolution's level of
     detail, rings closer where the axis bends; stable_topology: 1 (default) keeps the
-    vertex count and indices of tube and convolution while the bowel moves); the others
+    vertex count and indices of tube and convolution while the bowel moves;
+    contact_surfaces: 1 (default) makes touching folds meet on contact surfaces with a
+    bulge; skeleton_chord_error_radii: a skeleton that follows the curvature); the others
     keep the library's defaults.
     The mesh is empty until the first update(). Failures raise enteron.Error.
     The skin keeps its Scene alive; closing the Scene closes its skins first.
@@ -204,4 +218,5 @@ class Skin(OwnedHandle):
         check(self._call(lib.ent_skin_metrics, ctypes.byref(raw)), "ent_skin_metrics")
         values = {field: getattr(raw, field) for field in SkinMetrics.__dataclass_fields__}
         values["watertight"] = bool(values["watertight"])
+        values["has_previous_update"] = bool(values["has_previous_update"])
         return SkinMetrics(**values)

@@ -97,7 +97,7 @@ int main(void) {
     BEGIN(ent_skin_desc)
     FIELD(struct_size) FIELD(method) FIELD(segments) FIELD(ring_spacing_radii) FIELD(cap_rings)
     FIELD(skeleton_spacing_radii) FIELD(voxel_size_radii) FIELD(window_radii) FIELD(ring_chord_error_radii)
-    FIELD(stable_topology)
+    FIELD(stable_topology) FIELD(contact_surfaces) FIELD(skeleton_chord_error_radii)
     END()
     BEGIN(ent_mesh_view)
     FIELD(struct_size) FIELD(vertex_count) FIELD(triangle_count) FIELD(positions_xyz_m) FIELD(normals_xyz)
@@ -109,6 +109,9 @@ int main(void) {
     FIELD(nonmanifold_edges) FIELD(blended_vertices) FIELD(inverted_triangles) FIELD(radius_error_rms)
     FIELD(radius_error_max) FIELD(normal_deviation_rms_rad) FIELD(normal_deviation_max_rad) FIELD(volume_m3)
     FIELD(volume_error) FIELD(axis_length_m) FIELD(last_update_ns) FIELD(facet_error_rms) FIELD(facet_error_max)
+    FIELD(overlap_depth_max) FIELD(overlap_area_m2) FIELD(tube_overlap_depth_max) FIELD(tube_overlap_area_m2)
+    FIELD(contact_gap_max) FIELD(shape_volume_error) FIELD(free_radius_error_rms) FIELD(vertex_motion_max)
+    FIELD(vertex_excess_motion_max) FIELD(free_vertex_count) FIELD(has_previous_update)
     END()
     printf("}\n");
     return 0;

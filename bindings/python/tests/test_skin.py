@@ -171,6 +171,49 @@ class StableTopology(unittest.TestCase):
         self.assertIn("stable_topology", str(caught.exception))
 
 
+class Contacts(unittest.TestCase):
+    # Two legs of a U-turn 3 R apart, the middle of the second pushed 1.4 R towards the
+    # first: their tubes press 0.4 R into each other there.
+    R = 0.0125
+
+    def scene(self):
+        r = 1.5 * self.R
+
+        def pushed(x):
+            return 1.4 * self.R * np.cos(0.5 * np.pi * (x + 0.075) / 0.05) ** 2 if abs(x + 0.075) < 0.05 else 0.0
+
+        leg = [[-0.15 + 0.15 * i / 48, -r, 0.0] for i in range(48)]
+        turn = [[r * np.cos(a), r * np.sin(a), 0.0] for a in np.linspace(-np.pi / 2, np.pi / 2, 9)[:-1]]
+        back = [[-0.15 * i / 48, r - pushed(-0.15 * i / 48), 0.0] for i in range(49)]
+        points = leg + turn + back
+        return enteron.Scene({"intestine": {"radius": self.R, "control_points": len(points),
+                                            "shape": {"kind": "points", "points": points}}})
+
+    def test_contact_surfaces_knob_and_measures(self):
+        with self.scene() as scene:
+            measures = {}
+            for contacts in (1, 0):
+                with enteron.Skin(scene, "convolution", contact_surfaces=contacts) as skin:
+                    skin.update()
+                    first = skin.metrics()
+                    self.assertFalse(first.has_previous_update)
+                    skin.update()
+                    measures[contacts] = skin.metrics()
+            met, through = measures[1], measures[0]
+            self.assertTrue(met.has_previous_update)
+            self.assertLess(met.vertex_excess_motion_max, 1e-6)  # the same state twice
+            self.assertGreater(through.tube_overlap_depth_max, 0.15)
+            self.assertGreater(through.overlap_depth_max, 0.15)
+            self.assertLess(met.overlap_depth_max, 0.02)
+            self.assertEqual(met.overlap_area_m2, 0.0)
+            self.assertLess(abs(met.shape_volume_error), 0.005)
+            self.assertEqual(met.inverted_triangles, 0)
+            self.assertGreater(met.free_vertex_count, 0)
+            with self.assertRaises(enteron.Error) as caught:
+                enteron.Skin(scene, "convolution", contact_surfaces=2)
+            self.assertIn("contact_surfaces", str(caught.exception))
+
+
 class Copies(unittest.TestCase):
     def test_arrays_copy_the_librarys_mesh_and_outlive_updates(self):
         with enteron.Scene(SCENE) as scene, enteron.Skin(scene, "convolution") as skin:

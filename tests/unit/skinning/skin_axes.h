@@ -34,6 +34,21 @@ inline std::vector<double> u_turn_axis(double leg, double gap, double spacing) {
     return q;
 }
 
+// The U-turn of u_turn_axis with the middle of its second leg (at x = -leg / 2) pushed
+// towards the first by `press` times a smooth bump cos^2(pi (x + leg / 2) / (2 half)) over
+// |x + leg / 2| < half: the legs `gap - press` apart at the bump's top, `gap` elsewhere.
+inline std::vector<double> pressed_u_turn_axis(double leg, double gap, double press, double half, double spacing) {
+    std::vector<double> q = u_turn_axis(leg, gap, spacing);
+    for (std::size_t i = 0; i < q.size(); i += 3) {
+        const double x = q[i] + 0.5 * leg;
+        if (q[i + 1] > 0.0 && std::fabs(x) < half && q[i] < -0.5 * gap) {
+            const double c = std::cos(0.5 * kPi * x / half);
+            q[i + 1] -= press * c * c;
+        }
+    }
+    return q;
+}
+
 // A coil: helix of radius `radius`, rise `pitch` per turn, `turns` turns, points about
 // `spacing` apart.
 inline std::vector<double> coil_axis(double radius, double pitch, double turns, double spacing) {

@@ -79,17 +79,36 @@ TEST(Skins, TightUTurnNeverBlendsTheLegs) {
     EXPECT_GT(skin_and_measure(blended, q).blended_vertices, 10u);
 }
 
-TEST(Skins, TubeArtefactAtABendTighterThanR) {
+TEST(Skins, RingsStopShortOfEachOtherAtABendTighterThanR) {
     // Legs 2.2 R apart: the tube is still exact (radius of curvature 1.1 R > R).
     auto tube = make_skin(defaults(SkinMethod::tube));
     const SkinMetrics wide = skin_and_measure(*tube, skin_test::u_turn_axis(0.15, 2.2 * R, 0.25 * R));
     EXPECT_EQ(wide.inverted_triangles, 0u);
     EXPECT_EQ(wide.blended_vertices, 0u);
-    // Legs 1.4 R apart (radius of curvature 0.7 R): the inner side of the rings folds over
-    // and the legs interpenetrate: inverted triangles and vertices inside the other leg.
-    const SkinMetrics tight = skin_and_measure(*tube, skin_test::u_turn_axis(0.15, 1.4 * R, 0.25 * R));
-    EXPECT_GT(tight.inverted_triangles, 0u);
-    EXPECT_GT(tight.blended_vertices, 0u);
+    EXPECT_LT(wide.radius_error_max, 1e-4);
+    // Legs 1.4 R and 1.0 R apart (radius of curvature 0.7 R and 0.5 R): rings of radius R
+    // would fold over on the inner side; every ring skin stops its rays short of the
+    // neighbouring rings instead (the inner side becomes a crease), at every resolution.
+    // The tube's legs still interpenetrate (no contact surfaces), the convolution's meet.
+    for (double gap : {1.4, 1.0}) {
+        const auto q = skin_test::u_turn_axis(0.15, gap * R, 0.25 * R);
+        for (SkinMethod method : {SkinMethod::tube, SkinMethod::convolution}) {
+            for (double spacing : {1.0, 0.5, 0.25}) {
+                SkinSettings s = defaults(method);
+                s.ring_spacing = spacing * R;
+                s.segments = spacing < 0.5 ? 32 : spacing > 0.5 ? 8 : 16;
+                auto skin = make_skin(s);
+                const SkinMetrics m = skin_and_measure(*skin, q);
+                EXPECT_EQ(m.inverted_triangles, 0u) << name(method) << " gap " << gap << " R, rings " << spacing << " R";
+                EXPECT_TRUE(m.watertight);
+                if (method == SkinMethod::tube) {
+                    EXPECT_GT(m.blended_vertices, 0u);
+                } else {
+                    EXPECT_LT(m.overlap_depth_max, 0.01);
+                }
+            }
+        }
+    }
 }
 
 TEST(Skins, ImplicitMethodsAreWatertightOnBentAndCoiledAxes) {
@@ -203,6 +222,28 @@ TEST(Skins, ConvolutionAdaptiveRingsCutTheFacetErrorOfABendWithFewerTriangles) {
     // body vertex on its solution, one evaluation each.
     c.update(q.data(), q.size() / 3);
     EXPECT_EQ(c.last_field_evaluations(), c.mesh().vertex_count() - 2 - 2 * 4 * 48);
+}
+
+TEST(Skins, ConvolutionSkeletonFollowingTheCurvatureIsAsAccurateWithFewerPoints) {
+    // A U-turn of radius 1.5 R between straight legs: segment ends R apart on the legs,
+    // closer on the bend (chords within 0.002 R of the axis), against even ones R / 4 apart
+    // and R apart.
+    const auto q = skin_test::u_turn_axis(0.2, 3.0 * R, 0.25 * R);
+    SkinSettings fine = defaults(SkinMethod::convolution), coarse = fine, following = fine;
+    coarse.skeleton_spacing = R;
+    following.skeleton_spacing = R;
+    following.skeleton_chord_error = 0.002 * R;
+    ConvolutionSkin a(fine), b(coarse), c(following);
+    const SkinMetrics even_fine = skin_and_measure(a, q), even_coarse = skin_and_measure(b, q),
+                      follows = skin_and_measure(c, q);
+    EXPECT_LT(follows.radius_error_max, even_coarse.radius_error_max);
+    EXPECT_LT(follows.radius_error_rms, 1.1 * even_fine.radius_error_rms + 1e-4);
+    EXPECT_LT(c.skeleton_points(), a.skeleton_points() / 2);
+    EXPECT_GT(c.skeleton_points(), b.skeleton_points());
+    EXPECT_TRUE(follows.watertight);
+    // Warm starts hold on the uneven skeleton: the same axis again, one evaluation a vertex.
+    c.update(q.data(), q.size() / 3);
+    EXPECT_EQ(c.last_field_evaluations(), c.mesh().vertex_count() - 2 - 2 * 4 * 16);
 }
 
 }  // namespace
