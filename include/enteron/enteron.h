@@ -441,10 +441,24 @@ ENT_API void ent_scene_destroy(ent_scene* scene);
  * energy from nothing); when the check fails it rolls back and retries with halved
  * substeps, up to max_subdivisions times.
  * Allocates nothing after the first step and makes no system call.
- * Time: a step that succeeds at once costs n = ceil(dt_s / substep) substeps. A step that
- * fails returns after at most (2^(max_subdivisions + 1) - 1) n substeps in all (31 n with
- * the default 4; an attempt stops at its first non-finite substep), plus one evaluation of
- * each effect to name the cause.
+ * Time: a step that succeeds at once costs n = ceil(dt_s / substep) substeps: a plain step.
+ * The most work one step can do (docs/performance.md, "The worst case") is bounded by two
+ * budgets, whatever the scene does:
+ *   - the guard's subdivisions: at most 1 + max_subdivisions attempts, so at most
+ *     (2^(max_subdivisions + 1) - 1) n substeps in all, 31 plain steps with the default 4
+ *     (an attempt stops at its first rejected substep), plus, when every attempt fails, one
+ *     evaluation of each effect to name the cause. Out of attempts, the step is refused
+ *     with the state exactly as before (ENT_ERROR_UNSTABLE). max_subdivisions 0 bounds a
+ *     step to one plain step, refusing any the guard rejects.
+ *   - each proxy tool's solve, at every evaluation of a substep: at most 64 Newton
+ *     iterations with at most 10 halvings of each one's line search, 769 evaluations of its
+ *     balance (warm started it takes 3 to 7 iterations), twice when its grasp slips. Out of
+ *     iterations, the proxy rests where the last one left it: on the bowel, never through
+ *     it (every move stops at the first sphere it meets), its force
+ *     within max_force, balanced with the bowel in an implicit step (its contacts scaled
+ *     to max_force in an explicit one).
+ * ent_stats says when a step took more than one attempt (last_step_attempts,
+ * subdivided_steps) and when a proxy ran out (proxy_unbalanced_solves).
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, dt not finite or <= 0, or dt needing
  *         more than max_substeps substeps; nothing changes); ENT_ERROR_BUSY (another
  *         driving call is running; nothing changes); ENT_ERROR_UNSTABLE (the guard could
@@ -483,7 +497,9 @@ ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t cap
  * neighbours but took longer was held up by the machine (preempted, a page fault): the
  * library makes no system call in a step, so it cannot see those itself. These fields
  * describe this scene's run, not its state: ent_scene_save_state does not save them and
- * ent_scene_restore_state leaves them as they were.
+ * ent_scene_restore_state leaves them as they were, except full_contact_searches, which
+ * takes the saved scene's count (the search it counts belongs to the saved state: a
+ * restored scene searches when the saved one would have).
  */
 typedef struct ent_stats {
     uint32_t struct_size;          /**< set by the caller to sizeof(ent_stats). */

@@ -22,10 +22,10 @@ constexpr double kLongestContactStep = 0.25;
 // the derivative, so halving finds such a step unless the balance has a kink there (a
 // contact's onset, a sphere's centre on the shaft's axis) or Newton heads for a balance
 // deep inside the bowel that the contacts' negative stiffness makes (pressed far in from a
-// cold start). After kMaxHalvings the proxy relaxes instead: a step along the net force
-// on it, residual / (the stiffness holding it), the way a massless body let go would move.
+// cold start). After the budget's max_halvings the proxy relaxes instead: a step along the
+// net force on it, residual / (the stiffness holding it), the way a massless body let go
+// would move.
 constexpr double kSufficientDecrease = 1e-4;
-constexpr int kMaxHalvings = 10;
 
 // The fraction of `step` the shaft at p can go before it first reaches a sphere it does
 // not touch yet, just inside it (continuous collision). A sphere it touches is already in
@@ -129,7 +129,7 @@ ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector
     const double tolerance = kTolerance * problem.max_force;
     const double rate = problem.dt > 0.0 ? 1.0 / problem.dt : 0.0;  // d(v_p)/dp
     int iteration = 0;
-    for (; iteration < kMaxIterations && !(result.residual <= tolerance); ++iteration) {
+    for (; iteration < problem.budget.max_iterations && !(result.residual <= tolerance); ++iteration) {
         const bool touching = !contacts_.empty();
         // Touching nothing, the proxy rests where the unbounded coupling force is zero, a
         // linear equation: one step, whatever the bound (whose Jacobian is singular along
@@ -163,7 +163,7 @@ ProxyResult ToolProxy::solve(const ProxyProblem& problem, const std::pmr::vector
         };
         if (!uphill && first == 1.0) {
             double alpha = 1.0;
-            for (int halving = 0; halving < kMaxHalvings && !descended(alpha); ++halving) {
+            for (int halving = 0; halving < problem.budget.max_halvings && !descended(alpha); ++halving) {
                 alpha *= 0.5;
                 trial = p + alpha * step;
                 trial_residual = balance(problem, candidates, trial, result, jacobian);

@@ -47,6 +47,21 @@ struct ProxyGrasp {
     GraspLaw law;
 };
 
+// The solve's budgets, which bound its work (docs/performance.md, "The worst case"): Newton
+// iterations, and halvings of each iteration's line search. An iteration evaluates the
+// balance at most max_halvings + 2 times (its step, each halving, the relaxation after the
+// last), a solve at most 1 + max_iterations (max_halvings + 2) times: 769 with the defaults.
+// Out of iterations, the proxy rests where the last one left it (ProxyResult::balanced
+// false): on the bowel, never through it, since every move stops at the first sphere it
+// meets, with the coupling force within max_force, as always; the implicit step then
+// balances it with the bowel (its border body), the explicit ones scale its contacts'
+// forces to the bound.
+struct ProxyBudget {
+    int max_iterations = 64;  // enough for a cold start far inside the bowel (test_tool_proxy.cpp)
+    int max_halvings = 10;
+    int most_evaluations() const { return 1 + max_iterations * (max_halvings + 2); }
+};
+
 struct ProxyProblem {
     Vec3 shaft = Vec3::Zero();           // tail - tip at this instant, m (the commanded orientation)
     Vec3 shaft_velocity = Vec3::Zero();  // its rate of change, m/s (a turning tool)
@@ -61,6 +76,7 @@ struct ProxyProblem {
     Vec3 target_velocity = Vec3::Zero(); // v_x, m/s
     double dt = 0.0;                     // s; 0: v_p is held at start_velocity
     ProxyGrasp grasp;
+    ProxyBudget budget;
 };
 
 // A contact of the proxy with a sphere at the proxy's rest position.
@@ -81,15 +97,13 @@ struct ProxyResult {
     GraspSpring grasp;                   // the grasp's spring at p (its force on the bowel)
     Mat3 device_stiffness = Mat3::Zero();  // d(-F_c)/dx with v_x held, N/m
     int iterations = 0;
-    int evaluations = 0;    // of the balance: one per iteration, one per line-search halving, and the start
+    int evaluations = 0;    // of the balance: the start's, each iteration's step, halvings and relaxation
     double residual = 0.0;  // |F_c - sum of the forces given to the bowel|, N
-    bool balanced = false;  // residual within kTolerance max_force (else the iterations ran out)
+    bool balanced = false;  // residual within kTolerance max_force (else the budget ran out)
 };
 
 class ToolProxy {
 public:
-    // Enough for a cold start far inside the bowel (a few relaxation steps, tests/unit/collision/test_tool_proxy.cpp).
-    static constexpr int kMaxIterations = 64;
     // Newton stops when the forces balance to this fraction of max_force.
     static constexpr double kTolerance = 1e-10;
 

@@ -15,29 +15,26 @@ namespace enteron::numerics {
 typedef double Pair __attribute__((vector_size(2 * sizeof(double))));
 typedef double Quad __attribute__((vector_size(4 * sizeof(double))));
 
+// out[i] += x0 * a[i] + x1 * b[i] for the lanes of one Lanes (a Quad or a Pair).
+template <typename Lanes>
+inline void add_two_products_in_lanes(double* out, double x0, const double* a, double x1, const double* b) {
+    constexpr int kLanes = static_cast<int>(sizeof(Lanes) / sizeof(double));
+    Lanes s0, s1, va, vb, vo;
+    for (int i = 0; i < kLanes; ++i) s0[i] = x0, s1[i] = x1;
+    std::memcpy(&va, a, sizeof va);
+    std::memcpy(&vb, b, sizeof vb);
+    std::memcpy(&vo, out, sizeof vo);
+    vo += s0 * va + s1 * vb;
+    std::memcpy(out, &vo, sizeof vo);
+}
+
 // out[c] += x0 * a[c] + x1 * b[c] for c < Count: Quads, then a Pair, then one.
 template <int Count>
 inline void add_two_products(double* out, double x0, const double* a, double x1, const double* b) {
     int c = 0;
-    if constexpr (Count >= 4) {
-        const Quad s0 = {x0, x0, x0, x0}, s1 = {x1, x1, x1, x1};
-        for (; c + 4 <= Count; c += 4) {
-            Quad va, vb, vo;
-            std::memcpy(&va, a + c, sizeof va);
-            std::memcpy(&vb, b + c, sizeof vb);
-            std::memcpy(&vo, out + c, sizeof vo);
-            vo += s0 * va + s1 * vb;
-            std::memcpy(out + c, &vo, sizeof vo);
-        }
-    }
+    for (; c + 4 <= Count; c += 4) add_two_products_in_lanes<Quad>(out + c, x0, a + c, x1, b + c);
     if constexpr (Count % 4 >= 2) {
-        const Pair s0 = {x0, x0}, s1 = {x1, x1};
-        Pair va, vb, vo;
-        std::memcpy(&va, a + c, sizeof va);
-        std::memcpy(&vb, b + c, sizeof vb);
-        std::memcpy(&vo, out + c, sizeof vo);
-        vo += s0 * va + s1 * vb;
-        std::memcpy(out + c, &vo, sizeof vo);
+        add_two_products_in_lanes<Pair>(out + c, x0, a + c, x1, b + c);
         c += 2;
     }
     if constexpr (Count % 2 == 1) out[c] += x0 * a[c] + x1 * b[c];

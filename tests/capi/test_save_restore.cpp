@@ -219,6 +219,13 @@ TEST(SaveRestore, ImagesWithWallClockFiguresStillRestore) {
     ASSERT_EQ(ent_scene_restore_state(from_new.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
     ASSERT_EQ(ent_scene_restore_state(from_old.get(), old.data(), old.size()), ENT_OK) << ent_last_error();
     EXPECT_EQ(stats(from_old.get()).last_step_ns, 0u) << "a restore leaves this scene's wall-clock figures alone";
+    // And what its steps did: this scene's run, not the saved state (ent_stats), but for the
+    // full contact searches, which the restored scene continues from the saved count.
+    EXPECT_EQ(stats(from_old.get()).max_step_ns, 0u);
+    EXPECT_EQ(stats(from_old.get()).late_steps, 0u);
+    EXPECT_EQ(stats(from_old.get()).last_step_attempts, 0u);
+    EXPECT_EQ(stats(from_old.get()).last_step_substeps, 0u);
+    EXPECT_EQ(stats(from_old.get()).full_contact_searches, stats(scene.get()).full_contact_searches);
     EXPECT_EQ(effect_stats(from_old.get(), ENT_EFFECT_STRETCH).total_time_ns, 0u);
     EXPECT_EQ(effect_stats(from_old.get(), ENT_EFFECT_STRETCH).calls,
               effect_stats(scene.get(), ENT_EFFECT_STRETCH).calls) << "the work counters are restored";

@@ -15,6 +15,8 @@ namespace {
 // lacked ent_scene_desc.callbacks and ent_stats.last_step_ns.
 constexpr uint32_t kOldDescSize = offsetof(ent_scene_desc, callbacks);
 constexpr uint32_t kOldStatsSize = offsetof(ent_stats, last_step_ns);
+// 0.1: ent_stats up to last_step_ns, before what a slow step did.
+constexpr uint32_t kStatsSize01 = offsetof(ent_stats, last_step_attempts);
 
 bool contains_text(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -81,19 +83,31 @@ TEST(StructSize, AnOldDescriptionGetsTheDefaultsOfTheFieldsItLacks) {
     EXPECT_EQ(stats(scene).control_points, 12u);
 }
 
+// ent_scene_stats into a struct of an older `size`, its bytes marked 0xcd beforehand.
+ent_stats stats_of_size(const ent_scene* scene, uint32_t size) {
+    ent_stats out;
+    std::memset(&out, 0xcd, sizeof out);
+    out.struct_size = size;
+    EXPECT_EQ(ent_scene_stats(scene, &out), ENT_OK) << ent_last_error();
+    return out;
+}
+
 TEST(StructSize, OldStatsAreFilledUpToTheirSizeOnly) {
     ScenePtr scene = create(default_desc());
     ASSERT_TRUE(scene);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 3));
     const ent_stats full = stats(scene.get());
-    ent_stats old;
-    std::memset(&old, 0xcd, sizeof old);
-    old.struct_size = kOldStatsSize;
-    ASSERT_EQ(ent_scene_stats(scene.get(), &old), ENT_OK) << ent_last_error();
+    const ent_stats old = stats_of_size(scene.get(), kOldStatsSize);
     EXPECT_EQ(old.steps, 3u);
     EXPECT_EQ(old.time_s, full.time_s);
     EXPECT_EQ(old.kinetic_energy_J, full.kinetic_energy_J);
     EXPECT_TRUE(all_bytes(&old, kOldStatsSize, sizeof old, 0xcd)) << "last_step_ns was written";
+
+    const ent_stats v01 = stats_of_size(scene.get(), kStatsSize01);
+    EXPECT_EQ(v01.steps, 3u);
+    EXPECT_EQ(v01.last_step_ns, full.last_step_ns);
+    EXPECT_TRUE(all_bytes(&v01, kStatsSize01, sizeof v01, 0xcd)) << "written past last_step_ns";
+    EXPECT_EQ(full.last_step_attempts, 1u) << "the current size gets them";
 }
 
 // ent_skin_desc and ent_skin_metrics before the level of detail and the facet error.

@@ -393,6 +393,40 @@ TEST(Tools, NoToolNoCallsAndToolContactsCountInTheStats) {
     EXPECT_STREQ(ent_effect_name(ENT_EFFECT_TOOLS), "tools");
 }
 
+// ent_stats says what the proxies did in the last step: a proxy pressed into the bowel
+// solves its balance (at most 64 Newton iterations, each evaluating it at least once), a
+// direct tool solves nothing.
+TEST(Tools, AProxyInContactCountsItsSolvesInTheStats) {
+    for (const int32_t mode : {ENT_TOOL_MODE_PROXY, ENT_TOOL_MODE_DIRECT}) {
+        SCOPED_TRACE(mode == ENT_TOOL_MODE_PROXY ? "proxy" : "direct");
+        ScenePtr scene = bowel_on_plane();
+        ASSERT_TRUE(scene);
+        const double above[3] = {0.0, 0.0, 3.0 * kRadius}, into[3] = {0.0, 0.0, 1.2 * kRadius};
+        ASSERT_EQ(add_tool(scene.get(), above, 5.0, mode), 0);
+        uint32_t most_iterations = 0;
+        for (int i = 1; i <= 50; ++i) {
+            const double a = i / 50.0;
+            const double p[3] = {0.0, 0.0, (1 - a) * above[2] + a * into[2]};
+            ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK) << ent_last_error();
+            ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
+            const ent_stats s = stats(scene.get());
+            ASSERT_LE(s.last_step_proxy_iterations, 64u);
+            ASSERT_GE(s.last_step_proxy_evaluations, s.last_step_proxy_iterations);
+            most_iterations = std::max(most_iterations, s.last_step_proxy_iterations);
+        }
+        const ent_stats s = stats(scene.get());
+        EXPECT_GT(s.contacts, 0u);
+        if (mode == ENT_TOOL_MODE_PROXY) {
+            EXPECT_GE(most_iterations, 1u) << "the proxy in contact iterates";
+            EXPECT_GT(s.last_step_proxy_evaluations, 0u);
+        } else {
+            EXPECT_EQ(most_iterations, 0u);
+            EXPECT_EQ(s.last_step_proxy_evaluations, 0u);
+        }
+        EXPECT_EQ(s.proxy_unbalanced_solves, 0u) << "a gentle press balances within the iterations";
+    }
+}
+
 // ---- orientation ----------------------------------------------------------------------------
 
 TEST(Tools, ANonUnitQuaternionIsNormalisedAndTheShaftFollowsLocalZ) {

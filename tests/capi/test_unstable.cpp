@@ -57,10 +57,21 @@ TEST(Unstable, TheClosedFormSpeedsStraddleTheLimit) {
 TEST(Unstable, WithoutALimitOneStepIsOneSubstep) {
     ScenePtr scene = falling_scene(50.0, 4);
     ASSERT_TRUE(scene);
+    EXPECT_EQ(stats(scene.get()).last_step_attempts, 0u) << "no step yet";
     ASSERT_EQ(ent_scene_step(scene.get(), kDt), ENT_OK) << ent_last_error();
     const ent_stats s = stats(scene.get());
     EXPECT_EQ(s.substeps, 1u);
     EXPECT_EQ(s.rollbacks, 0u);
+    // What the step did (ent_stats' appended fields).
+    EXPECT_EQ(s.last_step_attempts, 1u);
+    EXPECT_EQ(s.last_step_substeps, 1u);
+    EXPECT_EQ(s.subdivided_steps, 0u);
+    EXPECT_GT(s.last_step_ns, 0u);
+    EXPECT_EQ(s.max_step_ns, s.last_step_ns) << "one step: the longest is the last";
+    EXPECT_LE(s.late_steps, 1u);
+    EXPECT_EQ(s.last_step_proxy_iterations, 0u) << "no tool";
+    EXPECT_EQ(s.proxy_unbalanced_solves, 0u);
+    EXPECT_EQ(s.full_contact_searches, 0u) << "no self-contact";
     const double v = speed_after_one_step(1);
     const double ke = 0.5 * kDensity * kLength * v * v;
     EXPECT_NEAR(s.kinetic_energy_J, ke, 1e-9 * ke);
@@ -74,6 +85,9 @@ TEST(Unstable, ARejectedStepIsRetriedWithHalvedSubsteps) {
     EXPECT_EQ(s.steps, 1u);
     EXPECT_EQ(s.rollbacks, 1u);
     EXPECT_EQ(s.substeps, 3u) << "1 rejected + 2 accepted";
+    EXPECT_EQ(s.last_step_attempts, 2u);
+    EXPECT_EQ(s.last_step_substeps, 3u) << "the rejected attempt's substep counts";
+    EXPECT_EQ(s.subdivided_steps, 1u);
     EXPECT_NEAR(s.time_s, kDt, 1e-15);
     // The published state is the two-substep one.
     const double v = speed_after_one_step(2);
@@ -99,6 +113,15 @@ void expect_unstable_step_changes_nothing(ent_scene* scene, uint32_t max_subdivi
     // back, but not retried), so both counts are accepted.
     EXPECT_GE(s1.rollbacks - s0.rollbacks, uint64_t{max_subdivisions});
     EXPECT_LE(s1.rollbacks - s0.rollbacks, uint64_t{max_subdivisions} + 1);
+    // The subdivision budget ran out: every attempt made, each with twice the substeps of
+    // the last (1 substep first: dt is the timestep), at most 2^(m+1) - 1 in all (an
+    // attempt stops at a substep the guard rejects), and not a subdivided step.
+    EXPECT_EQ(s1.last_step_attempts, max_subdivisions + 1);
+    EXPECT_GE(s1.last_step_substeps, max_subdivisions + 1);
+    EXPECT_LE(s1.last_step_substeps, (2u << max_subdivisions) - 1);
+    EXPECT_EQ(s1.last_step_substeps, s1.substeps - s0.substeps);
+    EXPECT_EQ(s1.subdivided_steps, s0.subdivided_steps) << "a failed step is not a subdivided step";
+    EXPECT_GE(s1.max_step_ns, s1.last_step_ns);
 }
 
 TEST(Unstable, AStepTheGuardCannotSaveChangesNothing) {

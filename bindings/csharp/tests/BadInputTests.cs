@@ -148,6 +148,8 @@ namespace Enteron.Tests
                 }
                 Stats after = scene.GetStats();
                 Assert.AreEqual(before.steps, after.steps, "no failed call stepped");
+                Assert.AreEqual(1u, after.last_step_attempts, "the appended fields are read: the one step's attempt");
+                Assert.AreEqual(before.max_step_ns, after.max_step_ns);
                 Assert.AreEqual(before.time_s, after.time_s);
                 Assert.AreEqual(1, scene.ObstacleCount, "no obstacle was added");
                 Assert.AreEqual(1, scene.ToolCount, "no tool was added");

@@ -82,6 +82,15 @@ class ent_stats(ctypes.Structure):
         ("contacts", ctypes.c_uint32),
         ("max_penetration_m", ctypes.c_double),
         ("last_step_ns", ctypes.c_uint64),
+        ("last_step_attempts", ctypes.c_uint32),
+        ("last_step_substeps", ctypes.c_uint32),
+        ("last_step_proxy_iterations", ctypes.c_uint32),
+        ("last_step_proxy_evaluations", ctypes.c_uint32),
+        ("max_step_ns", ctypes.c_uint64),
+        ("late_steps", ctypes.c_uint64),
+        ("subdivided_steps", ctypes.c_uint64),
+        ("proxy_unbalanced_solves", ctypes.c_uint64),
+        ("full_contact_searches", ctypes.c_uint64),
     ]
 
 

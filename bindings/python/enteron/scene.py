@@ -247,7 +247,10 @@ class SceneDesc:
 
 @dataclasses.dataclass(frozen=True)
 class Stats:
-    """ent_stats: counters and energies of the last published state (SI units)."""
+    """ent_stats: counters and energies of the last published state (SI units), and what the
+    last step did (last_step_*) and the slow steps so far (max_step_ns, late_steps,
+    subdivided_steps, proxy_unbalanced_solves, full_contact_searches): include/enteron/enteron.h
+    says what each counts."""
     control_points: int
     time_s: float
     steps: int
@@ -258,6 +261,15 @@ class Stats:
     contacts: int
     max_penetration_m: float
     last_step_ns: int
+    last_step_attempts: int
+    last_step_substeps: int
+    last_step_proxy_iterations: int
+    last_step_proxy_evaluations: int
+    max_step_ns: int
+    late_steps: int
+    subdivided_steps: int
+    proxy_unbalanced_solves: int
+    full_contact_searches: int
 
 
 @dataclasses.dataclass(frozen=True)

@@ -55,6 +55,14 @@ class FreeFall(unittest.TestCase):
             mass = 0.3 * 1.0
             speed2 = sum((g * 0.1) ** 2 for g in G)
             self.assertAlmostEqual(stats.kinetic_energy_J, 0.5 * mass * speed2, delta=1e-9)
+            # What the last step did (the appended fields): one attempt of one substep, no
+            # tool, no self-contact; the longest step at least the last.
+            self.assertEqual((stats.last_step_attempts, stats.last_step_substeps), (1, 1))
+            self.assertEqual(stats.subdivided_steps, 0)
+            self.assertEqual(stats.last_step_proxy_iterations, 0)
+            self.assertEqual(stats.proxy_unbalanced_solves, 0)
+            self.assertGreaterEqual(stats.max_step_ns, stats.last_step_ns)
+            self.assertLessEqual(stats.late_steps, stats.steps)
             gravity = scene.effect_stats("gravity")
             self.assertEqual(gravity, scene.effect_stats(enteron.EFFECT_GRAVITY))
             self.assertTrue(gravity.enabled)

@@ -131,6 +131,11 @@ TEST(Stepper, TheHooksRunInTheOrderOfTheStep) {
     EXPECT_EQ(bench.stepper.counters().steps, 1u);
     EXPECT_EQ(bench.stepper.counters().substeps, 3u) << "the rejected attempt's substep counts too";
     EXPECT_EQ(bench.stepper.guard().rollbacks(), 1u);
+    // What the step did (ent_stats): two attempts, three substeps, one subdivided step.
+    EXPECT_EQ(bench.stepper.counters().last_step_attempts, 2u);
+    EXPECT_EQ(bench.stepper.counters().last_step_substeps, 3u);
+    EXPECT_EQ(bench.stepper.counters().subdivided_steps, 1u);
+    EXPECT_GE(bench.stepper.counters().max_step_ns, bench.stepper.counters().last_step_ns);
 }
 
 // A retry starts from the step's start: it gives the bits of a step that took its two
@@ -172,6 +177,10 @@ TEST(Stepper, AStepThatStaysUnstableLeavesEverythingAsItWasForTheNextStep) {
         EXPECT_EQ(failed.stepper.counters().steps, counters.steps) << name(kind);
         EXPECT_EQ(failed.stepper.counters().substeps, counters.substeps + 1 + 2 + 4 + 8 + 16) << name(kind);
         EXPECT_EQ(failed.stepper.guard().rollbacks(), 5u) << name(kind);
+        // The subdivision budget ran out: every attempt made, and counted as such.
+        EXPECT_EQ(failed.stepper.counters().last_step_attempts, 5u) << name(kind);
+        EXPECT_EQ(failed.stepper.counters().last_step_substeps, 1u + 2 + 4 + 8 + 16) << name(kind);
+        EXPECT_EQ(failed.stepper.counters().subdivided_steps, counters.subdivided_steps) << name(kind);
         EXPECT_EQ(failed.log.back(), "failed");
         EXPECT_EQ(failed.frames.pose(failed.frame).position, Vec3::Zero()) << "the frame stays where it was";
         failed.kicker->kicks = 0;
