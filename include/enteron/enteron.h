@@ -454,9 +454,9 @@ ENT_API void ent_scene_destroy(ent_scene* scene);
  *     iterations with at most 10 halvings of each one's line search, 769 evaluations of its
  *     balance (warm started it takes 3 to 7 iterations), twice when its grasp slips. Out of
  *     iterations, the proxy rests where the last one left it: on the bowel, never through
- *     it (every move stops at the first sphere it meets), its force
- *     within max_force, balanced with the bowel in an implicit step (its contacts scaled
- *     to max_force in an explicit one).
+ *     it (every move stops at the first sphere it meets), its force within max_force,
+ *     balanced with the bowel in an implicit step (its contacts scaled to max_force in an
+ *     explicit one).
  * ent_stats says when a step took more than one attempt (last_step_attempts,
  * subdivided_steps) and when a proxy ran out (proxy_unbalanced_solves).
  * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (NULL, dt not finite or <= 0, or dt needing
