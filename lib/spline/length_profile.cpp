@@ -47,32 +47,27 @@ double LengthProfile::at(double s) const {
 
 double LengthProfile::largest() const { return *std::max_element(values_.begin(), values_.end()); }
 
-double LengthProfile::integral(double length) const {
-    // Trapezoids over the knots clipped to [0, length] (the ends of the run are points of it).
+template <class Run>
+double LengthProfile::sum_over_runs(double length, Run run) const {
+    // The knots clipped to [0, length] cut it into runs where the value is linear (the ends
+    // of [0, length] are run ends too).
     double total = 0.0;
     double from = 0.0, value = at(0.0);
     for (std::size_t k = 0; k <= s_.size(); ++k) {
         const double to = k < s_.size() ? std::min(s_[k], length) : length;
         if (to <= from) continue;
         const double next = at(to);
-        total += 0.5 * (value + next) * (to - from);
+        total += run(to - from, value, next);
         from = to, value = next;
     }
     return total;
 }
 
-double LengthProfile::reciprocal_integral(double s) const {
-    double total = 0.0;
-    double from = 0.0, value = at(0.0);
-    for (std::size_t k = 0; k <= s_.size(); ++k) {
-        const double to = k < s_.size() ? std::min(s_[k], s) : s;
-        if (to <= from) continue;
-        const double next = at(to);
-        total += reciprocal_over(to - from, value, next);
-        from = to, value = next;
-    }
-    return total;
+double LengthProfile::integral(double length) const {
+    return sum_over_runs(length, [](double run, double v0, double v1) { return 0.5 * (v0 + v1) * run; });
 }
+
+double LengthProfile::reciprocal_integral(double s) const { return sum_over_runs(s, reciprocal_over); }
 
 double LengthProfile::where_reciprocal_integral_is(double u) const {
     double from = 0.0, value = at(0.0), total = 0.0;

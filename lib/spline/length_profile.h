@@ -34,6 +34,11 @@ public:
     double where_reciprocal_integral_is(double u) const;
 
 private:
+    // The sum of run(length of the run, value at its start, value at its end) over the runs
+    // of [0, length] between knots.
+    template <class Run>
+    double sum_over_runs(double length, Run run) const;
+
     std::pmr::vector<double> s_;
     std::pmr::vector<double> values_;
 };
