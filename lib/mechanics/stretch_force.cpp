@@ -17,13 +17,19 @@ StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
     : model_(model),
       stiffness_(stretch_stiffness),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory, model.ends)) {}
+                                        kNodesPerSegment, memory, model.ends)),
+      node_stiffness_(memory) {
+    node_stiffness_.reserve(nodes_.size());
+    for (const spline::QuadratureNode& node : nodes_)
+        node_stiffness_.push_back(model.stretch_stiffness_profile != nullptr
+                                      ? model.stretch_stiffness_profile->at(model.rest_segment_length * node.parameter)
+                                      : stretch_stiffness);
+}
 
 void StretchForce::evaluate(const State& state, double* force, const Linearization* lin) {
     const double* q = state.q.data();
     const double l0 = model_.rest_segment_length;
     const double inverse_l0 = 1.0 / l0;
-    const double ea = stiffness_;
     // A tangent shorter than this has no direction: the node adds nothing (degenerate shape).
     const double tiny = 1e-12 * l0;
     const double h_squared = lin != nullptr ? lin->h * lin->h : 0.0;
@@ -48,6 +54,7 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
         Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()}, hr[2] = {Vec3::Zero(), Vec3::Zero()};
         for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
             if (!(len[m] > tiny)) continue;  // no direction: the node adds nothing
+            const double ea = node_stiffness_[first + m];
             const Vec3 u = d[m] * inv[m];
             const double strain = len[m] * inverse_l0 - 1.0;
             const double tension = ea * strain;  // N
@@ -74,9 +81,10 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
 double StretchForce::potential_energy(const State& state) const {
     const double l0 = model_.rest_segment_length;
     double energy = 0.0;
-    for (const spline::QuadratureNode& node : nodes_) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const spline::QuadratureNode& node = nodes_[k];
         const double strain = spline::evaluate(state.q.data(), node.weights).norm() / l0 - 1.0;
-        energy += node.weight * 0.5 * stiffness_ * strain * strain * l0;
+        energy += node.weight * 0.5 * node_stiffness_[k] * strain * strain * l0;
     }
     return energy;
 }
@@ -84,8 +92,13 @@ double StretchForce::potential_energy(const State& state) const {
 void StretchForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // At a node H <= EA/l0 I: the transverse factor eps/|P'| = eps / (l0 (1 + eps)) stays
     // below 1/l0. Per coordinate that is EA/l0 times the first-derivative Gram matrix.
-    spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
-                            stiffness_ / model_.rest_segment_length, bound, model_.ends);
+    const double l0 = model_.rest_segment_length;
+    if (model_.stretch_stiffness_profile != nullptr)
+        spline::add_gram_matrix(model_.control_points, spline::Derivative::first, 1.0 / l0, bound, model_.ends,
+                                model_.stretch_stiffness_profile, l0);
+    else
+        spline::add_gram_matrix(model_.control_points, spline::Derivative::first, stiffness_ / l0, bound,
+                                model_.ends);
 }
 
 }  // namespace enteron::mechanics

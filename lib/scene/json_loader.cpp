@@ -142,7 +142,7 @@ public:
 private:
     void read_field(const Field& field, const json& value, const std::string& path, void* part);
     void read_elements(const Block& block, const Field& first, const json& value, const std::string& path, void* part);
-    void read_custom(Special special, const json& value, const std::string& path, void* part);
+    void read_custom(const Custom& custom, const json& value, const std::string& path, void* part);
     // An obstacle's own rules: a mesh from a file or inline, its scale, a friction >= 0.
     void check_mesh_keys(const json& value, const std::string& path) const;
     void finish_obstacle(const json& value, const std::string& path, collision::Obstacle& obstacle) const;
@@ -254,7 +254,7 @@ void Reader::read_field(const Field& field, const json& value, const std::string
         for (std::size_t i = 0; i < value.size(); ++i)
             read_block(value[i], element(path, i), *list->block, list->element(part, i));
     } else {
-        read_custom(std::get<Custom>(field.value).special, value, path, part);
+        read_custom(std::get<Custom>(field.value), value, path, part);
     }
 }
 
@@ -264,8 +264,8 @@ collision::TriangleMesh& inline_mesh(collision::Obstacle& o) {
     return const_cast<collision::TriangleMesh&>(*o.mesh);
 }
 
-void Reader::read_custom(Special special, const json& value, const std::string& path, void* part) {
-    switch (special) {
+void Reader::read_custom(const Custom& custom, const json& value, const std::string& path, void* part) {
+    switch (custom.special) {
         case Special::version:
             if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
             break;
@@ -277,6 +277,21 @@ void Reader::read_custom(Special special, const json& value, const std::string& 
             for (std::size_t i = 0; i < value.size(); ++i) {
                 const Vec3 point = read_vec3(value[i], element(path, i));
                 points.insert(points.end(), point.begin(), point.end());
+            }
+            break;
+        }
+        case Special::length_profile: {
+            const char* looks = " must be an array of [s, value] pairs (s the arc length from the first end, m), got ";
+            if (!value.is_array()) fail(path + looks + describe(value));
+            std::vector<double>& pairs = custom.profile(part);
+            pairs.clear();
+            pairs.reserve(2 * value.size());
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                const std::string at = element(path, i);
+                if (!value[i].is_array() || value[i].size() != 2)
+                    fail(at + " must be a pair [s, value], got " + describe(value[i]));
+                pairs.push_back(read_number(value[i][0], element(at, 0)));
+                pairs.push_back(read_number(value[i][1], element(at, 1)));
             }
             break;
         }

@@ -137,10 +137,11 @@ private:
     void limits(const Checked<T>& value, const Field& field, const Scope& scope) const;
     void agree(double value, const Field& field, const Scope& scope) const;
     void point(const Point& point, const Field& field, const Scope& scope) const;
-    void custom(Special special, const Field& field, const Scope& scope) const;
+    void custom(const Custom& special, const Field& field, const Scope& scope) const;
     void block_rules(const Scope& scope) const;
     void shape_points(const Field& field, const Scope& scope) const;
     void pinned_points(const Field& field, const Scope& scope) const;
+    void length_profile(const Custom& profile, const Field& field, const Scope& scope) const;
     void mesh(const collision::TriangleMesh& mesh, const Scope& scope) const;
     std::string virtual_name(const Scope& scope, const char* key) const {
         return names_.c_names ? scope.prefix + key : join(scope.path, key);
@@ -209,7 +210,7 @@ void Validator::field(const Field& f, const Scope& scope, Pass pass) const {
     } else if (const Rotation* rotation = std::get_if<Rotation>(&f.value)) {
         rotation->set(part, unit_quaternion(rotation->get(part), [&] { return name(f, scope); }, names_.code));
     } else if (const Custom* special = std::get_if<Custom>(&f.value)) {
-        custom(special->special, f, scope);
+        custom(*special, f, scope);
     }
 }
 
@@ -274,9 +275,10 @@ void Validator::point(const Point& p, const Field& field, const Scope& scope) co
         fail(base, "must have a length between 1e-150 and 1e150, got " + format(v));
 }
 
-void Validator::custom(Special special, const Field& field, const Scope& scope) const {
-    switch (special) {
+void Validator::custom(const Custom& special, const Field& field, const Scope& scope) const {
+    switch (special.special) {
         case Special::shape_points: shape_points(field, scope); break;
+        case Special::length_profile: length_profile(special, field, scope); break;
         case Special::pinned_points: pinned_points(field, scope); break;
         // Checked when read (the version), or as the obstacle's mesh (block_rules).
         default: break;
@@ -316,6 +318,48 @@ void Validator::pinned_points(const Field& field, const Scope& scope) const {
                      (end == mechanics::ClampedEnd::first ? "first" : "last") + " end already constrains (" + clamped +
                      "): a point pin there would fight the clamp; remove it");
     }
+}
+
+// A property along the length: pairs (s, value) with s increasing from 0 (or before) to the
+// length (or past it), every value > 0, in place of its constant, which takes the largest.
+void Validator::length_profile(const Custom& profile, const Field& field, const Scope& scope) const {
+    const std::vector<double>& pairs = profile.profile(scope.part);
+    if (pairs.empty()) return;
+    const std::string own = name(field, scope);
+    const Located constant = locate(scope, profile.replaces);
+    const Located length = locate(scope, "length");
+    const bool nested = !names_.c_names;
+    // JSON: radius_profile[k][0]; C: radius_profile_m[2 k] (the flat array of pairs).
+    const auto entry = [&](std::size_t k, std::size_t part) {
+        return nested ? indexed(indexed(own, k), part) : indexed(own, 2 * k + part);
+    };
+    if (!(value_of(*constant.field, constant.part) != 0.0))
+        fail(own, "is given, but " + name(constant) + " is 0, which turns its effect off: give one of them");
+    if (given_.has(join(constant.path, constant.field->key)))
+        fail(own, "and " + name(constant) + " are both given: a profile replaces the constant, give one of them");
+    const std::size_t count = pairs.size() / 2;
+    if (count < 2) fail(own, "must have at least 2 pairs [s, value] (from s = 0 to the length), got " + std::to_string(count));
+    for (std::size_t i = 0; i < pairs.size(); ++i) Checked<double>(pairs[i], entry(i / 2, i % 2), names_.code);
+    for (std::size_t k = 0; k < count; ++k) {
+        const double s = pairs[2 * k], value = pairs[2 * k + 1];
+        if (!(value > 0.0)) fail(entry(k, 1), "must be > 0, got " + format_number(value));
+        if (k > 0 && !(s > pairs[2 * k - 2]))
+            fail(entry(k, 0), "must be greater than the s before it (" + format_number(pairs[2 * k - 2]) +
+                                  "): s must increase along the profile, got " + format_number(s));
+    }
+    const double total = value_of(*length.field, length.part);
+    if (!(pairs[0] <= 0.0))
+        fail(entry(0, 0), "must be <= 0: the profile must cover the bowel from its first end (s = 0), got " +
+                              format_number(pairs[0]));
+    // A hair of rounding spared: a points shape's length is the spline's, computed.
+    if (!(pairs[2 * count - 2] >= total * (1.0 - 1e-9)))
+        fail(entry(count - 1, 0), "must be >= " + name(length) + " (" + format_number(total) +
+                                      "): the profile must cover the bowel to its last end, got " +
+                                      format_number(pairs[2 * count - 2]));
+    double largest = 0.0;
+    for (std::size_t k = 0; k < count; ++k) largest = std::max(largest, pairs[2 * k + 1]);
+    std::get<Number>(constant.field->value).set(const_cast<void*>(constant.part), largest);
+    this->field(*constant.field, scope, Pass::values);  // its rules, for the largest value
 }
 
 // The rules between the fields of a block, beyond each field's own.
@@ -483,6 +527,10 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     if (config.intestine.shape.kind == ShapeKind::points && config.intestine.length == kLengthOfThePoints) {
         SceneConfig placeholder = config;
         placeholder.intestine.length = IntestineConfig().length;
+        for (std::vector<double>* profile :
+             {&placeholder.intestine.radius_profile, &placeholder.intestine.linear_density_profile,
+              &placeholder.intestine.stretch_stiffness_profile, &placeholder.intestine.bend_stiffness_profile})
+            profile->clear();
         validator.walk(Scope{nullptr, scene_block(), &placeholder, "", ""}, Validator::Pass::values);
         config.intestine.length = points_spline_length(config);
         if (!(config.intestine.length > config.intestine.radius))
