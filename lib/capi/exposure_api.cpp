@@ -55,7 +55,7 @@ ExposureHandle& handle_of(ent_exposure* exposure) {
     return *reinterpret_cast<ExposureHandle*>(exposure);
 }
 
-ent_exposure_desc default_desc() {
+ent_exposure_desc default_exposure_desc() {
     ent_exposure_desc desc{};
     desc.struct_size = sizeof(ent_exposure_desc);
     desc.samples_per_edge = 4;
@@ -179,7 +179,7 @@ ENT_API ent_status ent_exposure_desc_init(ent_exposure_desc* desc, uint32_t stru
     return guarded([&] {
         require(desc, "desc");
         enteron::capi::check_struct_size(struct_size, {sizeof(ent_exposure_desc)}, "ent_exposure_desc");
-        ent_exposure_desc defaults = default_desc();
+        ent_exposure_desc defaults = default_exposure_desc();
         defaults.struct_size = struct_size;
         std::memcpy(desc, &defaults, struct_size);
     });

@@ -8,16 +8,12 @@
 
 namespace enteron::mechanics {
 
-namespace {
-constexpr std::size_t kNodesPerSegment = 2;  // see stretch_force.h
-}  // namespace
-
 StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
                            std::pmr::memory_resource* memory)
     : model_(model),
       stiffness_(stretch_stiffness),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory, model.ends)),
+                                        AxialBlocks::kNodesPerSegment, memory, model.ends)),
       node_stiffness_(memory) {
     node_stiffness_.reserve(nodes_.size());
     for (const spline::QuadratureNode& node : nodes_)
@@ -38,21 +34,20 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     // nodes come before any store, so they overlap. The stiffness blocks go to the axial
     // blocks (axial_blocks.h), which add them to the system after this pass; a
     // linearisation without them (one law linearised alone) takes each block at once.
-    static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
-    static_assert(kNodesPerSegment == AxialBlocks::kNodesPerSegment, "the axial blocks are at these nodes");
+    static_assert(AxialBlocks::kNodesPerSegment == 2, "the nodes are paired by segment");
     AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
     const std::size_t count = nodes_.size();
-    for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
+    for (std::size_t first = 0; first < count; first += AxialBlocks::kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
         Vec3 d[2];  // dP/dt at the two nodes
         double len[2], inv[2];
-        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+        for (std::size_t m = 0; m < AxialBlocks::kNodesPerSegment; ++m) {
             d[m] = spline::evaluate(q, node[m].weights);
             len[m] = d[m].norm();
             inv[m] = 1.0 / std::max(len[m], tiny);
         }
         Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()}, hr[2] = {Vec3::Zero(), Vec3::Zero()};
-        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+        for (std::size_t m = 0; m < AxialBlocks::kNodesPerSegment; ++m) {
             if (!(len[m] > tiny)) continue;  // no direction: the node adds nothing
             const double ea = node_stiffness_[first + m];
             const Vec3 u = d[m] * inv[m];

@@ -60,7 +60,7 @@ std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t cou
 constexpr double kContactDampingDepth = 0.1;
 
 // Tells what a mesh obstacle's connectivity means for its contacts.
-void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
+void warn_mesh_topology(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
     if (obstacle.kind != collision::ObstacleKind::mesh || !logger.enabled()) return;
     const collision::MeshDistanceField& field = *obstacle.field;
     const collision::MeshTopologyReport& r = field.report();
@@ -155,7 +155,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
         // A mesh's start can only be checked once its field is built.
         if (obstacle.kind == collision::ObstacleKind::mesh)
             validate_obstacle(obstacle, name, names, state.q.data(), n, &start_clearance_);
-        warn_mesh(obstacle, name, logger_);
+        warn_mesh_topology(obstacle, name, logger_);
         add_to_environment(obstacle);
         ++obstacles_;
     }
@@ -194,7 +194,7 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     validate_obstacle(prepared, name, names, stepper_.state().q.data(), model_.control_points, &start_clearance_);
     add_to_environment(prepared);
     add_to_fingerprint(description_, obstacle);
-    warn_mesh(prepared, name, logger_);
+    warn_mesh_topology(prepared, name, logger_);
     const std::size_t index = obstacles_++;
     refinalize();
     publish();

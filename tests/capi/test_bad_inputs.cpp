@@ -21,14 +21,17 @@
 #include <limits>
 #include <set>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using enteron_test::contains;
+using enteron_test::kNaN;
+
 const double kInf = std::numeric_limits<double>::infinity();
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // A recognisable value that no successful create would write.
 template <class T>
@@ -37,10 +40,10 @@ T* sentinel() {
     return reinterpret_cast<T*>(&storage);
 }
 
-struct SkinDeleter {
+struct BadInputsSkinDeleter {
     void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
 };
-using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
+using BadInputsSkinPtr = std::unique_ptr<ent_skin, BadInputsSkinDeleter>;
 
 // ---- the live objects every row is tried against ---------------------------------------------
 
@@ -1559,7 +1562,7 @@ void run_table(int32_t integrator) {
     ent_skin_desc_default(&skin_desc);
     ent_skin* skin_raw = nullptr;
     ASSERT_EQ(ent_skin_create(tried.get(), &skin_desc, &skin_raw), ENT_OK) << ent_last_error();
-    SkinPtr skin(skin_raw);
+    BadInputsSkinPtr skin(skin_raw);
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
     const Live live{tried.get(), skin.get(), tool};
     int32_t grasping = 0;

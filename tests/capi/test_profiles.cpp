@@ -25,9 +25,9 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kLength = 1.0;
-constexpr double kGravity = 9.81;
-constexpr uint32_t kPoints = 41;
+constexpr double kProfilesLength = 1.0;
+constexpr double kProfilesGravity = 9.81;
+constexpr uint32_t kProfilesPoints = 41;
 
 // Simpson's rule of f over [0, L].
 double simpson(const std::function<double(double)>& f, double length) {
@@ -49,8 +49,8 @@ Hanging hang(const double* density, uint32_t density_pairs, const double* stiffn
     ent_scene_desc desc = default_desc();
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) |
                    ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
-    desc.control_points = kPoints;
-    desc.length_m = kLength;
+    desc.control_points = kProfilesPoints;
+    desc.length_m = kProfilesLength;
     desc.linear_density_kg_per_m = constant_density;
     desc.stretch_stiffness_N = constant_stiffness;
     desc.linear_density_profile_kg_per_m = density;
@@ -62,17 +62,17 @@ Hanging hang(const double* density, uint32_t density_pairs, const double* stiffn
     desc.shape_direction[2] = -1.0;
     desc.integrator = ENT_INTEGRATOR_IMPLICIT_EULER;
     desc.timestep_s = 0.005;
-    desc.gravity_m_per_s2[2] = -kGravity;
+    desc.gravity_m_per_s2[2] = -kProfilesGravity;
     desc.drag_N_s_per_m2 = 2.0;
     desc.stretch_damping_N_s = 0.5;
     desc.pinned_ends = ENT_PIN_FIRST;
     ScenePtr scene = create(desc);
     if (!scene) return {};
-    const double rest_tip = control_points(scene.get())[3 * (kPoints - 1) + 2];
+    const double rest_tip = control_points(scene.get())[3 * (kProfilesPoints - 1) + 2];
     double previous = rest_tip;
     for (int k = 1; k <= 40000; ++k) {
         if (ent_scene_step(scene.get(), 0.005) != ENT_OK) return {};
-        const double tip = control_points(scene.get())[3 * (kPoints - 1) + 2];
+        const double tip = control_points(scene.get())[3 * (kProfilesPoints - 1) + 2];
         if (k > 200 && std::fabs(tip - previous) < 1e-12) return {rest_tip - tip, true};
         previous = tip;
     }
@@ -83,13 +83,13 @@ Hanging hang(const double* density, uint32_t density_pairs, const double* stiffn
 
 TEST(Profiles, AHangingTubeStretchesAsItsDensityProfileLoadsIt) {
     // mu = 0.2 + 0.4 s kg/m (the heavy end down), EA = 20 N.
-    const double density[4] = {0.0, 0.2, kLength, 0.6};
+    const double density[4] = {0.0, 0.2, kProfilesLength, 0.6};
     constexpr double kEA = 20.0;
     const double a = 0.2, b = 0.4;
-    const double mass = a * kLength + 0.5 * b * kLength * kLength;
-    const double reference = simpson([&](double s) { return kGravity * (mass - (a * s + 0.5 * b * s * s)) / kEA; },
-                                     kLength);
-    const double closed_form = kGravity / kEA * (a * kLength * kLength / 2 + b * kLength * kLength * kLength / 3);
+    const double mass = a * kProfilesLength + 0.5 * b * kProfilesLength * kProfilesLength;
+    const double reference = simpson([&](double s) { return kProfilesGravity * (mass - (a * s + 0.5 * b * s * s)) / kEA; },
+                                     kProfilesLength);
+    const double closed_form = kProfilesGravity / kEA * (a * kProfilesLength * kProfilesLength / 2 + b * kProfilesLength * kProfilesLength * kProfilesLength / 3);
     ASSERT_NEAR(reference, closed_form, 1e-9 * closed_form);
     const Hanging hung = hang(density, 2, nullptr, 0, 0.3, kEA);
     ASSERT_TRUE(hung.settled);
@@ -98,16 +98,16 @@ TEST(Profiles, AHangingTubeStretchesAsItsDensityProfileLoadsIt) {
                 error);
     EXPECT_LT(error, 1e-6);
     // The same mass spread evenly drops 14 % less: the test tells the profile from its mean.
-    const double even = kGravity * mass * kLength / (2 * kEA);
+    const double even = kProfilesGravity * mass * kProfilesLength / (2 * kEA);
     EXPECT_GT(std::fabs(hung.drop - even) / reference, 0.1);
 }
 
 TEST(Profiles, AHangingTubeStretchesAsItsStiffnessProfileAllows) {
     // mu = 0.4 kg/m, EA = 40 N at the top down to 10 N at the tip (piecewise linear, 3 knots).
-    const double stiffness[6] = {0.0, 40.0, 0.5, 25.0, kLength, 10.0};
+    const double stiffness[6] = {0.0, 40.0, 0.5, 25.0, kProfilesLength, 10.0};
     constexpr double kMu = 0.4;
     const auto ea = [&](double s) { return s < 0.5 ? 40.0 - 30.0 * s : 25.0 - 30.0 * (s - 0.5); };
-    const double reference = simpson([&](double s) { return kGravity * kMu * (kLength - s) / ea(s); }, kLength);
+    const double reference = simpson([&](double s) { return kProfilesGravity * kMu * (kProfilesLength - s) / ea(s); }, kProfilesLength);
     const Hanging hung = hang(nullptr, 0, stiffness, 3, kMu, 100.0);
     ASSERT_TRUE(hung.settled);
     const double error = std::fabs(hung.drop - reference) / reference;
@@ -115,7 +115,7 @@ TEST(Profiles, AHangingTubeStretchesAsItsStiffnessProfileAllows) {
                 error);
     EXPECT_LT(error, 1e-4);
     // The largest stiffness everywhere (what the constant reads back as) drops far less.
-    const double stiffest = kGravity * kMu * kLength * kLength / (2 * 40.0);
+    const double stiffest = kProfilesGravity * kMu * kProfilesLength * kProfilesLength / (2 * 40.0);
     EXPECT_GT(std::fabs(hung.drop - stiffest) / reference, 0.3);
 }
 
