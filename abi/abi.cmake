@@ -14,7 +14,7 @@ if(ENTERON_ABIDW AND ENTERON_ABIDIFF)
   if(ENTERON_NINJA)
     add_test(NAME abi_check_bites
       COMMAND ${PROJECT_SOURCE_DIR}/tests/abi/check_bites.sh
-              ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR}/abi_check_bites)
+              ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR}/abi_check_bites $<TARGET_FILE:enteron_core>)
     set_tests_properties(abi_check_bites PROPERTIES
       LABELS abi
       TIMEOUT 600

@@ -46,7 +46,7 @@ void skin_table(const Options& options, ent_scene* scene, const char* pile, cons
     const int timed_updates = options.fast ? 3 : 15;
     Csv csv(options.out_dir + "/" + file,
             {"method", "resolution", "segments", "ring_spacing_radii", "skeleton_spacing_radii", "voxel_size_radii",
-             "triangles", "radius_error_rms", "radius_error_max", "blended_vertices", "inverted_triangles",
+             "triangles", "radius_error_rms", "radius_error_max", "free_radius_error_rms", "blended_vertices", "inverted_triangles",
              "volume_error", "watertight", "open_edges", "nonmanifold_edges", "normal_deviation_rms_rad", "ms_per_update"});
     for (const Method& method : kMethods)
         for (const Resolution& resolution : kResolutions) {
@@ -80,7 +80,7 @@ void skin_table(const Options& options, ent_scene* scene, const char* pile, cons
                      resolution.name, m.triangle_count, 100 * m.radius_error_rms, m.blended_vertices, ms_median);
             csv.row({method.name, resolution.name, num(resolution.segments), num(resolution.ring_spacing),
                      num(resolution.skeleton_spacing), num(resolution.voxel_size), num(m.triangle_count),
-                     num(m.radius_error_rms), num(m.radius_error_max), num(m.blended_vertices),
+                     num(m.radius_error_rms), num(m.radius_error_max), num(m.free_radius_error_rms), num(m.blended_vertices),
                      num(m.inverted_triangles), num(m.volume_error), num(m.watertight), num(m.open_edges), num(m.nonmanifold_edges),
                      num(m.normal_deviation_rms_rad), num(ms_median)});
         }

@@ -36,7 +36,7 @@ namespace {
 constexpr double kToolRadius = 0.005;   // m
 constexpr double kToolLength = 0.3;     // m
 constexpr double kToolMaxForce = 8.0;   // N
-constexpr double kLength = 1.0;         // m
+constexpr double kPushedLength = 1.0;         // m
 constexpr uint32_t kControlPoints = 41;
 // The tool starts beside the bowel's middle, 5 mm from its surface, its tip R/2 above the
 // floor, so that its shaft meets the tube's side at the axis's height.
@@ -53,8 +53,8 @@ std::string pressed_bowel_json(double spacing, double stiffness) {
         " \"environment\": [{\"type\": \"plane\", \"point\": [0, 0, 0], \"normal\": [0, 0, 1]}],"
         " \"tools\": [{\"mode\": \"direct\", \"radius\": %.17g, \"length\": %.17g, \"max_force\": %.17g,"
         " \"position\": [%.17g, %.17g, %.17g], \"orientation\": [1, 0, 0, 0]}]}",
-        kLength, kPileRadius, kControlPoints, kPileRadius, spacing, stiffness, kToolRadius, kToolLength,
-        kToolMaxForce, 0.5 * kLength, kStartY, 0.5 * kPileRadius);
+        kPushedLength, kPileRadius, kControlPoints, kPileRadius, spacing, stiffness, kToolRadius, kToolLength,
+        kToolMaxForce, 0.5 * kPushedLength, kStartY, 0.5 * kPileRadius);
 }
 
 double distance_to_segment(const double* p, const double a[3], const double b[3]) {
@@ -94,7 +94,7 @@ struct ToolRun {
     std::vector<double> touch_tip;           // and the tip there
 };
 
-std::string run_name(double spacing, double stiffness) {
+std::string tool_push_study_run_name(double spacing, double stiffness) {
     return "tool " + exact(spacing) + " " + exact(stiffness);
 }
 
@@ -103,13 +103,13 @@ std::string run_name(double spacing, double stiffness) {
 ToolRun push(double spacing, double stiffness, bool timed) {
     const double r = kPileRadius;
     const double sample_spacing = r / 8;
-    const uint32_t samples = static_cast<uint32_t>(std::lround(kLength / sample_spacing)) + 1;
+    const uint32_t samples = static_cast<uint32_t>(std::lround(kPushedLength / sample_spacing)) + 1;
     ToolRun run;
     try {
         ScenePtr scene = make_scene(pressed_bowel_json(spacing, stiffness));
         for (long k = 0; k < std::lround(Push::settle_s / Push::step_s); ++k)
             check(ent_scene_step(scene.get(), Push::step_s), "ent_scene_step");
-        double tip[3] = {0.5 * kLength, kStartY, 0.5 * r};
+        double tip[3] = {0.5 * kPushedLength, kStartY, 0.5 * r};
         double force[3] = {0, 0, 0}, torque[3];
         auto step_to = [&](const double* pose) {
             check(ent_tool_set_pose(scene.get(), 0, pose, kIdentity), "ent_tool_set_pose");
@@ -186,7 +186,7 @@ double time_push_window(double spacing, double stiffness, const ToolRun& run) {
     return median(times);
 }
 
-RunRecord to_record(const ToolRun& run) {
+RunRecord tool_push_study_to_record(const ToolRun& run) {
     RunRecord record;
     record.put("penetration", std::vector<double>{run.max_pen, run.sum_pen2, static_cast<double>(run.pen_count)});
     record.put("force", std::vector<double>{run.max_force, run.jump_max, run.jump_sum2, static_cast<double>(run.jumps)});
@@ -197,7 +197,7 @@ RunRecord to_record(const ToolRun& run) {
     return record;
 }
 
-ToolRun from_record(const RunRecord& record) {
+ToolRun tool_run_from(const RunRecord& record) {
     ToolRun run;
     const std::vector<double> penetration = record.numbers("penetration"), force = record.numbers("force");
     if (penetration.size() != 3 || force.size() != 4) throw std::runtime_error("a tool run record with missing figures");
@@ -221,7 +221,7 @@ bool print_tool_run(const Options&, const std::string& name) {
     const std::vector<std::string> words = name_words(name);
     if (words.size() != 3 || words[0] != "tool") return false;
     const ToolRun run = push(std::strtod(words[1].c_str(), nullptr), std::strtod(words[2].c_str(), nullptr), false);
-    std::fputs(to_record(run).serialize().c_str(), stdout);
+    std::fputs(tool_push_study_to_record(run).serialize().c_str(), stdout);
     return true;
 }
 
@@ -235,9 +235,9 @@ void run_tool_push_study(const Options& options) {
             const double start = now_s();
             ToolRun run;
             switch (run_mode(options)) {
-                case RunMode::list: list_run(run_name(spacing, stiffness)); continue;
+                case RunMode::list: list_run(tool_push_study_run_name(spacing, stiffness)); continue;
                 case RunMode::from_records:
-                    run = from_record(load_run(options, run_name(spacing, stiffness)));
+                    run = tool_run_from(load_run(options, tool_push_study_run_name(spacing, stiffness)));
                     run.us = time_push_window(spacing, stiffness, run);
                     break;
                 default: run = push(spacing, stiffness, true);

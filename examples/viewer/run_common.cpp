@@ -13,10 +13,6 @@
 
 namespace viewer {
 
-namespace {
-const char* const kSkinNames[] = {"tube", "point_skeleton", "convolution"};
-}
-
 void create_imgui() {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -97,7 +93,7 @@ void print_summary(const Viewer& viewer, int frames, double wall_s) {
     if (const Session* session = viewer.session()) {
         const int method = session->skin().method;
         std::printf("; step median %.0f us, largest %.0f us; skin %s, %u triangles, update %.2f ms", h.step_median_us,
-                    h.step_max_us, method >= 0 && method < 3 ? kSkinNames[method] : "?", frame.mesh.triangle_count,
+                    h.step_max_us, skin_method_name(method), frame.mesh.triangle_count,
                     h.skin_update_ms);
     }
     std::printf("\nenteron-viewer: force plot: %llu samples, %llu non-zero, largest |F| %.3f N",

@@ -20,6 +20,12 @@
 
 namespace viewer {
 
+// An ent_skin_desc.method's name, as the command line spells it ("?" for none of them).
+inline const char* skin_method_name(std::int32_t method) {
+    static const char* const names[] = {"tube", "point_skeleton", "convolution"};
+    return method >= 0 && method < 3 ? names[method] : "?";
+}
+
 // The ENT_ERROR_* name of a status, as enteron.h spells it.
 inline const char* status_name(ent_status status) {
     switch (status) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "clock.h"
 #include "demo_scene.h"
 #include "script.h"
 #ifdef ENTERON_VIEWER_WITH_LCM
@@ -18,10 +19,6 @@
 namespace viewer {
 
 namespace {
-
-double wall_seconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
 
 constexpr double kNoticeSeconds = 4.0;
 // The laparoscope's tip inside the wall: 2 cm past the port, as a surgeon starts (the loops of a

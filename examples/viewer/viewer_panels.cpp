@@ -12,19 +12,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "clock.h"
 #include "viewer.h"
 
 namespace viewer {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-const char* const kSkinNames[] = {"tube", "point_skeleton", "convolution"};
-
-double wall_seconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
 bool drag_double(const char* label, double* value, double speed, double low, double high, const char* format) {
     return ImGui::DragScalar(label, ImGuiDataType_Double, value, static_cast<float>(speed), &low, &high, format,
@@ -109,12 +104,12 @@ void Viewer::build_panels() {
         const Eigen::Quaterniond q(target.orientation_wxyz[0], target.orientation_wxyz[1], target.orientation_wxyz[2],
                                    target.orientation_wxyz[3]);
         const Eigen::Vector3d shaft = q.normalized() * Eigen::Vector3d::UnitZ();
-        double tilt_deg = std::acos(std::clamp(shaft.z(), -1.0, 1.0)) * 180.0 / kPi;
-        double heading_deg = std::atan2(shaft.y(), shaft.x()) * 180.0 / kPi;
+        double tilt_deg = std::acos(std::clamp(shaft.z(), -1.0, 1.0)) * kDegreesPerRadian;
+        double heading_deg = std::atan2(shaft.y(), shaft.x()) * kDegreesPerRadian;
         const bool tilted = drag_double("tilt (deg)", &tilt_deg, 0.5, 0.0, 180.0, "%.1f");
         const bool headed = drag_double("heading (deg)", &heading_deg, 1.0, -180.0, 180.0, "%.0f");
         if (tilted || headed) {
-            const double theta = tilt_deg * kPi / 180.0, phi = heading_deg * kPi / 180.0;
+            const double theta = tilt_deg / kDegreesPerRadian, phi = heading_deg / kDegreesPerRadian;
             const Eigen::Quaterniond turned(Eigen::AngleAxisd(theta, Eigen::Vector3d(-std::sin(phi), std::cos(phi), 0.0)));
             target.orientation_wxyz[0] = turned.w();
             target.orientation_wxyz[1] = turned.x();
@@ -228,7 +223,7 @@ void Viewer::build_panels() {
     if (frame_.link.remote && ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
         // The server makes the mesh; the viewer only draws it.
         if (frame_.link.meshes > 0)
-            ImGui::TextWrapped("the server's mesh_t (%s; --mesh-skin, --mesh-hz)", kSkinNames[session_->skin().method]);
+            ImGui::TextWrapped("the server's mesh_t (%s; --mesh-skin, --mesh-hz)", skin_method_name(session_->skin().method));
         else
             ImGui::TextWrapped("a tube around the state's axis (the server sends no mesh: --mesh-hz 0)");
         ImGui::Text("%u triangles, %u vertices", frame_.mesh.triangle_count, frame_.mesh.vertex_count);
@@ -238,7 +233,7 @@ void Viewer::build_panels() {
         for (int m = 0; m < 3; ++m) {
             if (m > 0) ImGui::SameLine();
             char label[40];
-            std::snprintf(label, sizeof label, "%s (%d)", kSkinNames[m], m + 1);
+            std::snprintf(label, sizeof label, "%s (%d)", skin_method_name(m), m + 1);
             changed |= ImGui::RadioButton(label, &desc.method, m);
         }
         int segments = static_cast<int>(desc.segments), cap_rings = static_cast<int>(desc.cap_rings);
@@ -271,8 +266,8 @@ void Viewer::build_panels() {
                         100 * metrics_.radius_error_max);
             ImGui::Text("facet error: RMS %.2f %%, max %.2f %%", 100 * metrics_.facet_error_rms,
                         100 * metrics_.facet_error_max);
-            ImGui::Text("normals: RMS %.2f deg, max %.1f deg", metrics_.normal_deviation_rms_rad * 180.0 / kPi,
-                        metrics_.normal_deviation_max_rad * 180.0 / kPi);
+            ImGui::Text("normals: RMS %.2f deg, max %.1f deg", metrics_.normal_deviation_rms_rad * kDegreesPerRadian,
+                        metrics_.normal_deviation_max_rad * kDegreesPerRadian);
             ImGui::Text("%s, %u open edges, %u blended, %u inverted", metrics_.watertight ? "watertight" : "NOT watertight",
                         metrics_.open_edges, metrics_.blended_vertices, metrics_.inverted_triangles);
             ImGui::Text("volume error %+.2f %%", 100 * metrics_.volume_error);

@@ -324,6 +324,23 @@ typedef struct ent_scene_desc {
      *  of a clamped end may not be in pinned_points. Added in 0.1 after the first scenes: a
      *  caller built against the older, smaller ent_scene_desc gets ENT_PIN_NONE. */
     int32_t clamped_ends;
+
+    /* Properties along the length, each in place of its constant (docs/scene-json.md,
+       intestine.radius_profile): `count` pairs (s, value) in 2 x count doubles, s the arc
+       length from the first end at rest (m), strictly increasing, the first <= 0 and the last
+       >= the length (a points shape's length: the spline's), each value > 0, piecewise linear
+       between them. NULL and 0: the constant. A profile given with its constant changed from
+       its default is refused (give one), as is one whose effect is off (its bit clear); the
+       constant then reads back (ent_scene_read_desc) as the profile's largest value, and the
+       arrays as NULL and 0. Added in 0.1 with the profiles: an older, smaller ent_scene_desc has none. */
+    const double* radius_profile_m;                 /**< pairs (s m, radius m): the tube's radius R(s). */
+    uint32_t radius_profile_count;                  /**< pairs in radius_profile_m. */
+    const double* linear_density_profile_kg_per_m;  /**< pairs (s m, mass per metre kg/m). */
+    uint32_t linear_density_profile_count;          /**< pairs in linear_density_profile_kg_per_m. */
+    const double* stretch_stiffness_profile_N;      /**< pairs (s m, EA N); ENT_EFFECT_STRETCH. */
+    uint32_t stretch_stiffness_profile_count;       /**< pairs in stretch_stiffness_profile_N. */
+    const double* bend_stiffness_profile_N_m2;      /**< pairs (s m, EI N m^2); ENT_EFFECT_BEND. */
+    uint32_t bend_stiffness_profile_count;          /**< pairs in bend_stiffness_profile_N_m2. */
 } ent_scene_desc;
 
 /**

@@ -141,6 +141,35 @@ struct SceneDesc : ent_scene_desc {
         effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
         return *this;
     }
+    /** A property along the length from `pairs` (s m, value: doubles, 2 per pair), in place of
+     *  its constant: radius_profile_m and radius_profile_count, and the same for the others.
+     *  Throws Error when its size is odd. */
+    template <class Container>
+    SceneDesc& radius_profile(const Container& pairs) {
+        return profile(pairs, radius_profile_m, radius_profile_count, "radius_profile_m");
+    }
+    template <class Container>
+    SceneDesc& linear_density_profile(const Container& pairs) {
+        return profile(pairs, linear_density_profile_kg_per_m, linear_density_profile_count,
+                       "linear_density_profile_kg_per_m");
+    }
+    template <class Container>
+    SceneDesc& stretch_stiffness_profile(const Container& pairs) {
+        return profile(pairs, stretch_stiffness_profile_N, stretch_stiffness_profile_count,
+                       "stretch_stiffness_profile_N");
+    }
+    template <class Container>
+    SceneDesc& bend_stiffness_profile(const Container& pairs) {
+        return profile(pairs, bend_stiffness_profile_N_m2, bend_stiffness_profile_count, "bend_stiffness_profile_N_m2");
+    }
+
+private:
+    template <class Container>
+    SceneDesc& profile(const Container& pairs, const double*& field, uint32_t& count, const char* name) {
+        count = detail::item_count(std::size(pairs), 2, name);
+        field = detail::data_of<double>(pairs);
+        return *this;
+    }
 };
 /** ent_tool_desc with the library's defaults. */
 struct ToolDesc : ent_tool_desc {

@@ -83,7 +83,7 @@ enteron::collision::Obstacle obstacle_from(const ent_obstacle_desc& desc) {
 }
 
 // The defaults of every field, as ent_obstacle_desc_default gives them.
-ent_obstacle_desc default_desc() {
+ent_obstacle_desc default_obstacle_desc() {
     ent_obstacle_desc defaults;
     std::memset(&defaults, 0, sizeof defaults);
     defaults.struct_size = sizeof defaults;
@@ -151,7 +151,7 @@ ENT_API ent_status ent_obstacle_desc_init(ent_obstacle_desc* desc, uint32_t stru
         require(desc, "desc");
         enteron::capi::check_struct_size(struct_size, {kObstacleDescBeforeMeshes, sizeof(ent_obstacle_desc)},
                                          "ent_obstacle_desc");
-        ent_obstacle_desc defaults = default_desc();
+        ent_obstacle_desc defaults = default_obstacle_desc();
         defaults.struct_size = struct_size;
         std::memcpy(desc, &defaults, struct_size);
     });
@@ -165,7 +165,7 @@ ENT_API ent_status ent_scene_add_obstacle(ent_scene* scene, const ent_obstacle_d
         enteron::capi::check_struct_size(desc->struct_size, {kObstacleDescBeforeMeshes, sizeof(ent_obstacle_desc)},
                                          "ent_obstacle_desc");
         // An older caller's struct ends at its size: the fields it lacks get their defaults.
-        ent_obstacle_desc complete = default_desc();
+        ent_obstacle_desc complete = default_obstacle_desc();
         std::memcpy(&complete, desc, desc->struct_size);
         const enteron::capi::DrivingCall driving(handle, "ent_scene_add_obstacle");
         enteron::scene::Scene& s = *handle.scene;

@@ -17,6 +17,17 @@ namespace {
 
 // Larger inputs than these are refused before anything is copied from the caller's arrays.
 constexpr uint32_t kMaxControlPoints = 100000;
+constexpr uint32_t kMaxProfilePairs = 100000;
+
+// A profile's pairs (ent_scene_desc: pointer and count) into `pairs`.
+void read_profile(const double* given, uint32_t count, const char* name, std::vector<double>& pairs) {
+    if (count == 0) return;
+    if (count > kMaxProfilePairs)
+        throw Error(ErrorCode::invalid_argument, std::string(name) + "_count must be <= " +
+                                                     std::to_string(kMaxProfilePairs) + ", got " + std::to_string(count));
+    require(given, (std::string(name) + " (with " + name + "_count > 0)").c_str());
+    pairs.assign(given, given + 2 * std::size_t{count});
+}
 
 // The fields of ent_scene_desc that are values of the scene's table, each the row of its
 // name (scene/scene_table.cpp). The others: struct_size, effects, the arrays and their
@@ -96,10 +107,12 @@ ent_scene_desc default_desc() {
 //                tests/abi/enteron_v0_0.h keeps its header so that a test proves older
 //                callers are served (tests/abi/old_caller.c).
 //   0.1 first    without `clamped_ends`.
+//   0.1 second   without the profiles (radius_profile_m ...).
 //   0.1          the current header.
 void check_scene_desc_size(uint32_t struct_size) {
     check_struct_size(struct_size,
-                      {offsetof(ent_scene_desc, callbacks), offsetof(ent_scene_desc, clamped_ends), sizeof(ent_scene_desc)},
+                      {offsetof(ent_scene_desc, callbacks), offsetof(ent_scene_desc, clamped_ends),
+                       offsetof(ent_scene_desc, radius_profile_m), sizeof(ent_scene_desc)},
                       "ent_scene_desc");
 }
 
@@ -152,6 +165,13 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
         require(desc.pinned_points, "pinned_points (with pinned_point_count > 0)");
         config.pinned->points.assign(desc.pinned_points, desc.pinned_points + desc.pinned_point_count);
     }
+    read_profile(desc.radius_profile_m, desc.radius_profile_count, "radius_profile_m", intestine.radius_profile);
+    read_profile(desc.linear_density_profile_kg_per_m, desc.linear_density_profile_count,
+                 "linear_density_profile_kg_per_m", intestine.linear_density_profile);
+    read_profile(desc.stretch_stiffness_profile_N, desc.stretch_stiffness_profile_count,
+                 "stretch_stiffness_profile_N", intestine.stretch_stiffness_profile);
+    read_profile(desc.bend_stiffness_profile_N_m2, desc.bend_stiffness_profile_count, "bend_stiffness_profile_N_m2",
+                 intestine.bend_stiffness_profile);
     const scene::FieldSet given = scene::fields_apart_from_defaults(config);
     return scene::validate(std::move(config), scene::c_field_names(), given);
 }

@@ -117,7 +117,7 @@ void check_skin_metrics_size(uint32_t struct_size) {
                                      "ent_skin_metrics");
 }
 
-ent_skin_desc default_desc() {
+ent_skin_desc default_skin_desc() {
     ent_skin_desc defaults{};
     defaults.struct_size = sizeof defaults;
     defaults.method = ENT_SKIN_CONVOLUTION;
@@ -137,7 +137,7 @@ ent_skin_desc default_desc() {
 enteron::skinning::SkinSettings settings_from_desc(const ent_skin_desc& given, double radius) {
     check_skin_desc_size(given.struct_size);
     // An older caller's smaller struct: the fields it lacks keep their defaults.
-    ent_skin_desc desc = default_desc();
+    ent_skin_desc desc = default_skin_desc();
     std::memcpy(&desc, &given, given.struct_size);
     if (desc.method != ENT_SKIN_TUBE && desc.method != ENT_SKIN_POINT_SKELETON && desc.method != ENT_SKIN_CONVOLUTION)
         throw Error(ErrorCode::invalid_argument,
@@ -180,7 +180,7 @@ ENT_API ent_status ent_skin_desc_init(ent_skin_desc* desc, uint32_t struct_size)
     return guarded([&] {
         require(desc, "desc");
         check_skin_desc_size(struct_size);
-        ent_skin_desc defaults = default_desc();
+        ent_skin_desc defaults = default_skin_desc();
         defaults.struct_size = struct_size;
         // An older caller's struct ends at struct_size: write nothing past it.
         std::memcpy(desc, &defaults, struct_size);

@@ -11,7 +11,8 @@
 namespace enteron::collision {
 
 CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_length, double spacing,
-                                   double radius, std::pmr::memory_resource* memory, spline::Ends ends)
+                                   double radius, std::pmr::memory_resource* memory, spline::Ends ends,
+                                   const spline::LengthProfile* radius_profile)
     : control_points_(control_points),
       radius_(radius),
       rest_spacing_(0.0),
@@ -19,6 +20,7 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
       sample_points_(memory),
       sample_arc_(memory),
       spheres_(memory),
+      rest_fractions_(memory),
       placed_for_(3 * control_points, 0.0, memory),
       velocities_(memory),
       velocities_for_(3 * control_points, 0.0, memory) {
@@ -31,9 +33,27 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
                 control_points, segment, double(k) / kSamplesPerSegment, spline::Derivative::value, ends));
     sample_points_.assign(3 * sample_weights_.size(), 0.0);
     sample_arc_.assign(sample_weights_.size(), 0.0);
-    const std::size_t count = static_cast<std::size_t>(std::llround(rest_length / spacing)) + 1;
-    rest_spacing_ = rest_length / double(count - 1);
-    spheres_.resize(std::max<std::size_t>(count, 2));
+    if (radius_profile == nullptr) {
+        const std::size_t count = static_cast<std::size_t>(std::llround(rest_length / spacing)) + 1;
+        rest_spacing_ = rest_length / double(count - 1);
+        spheres_.resize(std::max<std::size_t>(count, 2));
+        for (Sphere& sphere : spheres_) sphere.radius = radius;
+    } else {
+        // Even steps of u(s) = R_max x integral of ds / R(s) (length_profile.h): a step of
+        // `spacing` in u is spacing x R(s) / R_max in s.
+        const double span = radius * radius_profile->reciprocal_integral(rest_length);
+        const std::size_t count = std::max<std::size_t>(static_cast<std::size_t>(std::llround(span / spacing)) + 1, 2);
+        rest_spacing_ = span / double(count - 1);
+        spheres_.resize(count);
+        rest_fractions_.resize(count);
+        for (std::size_t j = 0; j < count; ++j) {
+            const double s = j + 1 == count ? rest_length
+                                            : radius_profile->where_reciprocal_integral_is(
+                                                  rest_spacing_ * double(j) / radius);
+            rest_fractions_[j] = std::min(s / rest_length, 1.0);
+            spheres_[j].radius = radius_profile->at(s);
+        }
+    }
     velocities_.assign(3 * spheres_.size(), 0.0);
 }
 
@@ -84,8 +104,9 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
     const double spacing = total / double(count - 1);
     Sphere* spheres = spheres_.data();
     std::size_t segment = 0, k = 0;  // the interval from sample (segment, k) to (segment, k + 1)
+    const double* fractions = rest_fractions_.empty() ? nullptr : rest_fractions_.data();
     for (std::size_t j = 0; j < count; ++j) {
-        const double target = spacing * double(j);
+        const double target = fractions != nullptr ? total * fractions[j] : spacing * double(j);
         for (;;) {
             const std::size_t next = segment * kPerSegment + k + 1;
             if (arcs[next] >= target) break;

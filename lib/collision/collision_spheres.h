@@ -4,6 +4,12 @@
 // fixed when the scene is made (rest length / spacing), and each update spreads them over
 // the current length, so the spacing stays even however the segments stretch.
 //
+// With a radius profile R(s) each sphere takes the radius at its place, and the spacing
+// follows the radius: spacing x R(s) / R_max, so that the spheres overlap as much
+// everywhere and a neighbour window counted in spheres (self_contact_force.h) spans the
+// same multiple of the local radius. Their places are fixed in material arc length, as
+// fractions of the length, and spread over the current length in those fractions.
+//
 // To stay cheap at 1 kHz the axis is followed as a fine polyline (a few samples per
 // segment, whose basis weights are constant) and a sphere's centre and weights are
 // interpolated on it; its force then reaches the control points through those weights.
@@ -24,14 +30,17 @@ struct Sphere {
     spline::SegmentWeights weights;  // of the centre, on four control points
     Vec3 center = Vec3::Zero();      // m
     double arc_length;               // from the first end, m
+    double radius = 0.0;             // m: the tube's there (constant, the profile's at rest)
 };
 
 class CollisionSpheres {
 public:
     // `spacing` (m) at rest; the count is round(rest_length / spacing) + 1. `ends`: the
-    // spline's end treatment (the mechanics' own, AxisModel::ends).
+    // spline's end treatment (the mechanics' own, AxisModel::ends). With a radius profile,
+    // `radius` is its largest value and `spacing` the spacing there (see above).
     CollisionSpheres(std::size_t control_points, double rest_length, double spacing, double radius,
-                     std::pmr::memory_resource* memory, spline::Ends ends = {});
+                     std::pmr::memory_resource* memory, spline::Ends ends = {},
+                     const spline::LengthProfile* radius_profile = nullptr);
 
     // Places the spheres on the axis given by the control points (x y z each). The effects
     // that make contacts share one set of spheres and each calls this for the state it
@@ -53,7 +62,10 @@ public:
     // caches keyed on placements are dropped (after a restore).
     void forget_placement() { placed_ = false; }
     const Sphere& operator[](std::size_t i) const { return spheres_[i]; }
+    // The largest sphere radius (every sphere's without a profile): what bounds and search
+    // margins take; a contact takes each sphere's own (Sphere::radius).
     double radius() const { return radius_; }
+    // The spacing at rest where the radius is radius() (everywhere without a profile).
     double rest_spacing() const { return rest_spacing_; }
 
     // bound += scale * sum over spheres of w w^T (per coordinate): the stiffness bound of
@@ -70,6 +82,7 @@ private:
     std::pmr::vector<double> sample_points_;                   // x y z per sample
     std::pmr::vector<double> sample_arc_;                      // arc length at each sample
     std::pmr::vector<Sphere> spheres_;
+    std::pmr::vector<double> rest_fractions_;  // with a profile: each sphere's arc length / the length
     std::pmr::vector<double> placed_for_;  // the control points of the last update
     std::pmr::vector<double> velocities_;  // of the centres, x y z
     std::pmr::vector<double> velocities_for_;  // the control point velocities they are for

@@ -90,9 +90,9 @@ ENTERON_HOT_KERNEL void EnvironmentForce::find_contacts(const mechanics::State& 
     if (contacts_for_ == spheres_.placement() && (!moving || contacts_time_ == t)) return;
     contacts_.clear();
     for (std::size_t k = 0; k < placed_.size(); ++k) placements_[k] = frames_.at(placed_[k].frame, t);
-    const double r = spheres_.radius();
     for (std::size_t i = 0; i < spheres_.size(); ++i)
         for (std::size_t k = 0; k < placed_.size(); ++k) {
+            const double r = spheres_[i].radius;
             const Placed& placed = placed_[k];
             if (placed.removed) continue;
             const mechanics::FramePlacement& frame = placements_[k];
@@ -116,7 +116,6 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/
     find_contacts(state, state.time + (lin != nullptr ? lin->h : 0.0));
     last_ = {};
     log_.clear();
-    const double r = spheres_.radius();
     double power = 0.0;  // of the moving obstacles' contacts, W
     // The velocity of the spheres in contact only (in sphere order: once per sphere); most
     // spheres touch nothing.
@@ -124,6 +123,7 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/
     Vec3 v = Vec3::Zero();
     for (const Contact& contact : contacts_) {
         const std::size_t i = contact.sphere;
+        const double r = spheres_[i].radius;
         const ObstacleContact& c = contact.contact;
         if (have_velocity != i) v = spline::evaluate(state.v.data(), spheres_[i].weights), have_velocity = i;
         const Placed& placed = placed_[contact.obstacle];
@@ -170,9 +170,9 @@ void EnvironmentForce::evaluate(const mechanics::State& state, double* /*force*/
 
 double EnvironmentForce::potential_energy(const mechanics::State& state) const {
     find_contacts(state, state.time);
-    const double r = spheres_.radius();
     double energy = 0.0;
     for (const Contact& contact : contacts_) {
+        const double r = spheres_[contact.sphere].radius;
         const double k = placed_[contact.obstacle].contact.stiffness, d = contact.contact.depth;
         // A moved obstacle's spring stops growing at depth R (evaluate's bound).
         if (placements_[contact.obstacle].kinematic && d > r)

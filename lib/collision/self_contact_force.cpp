@@ -141,8 +141,10 @@ void SelfContactForce::search_moved_near_pairs() const {
 
 template <class Visit>
 void SelfContactForce::search_contacts(Visit&& visit) const {
-    const double reach = 2.0 * spheres_.radius();
+    // Two spheres touch closer than the sum of their radii (2R without a radius profile).
+    const auto reach_of = [&](std::size_t i, std::size_t j) { return spheres_[i].radius + spheres_[j].radius; };
     const auto contact = [&](std::size_t i, std::size_t j) {
+        const double reach = reach_of(i, j);
         const Vec3 d = point_at(positions_.data(), i) - point_at(positions_.data(), j);
         const double distance2 = d.squaredNorm();
         if (!(distance2 < reach * reach)) return;
@@ -154,14 +156,13 @@ void SelfContactForce::search_contacts(Visit&& visit) const {
         // First the listed pairs that touch, without a branch per pair (about one in six
         // touches, 800 of 4800 in the collision bench's pile, in no pattern a branch
         // predictor could learn), then their contacts.
-        const double reach2 = reach * reach;
         std::size_t touching = 0;
         for (std::size_t k = 0; k < near_pairs_.size(); ++k) {
-            const double distance2 =
-                (point_at(positions_.data(), near_pairs_[k].first) - point_at(positions_.data(), near_pairs_[k].second))
-                    .squaredNorm();
+            const auto [i, j] = near_pairs_[k];
+            const double distance2 = (point_at(positions_.data(), i) - point_at(positions_.data(), j)).squaredNorm();
+            const double reach = reach_of(i, j);
             touching_[touching] = static_cast<uint32_t>(k);
-            touching += distance2 < reach2 ? 1 : 0;
+            touching += distance2 < reach * reach ? 1 : 0;
         }
         for (std::size_t t = 0; t < touching; ++t) {
             const auto& [i, j] = near_pairs_[touching_[t]];

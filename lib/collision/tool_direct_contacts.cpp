@@ -25,6 +25,8 @@ void DirectContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doub
         const Sphere& sphere = spheres[i];
         ShaftContact touch;
         if (!shaft_contact(shaft, sphere.center, &touch)) continue;
+        touch.depth -= spheres.radius() - sphere.radius;  // the shaft reaches as far as the largest sphere
+        if (!(touch.depth > 0.0)) continue;
         const double s = touch.s;
         Hit hit;
         hit.sphere = i;

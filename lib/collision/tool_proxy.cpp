@@ -44,8 +44,9 @@ double free_fraction(const ProxyProblem& problem, const std::pmr::vector<ProxyCa
         if (!swept.in_box(candidate.center)) continue;
         double s, distance2;
         Vec3 d;
-        if (shaft.touches(candidate.center, &s, &d, &distance2)) continue;
-        const double t = shaft.first_touch(candidate.center, step, problem.reach - kFirstTouchDepth * problem.reach);
+        const double reach = problem.reach - candidate.thinner;
+        if (shaft.touches(candidate.center, &s, &d, &distance2) && distance2 < reach * reach) continue;
+        const double t = shaft.first_touch(candidate.center, step, reach - kFirstTouchDepth * problem.reach);
         if (t > 0.0) first = std::min(first, t);
     }
     return first;
@@ -79,6 +80,8 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
         const ProxyCandidate& candidate = candidates[k];
         ShaftContact touch;
         if (!shaft_contact(shaft, candidate.center, &touch)) continue;
+        touch.depth -= candidate.thinner;  // the shaft reaches as far as the largest sphere
+        if (!(touch.depth > 0.0)) continue;
         ProxyContact contact;
         contact.candidate = k;
         contact.depth = touch.depth;

@@ -35,6 +35,9 @@ struct ProxyCandidate {
     std::size_t sphere;
     Vec3 center;
     Vec3 velocity;
+    // How much less far it reaches than ProxyProblem::reach assumes (a radius profile's
+    // thinner part: the largest radius minus its own), m; 0 without a profile.
+    double thinner = 0.0;
 };
 
 // The grasp, when it holds: the spring of tool_grasp.h from the held axis point to the

@@ -55,7 +55,8 @@ void ProxyContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doubl
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         const Sphere& sphere = spheres[i];
         if (!box.contains(sphere.center)) continue;
-        candidates_.push_back({i, sphere.center, spline::evaluate(state.v.data(), sphere.weights)});
+        candidates_.push_back({i, sphere.center, spline::evaluate(state.v.data(), sphere.weights),
+                               spheres.radius() - sphere.radius});
     }
     const bool holding = tool.grasp.holding && !tool.grasp.slipped;
     if (holding) {

@@ -8,10 +8,6 @@
 
 namespace enteron::mechanics {
 
-namespace {
-constexpr std::size_t kNodesPerSegment = 2;  // see stretch_force.h
-}
-
 DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& coefficients,
                            std::pmr::memory_resource* memory)
     : model_(model),
@@ -19,7 +15,7 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
       constant_(memory),
       constant_products_(memory),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory, model.ends)) {
+                                        AxialBlocks::kNodesPerSegment, memory, model.ends)) {
     const std::size_t n = model.control_points;
     const double l0 = model.rest_segment_length;
     constant_.resize(n);
@@ -42,21 +38,20 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
     // linearisation without them (one law linearised alone) takes each block at once.
     // The two nodes of a segment share their four control points: their forces are added
     // together, and both divisions come before any store (they overlap).
-    static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
-    static_assert(kNodesPerSegment == AxialBlocks::kNodesPerSegment, "the axial blocks are at these nodes");
+    static_assert(AxialBlocks::kNodesPerSegment == 2, "the nodes are paired by segment");
     AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
     const std::size_t count = nodes_.size();
-    for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
+    for (std::size_t first = 0; first < count; first += AxialBlocks::kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
         Vec3 d[2];  // dP/dt at the two nodes
         Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()};
         double length2[2], inv2[2];
-        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+        for (std::size_t m = 0; m < AxialBlocks::kNodesPerSegment; ++m) {
             d[m] = spline::evaluate(state.q.data(), node[m].weights);
             length2[m] = d[m].squaredNorm();
             inv2[m] = 1.0 / std::max(length2[m], tiny2);
         }
-        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+        for (std::size_t m = 0; m < AxialBlocks::kNodesPerSegment; ++m) {
             if (!(length2[m] > tiny2)) continue;  // no direction: the node adds nothing
             const Vec3 d_rate = spline::evaluate(state.v.data(), node[m].weights);  // d(dP/dt)/dt
             // node.weight c (u . d_rate) / l0 along u, as a multiple of d

@@ -39,8 +39,7 @@ Dynamics::Dynamics(const AxisModel& model, std::pmr::memory_resource* memory)
       one_effect_force_(memory) {
     const std::size_t n = model.control_points;
     mass_.resize(n);
-    spline::add_gram_matrix(n, spline::Derivative::value,
-                            model.linear_density * model.rest_segment_length, mass_, model.ends);
+    add_mass_matrix(model, mass_);
     mass_products_.assign(mass_);
     mass_factor_.resize(n);
     constant_system_.resize(3 * n);

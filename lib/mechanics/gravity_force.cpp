@@ -11,8 +11,7 @@ GravityForce::GravityForce(const AxisModel& model, const Vec3& gravity,
     const std::size_t n = model.control_points;
     numerics::ScalarBandMatrix mass(memory);
     mass.resize(n);
-    spline::add_gram_matrix(n, spline::Derivative::value,
-                            model.linear_density * model.rest_segment_length, mass, model.ends);
+    add_mass_matrix(model, mass);
     std::pmr::vector<double> ones(n, 1.0, memory);
     lumped_mass_.assign(n, 0.0);
     mass.multiply(ones.data(), lumped_mass_.data());

@@ -8,22 +8,24 @@
 
 namespace enteron::mechanics {
 
-namespace {
-constexpr std::size_t kNodesPerSegment = 2;  // see stretch_force.h
-}  // namespace
-
 StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
                            std::pmr::memory_resource* memory)
     : model_(model),
       stiffness_(stretch_stiffness),
       nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        kNodesPerSegment, memory, model.ends)) {}
+                                        AxialBlocks::kNodesPerSegment, memory, model.ends)),
+      node_stiffness_(memory) {
+    node_stiffness_.reserve(nodes_.size());
+    for (const spline::QuadratureNode& node : nodes_)
+        node_stiffness_.push_back(model.stretch_stiffness_profile != nullptr
+                                      ? model.stretch_stiffness_profile->at(model.rest_segment_length * node.parameter)
+                                      : stretch_stiffness);
+}
 
 void StretchForce::evaluate(const State& state, double* force, const Linearization* lin) {
     const double* q = state.q.data();
     const double l0 = model_.rest_segment_length;
     const double inverse_l0 = 1.0 / l0;
-    const double ea = stiffness_;
     // A tangent shorter than this has no direction: the node adds nothing (degenerate shape).
     const double tiny = 1e-12 * l0;
     const double h_squared = lin != nullptr ? lin->h * lin->h : 0.0;
@@ -32,22 +34,22 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     // nodes come before any store, so they overlap. The stiffness blocks go to the axial
     // blocks (axial_blocks.h), which add them to the system after this pass; a
     // linearisation without them (one law linearised alone) takes each block at once.
-    static_assert(kNodesPerSegment == 2, "the nodes are paired by segment");
-    static_assert(kNodesPerSegment == AxialBlocks::kNodesPerSegment, "the axial blocks are at these nodes");
+    static_assert(AxialBlocks::kNodesPerSegment == 2, "the nodes are paired by segment");
     AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
     const std::size_t count = nodes_.size();
-    for (std::size_t first = 0; first < count; first += kNodesPerSegment) {
+    for (std::size_t first = 0; first < count; first += AxialBlocks::kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
         Vec3 d[2];  // dP/dt at the two nodes
         double len[2], inv[2];
-        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+        for (std::size_t m = 0; m < AxialBlocks::kNodesPerSegment; ++m) {
             d[m] = spline::evaluate(q, node[m].weights);
             len[m] = d[m].norm();
             inv[m] = 1.0 / std::max(len[m], tiny);
         }
         Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()}, hr[2] = {Vec3::Zero(), Vec3::Zero()};
-        for (std::size_t m = 0; m < kNodesPerSegment; ++m) {
+        for (std::size_t m = 0; m < AxialBlocks::kNodesPerSegment; ++m) {
             if (!(len[m] > tiny)) continue;  // no direction: the node adds nothing
+            const double ea = node_stiffness_[first + m];
             const Vec3 u = d[m] * inv[m];
             const double strain = len[m] * inverse_l0 - 1.0;
             const double tension = ea * strain;  // N
@@ -74,9 +76,10 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
 double StretchForce::potential_energy(const State& state) const {
     const double l0 = model_.rest_segment_length;
     double energy = 0.0;
-    for (const spline::QuadratureNode& node : nodes_) {
+    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+        const spline::QuadratureNode& node = nodes_[k];
         const double strain = spline::evaluate(state.q.data(), node.weights).norm() / l0 - 1.0;
-        energy += node.weight * 0.5 * stiffness_ * strain * strain * l0;
+        energy += node.weight * 0.5 * node_stiffness_[k] * strain * strain * l0;
     }
     return energy;
 }
@@ -84,8 +87,13 @@ double StretchForce::potential_energy(const State& state) const {
 void StretchForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // At a node H <= EA/l0 I: the transverse factor eps/|P'| = eps / (l0 (1 + eps)) stays
     // below 1/l0. Per coordinate that is EA/l0 times the first-derivative Gram matrix.
-    spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
-                            stiffness_ / model_.rest_segment_length, bound, model_.ends);
+    const double l0 = model_.rest_segment_length;
+    if (model_.stretch_stiffness_profile != nullptr)
+        spline::add_gram_matrix(model_.control_points, spline::Derivative::first, 1.0 / l0, bound, model_.ends,
+                                model_.stretch_stiffness_profile, l0);
+    else
+        spline::add_gram_matrix(model_.control_points, spline::Derivative::first, stiffness_ / l0, bound,
+                                model_.ends);
 }
 
 }  // namespace enteron::mechanics

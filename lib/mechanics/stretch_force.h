@@ -5,6 +5,8 @@
 // strain samples for 3n coordinates leave the bending modes free, where 3 points per
 // segment (about as many samples as coordinates) would lock them and stiffen the bending.
 //
+// With a stretch stiffness profile, EA(s) is read at each node's rest arc length.
+//
 // Linearisation: the Hessian of the energy at a node, H = EA [u u^T / l0 + eps/|P'| (I - u u^T)]
 // with u the unit tangent, is indefinite when the axis is compressed (eps < 0); the
 // transverse term is clamped to eps >= 0 so the implicit system stays positive definite.
@@ -30,8 +32,9 @@ public:
 
 private:
     AxisModel model_;
-    double stiffness_;  // EA, N
+    double stiffness_;  // EA, N (with a profile: its largest value)
     std::pmr::vector<spline::QuadratureNode> nodes_;
+    std::pmr::vector<double> node_stiffness_;  // EA at each node, N (the profile's, or stiffness_)
 };
 
 }  // namespace enteron::mechanics

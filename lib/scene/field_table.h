@@ -111,9 +111,13 @@ enum class Special : uint8_t {
     mesh_vertices,   // an obstacle's mesh given inline
     mesh_triangles,
     mesh_scale,      // the mesh's unit, applied once every key is read
+    length_profile,  // intestine.radius_profile, ...: [[s, value], ...] into pairs (Custom::profile)
 };
 struct Custom {
     Special special;
+    // length_profile: its pairs in the part, and the key of the constant it replaces.
+    std::vector<double>& (*profile)(void* part) = nullptr;
+    const char* replaces = nullptr;
 };
 
 using Value = std::variant<Number, Count, Choice, Point, Rotation, Flag, Object, List, Custom>;
@@ -448,6 +452,16 @@ Field list(const char* key, const Block& block, const char* what, const char* c_
     f.key = key;
     f.c_name = c_name;
     f.value = List{&access::size<Path...>, &access::element<Path...>, &access::resize<Path...>, &block, what};
+    return f;
+}
+// A property along the length (Special::length_profile) in place of the constant `replaces`.
+template <auto Member>
+Field length_profile(const char* key, const char* c_name, const char* replaces) {
+    Field f;
+    f.key = key;
+    f.c_name = c_name;
+    f.value = Custom{Special::length_profile,
+                     [](void* part) -> std::vector<double>& { return access::member<Member>(part); }, replaces};
     return f;
 }
 inline Field custom(const char* key, Special special, const char* c_name = nullptr) {

@@ -51,12 +51,6 @@ std::string describe(const json& value) {
     return value.dump();  // a number, true, false or null: short
 }
 
-std::string child(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
-}
-std::string element(const std::string& path, std::size_t index) {
-    return path + "[" + std::to_string(index) + "]";
-}
 std::string place(const std::string& path) {
     return path.empty() ? "at the top level" : "in " + path;
 }
@@ -97,15 +91,15 @@ Vec3 read_vec3(const json& value, const std::string& path) {
     if (!value.is_array() || value.size() != 3) {
         fail(path + " must be an array of 3 numbers [x, y, z], got " + describe(value));
     }
-    return {read_number(value[0], element(path, 0)), read_number(value[1], element(path, 1)),
-            read_number(value[2], element(path, 2))};
+    return {read_number(value[0], index_path(path, 0)), read_number(value[1], index_path(path, 1)),
+            read_number(value[2], index_path(path, 2))};
 }
 
 std::array<double, 4> read_quaternion(const json& value, const std::string& path) {
     if (!value.is_array() || value.size() != 4)
         fail(path + " must be an array of 4 numbers [w, x, y, z], got " + describe(value));
-    return {read_number(value[0], element(path, 0)), read_number(value[1], element(path, 1)),
-            read_number(value[2], element(path, 2)), read_number(value[3], element(path, 3))};
+    return {read_number(value[0], index_path(path, 0)), read_number(value[1], index_path(path, 1)),
+            read_number(value[2], index_path(path, 2)), read_number(value[3], index_path(path, 3))};
 }
 
 int32_t read_choice(const json& value, const std::string& path, const Choices& choices) {
@@ -142,7 +136,7 @@ public:
 private:
     void read_field(const Field& field, const json& value, const std::string& path, void* part);
     void read_elements(const Block& block, const Field& first, const json& value, const std::string& path, void* part);
-    void read_custom(Special special, const json& value, const std::string& path, void* part);
+    void read_custom(const Custom& custom, const json& value, const std::string& path, void* part);
     // An obstacle's own rules: a mesh from a file or inline, its scale, a friction >= 0.
     void check_mesh_keys(const json& value, const std::string& path) const;
     void finish_obstacle(const json& value, const std::string& path, collision::Obstacle& obstacle) const;
@@ -180,7 +174,7 @@ void Reader::read_block(const json& value, const std::string& path, const Block&
         if (!value.is_object() || !value.contains(kind))
             fail(path + " must be an object with a \"" + kind + "\", got " + describe(value));
         const Choice& choice = std::get<Choice>(block.kind->value);
-        block.start(part, read_choice(value.at(kind), child(path, kind), choice.choices));
+        block.start(part, read_choice(value.at(kind), join_path(path, kind), choice.choices));
         if (obstacle) {
             check_mesh_keys(value, path);
             mesh_scale_ = 1.0;
@@ -197,11 +191,11 @@ void Reader::read_block(const json& value, const std::string& path, const Block&
         if (field == nullptr || (block.typed && !block.applies(*field, part)))
             fail("unknown key " + quote(key) + " " + place(path) + " (expected one of: " +
                  expected_keys(block, part) + ")");
-        given_.add(child(path, key));
+        given_.add(join_path(path, key));
         if (field->elements > 0) {
-            read_elements(block, *field, item, child(path, key), part);
+            read_elements(block, *field, item, join_path(path, key), part);
         } else {
-            read_field(*field, item, child(path, key), part);
+            read_field(*field, item, join_path(path, key), part);
         }
     }
     // A key of another kind is a mistake worth reporting (typed blocks refused it as unknown).
@@ -209,7 +203,7 @@ void Reader::read_block(const json& value, const std::string& path, const Block&
         for (const Field& field : block) {
             if (value.contains(field.key) && !block.applies(field, part)) {
                 const Choice& choice = std::get<Choice>(block.kind->value);
-                fail(child(path, field.key) + " does not apply to kind \"" +
+                fail(join_path(path, field.key) + " does not apply to kind \"" +
                      choice_name(choice.choices, choice.get(part)) + "\"");
             }
         }
@@ -228,7 +222,7 @@ void Reader::read_elements(const Block& block, const Field& first, const json& v
     }
     for (const Field& field : block)
         if (std::strcmp(field.key, first.key) == 0)
-            read_field(field, value[field.element], element(path, field.element), part);
+            read_field(field, value[field.element], index_path(path, field.element), part);
 }
 
 void Reader::read_field(const Field& field, const json& value, const std::string& path, void* part) {
@@ -252,9 +246,9 @@ void Reader::read_field(const Field& field, const json& value, const std::string
         if (!value.is_array()) fail(path + " must be an array of " + list->what + ", got " + describe(value));
         list->resize(part, value.size());
         for (std::size_t i = 0; i < value.size(); ++i)
-            read_block(value[i], element(path, i), *list->block, list->element(part, i));
+            read_block(value[i], index_path(path, i), *list->block, list->element(part, i));
     } else {
-        read_custom(std::get<Custom>(field.value).special, value, path, part);
+        read_custom(std::get<Custom>(field.value), value, path, part);
     }
 }
 
@@ -264,8 +258,8 @@ collision::TriangleMesh& inline_mesh(collision::Obstacle& o) {
     return const_cast<collision::TriangleMesh&>(*o.mesh);
 }
 
-void Reader::read_custom(Special special, const json& value, const std::string& path, void* part) {
-    switch (special) {
+void Reader::read_custom(const Custom& custom, const json& value, const std::string& path, void* part) {
+    switch (custom.special) {
         case Special::version:
             if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
             break;
@@ -275,8 +269,23 @@ void Reader::read_custom(Special special, const json& value, const std::string& 
             points.clear();
             points.reserve(3 * value.size());
             for (std::size_t i = 0; i < value.size(); ++i) {
-                const Vec3 point = read_vec3(value[i], element(path, i));
+                const Vec3 point = read_vec3(value[i], index_path(path, i));
                 points.insert(points.end(), point.begin(), point.end());
+            }
+            break;
+        }
+        case Special::length_profile: {
+            const char* looks = " must be an array of [s, value] pairs (s the arc length from the first end, m), got ";
+            if (!value.is_array()) fail(path + looks + describe(value));
+            std::vector<double>& pairs = custom.profile(part);
+            pairs.clear();
+            pairs.reserve(2 * value.size());
+            for (std::size_t i = 0; i < value.size(); ++i) {
+                const std::string at = index_path(path, i);
+                if (!value[i].is_array() || value[i].size() != 2)
+                    fail(at + " must be a pair [s, value], got " + describe(value[i]));
+                pairs.push_back(read_number(value[i][0], index_path(at, 0)));
+                pairs.push_back(read_number(value[i][1], index_path(at, 1)));
             }
             break;
         }
@@ -286,7 +295,7 @@ void Reader::read_custom(Special special, const json& value, const std::string& 
             points.clear();
             for (std::size_t i = 0; i < value.size(); ++i)
                 points.push_back(static_cast<uint32_t>(
-                    read_count(value[i], element(path, i), std::numeric_limits<uint32_t>::max())));
+                    read_count(value[i], index_path(path, i), std::numeric_limits<uint32_t>::max())));
             break;
         }
         case Special::mesh_file: {
@@ -304,7 +313,7 @@ void Reader::read_custom(Special special, const json& value, const std::string& 
             collision::TriangleMesh& mesh = inline_mesh(*static_cast<collision::Obstacle*>(part));
             mesh.vertices.clear();
             for (std::size_t i = 0; i < value.size(); ++i) {
-                const Vec3 point = read_vec3(value[i], element(path, i));
+                const Vec3 point = read_vec3(value[i], index_path(path, i));
                 mesh.vertices.insert(mesh.vertices.end(), point.begin(), point.end());
             }
             break;
@@ -315,12 +324,12 @@ void Reader::read_custom(Special special, const json& value, const std::string& 
             collision::TriangleMesh& mesh = inline_mesh(*static_cast<collision::Obstacle*>(part));
             mesh.indices.clear();
             for (std::size_t i = 0; i < value.size(); ++i) {
-                const std::string at = element(path, i);
+                const std::string at = index_path(path, i);
                 if (!value[i].is_array() || value[i].size() != 3)
                     fail(at + " must be an array of 3 vertex indices [a, b, c], got " + describe(value[i]));
                 for (std::size_t k = 0; k < 3; ++k)
                     mesh.indices.push_back(static_cast<uint32_t>(
-                        read_count(value[i][k], element(at, k), std::numeric_limits<uint32_t>::max())));
+                        read_count(value[i][k], index_path(at, k), std::numeric_limits<uint32_t>::max())));
             }
             break;
         }
@@ -344,7 +353,7 @@ void Reader::check_mesh_keys(const json& value, const std::string& path) const {
 void Reader::finish_obstacle(const json& value, const std::string& path, collision::Obstacle& obstacle) const {
     // JSON's friction is a coefficient; C also takes a negative one, the scene's.
     if (value.contains("friction") && !(obstacle.friction >= 0.0))
-        fail(child(path, "friction") + " must be >= 0, got " + describe(value.at("friction")));
+        fail(join_path(path, "friction") + " must be >= 0, got " + describe(value.at("friction")));
     if (obstacle.kind == collision::ObstacleKind::mesh)
         for (double& coordinate : inline_mesh(obstacle).vertices) coordinate *= mesh_scale_;
 }
@@ -391,7 +400,7 @@ private:
     std::string innermost_path() const {
         std::string path;
         for (std::size_t i = 0; i + 1 < open_.size(); ++i) {
-            path = open_[i].is_array ? element(path, open_[i].elements) : child(path, open_[i].key);
+            path = open_[i].is_array ? index_path(path, open_[i].elements) : join_path(path, open_[i].key);
         }
         return path;
     }

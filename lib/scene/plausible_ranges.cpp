@@ -23,11 +23,9 @@ void warn(const Logger& logger, const std::string& name, const PlausibleRange& r
     if (!unlikely.empty()) logger.log(LogLevel::warning, "%s: %s", name.c_str(), unlikely.c_str());
 }
 
-std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
-
 // A mesh in millimetres (a CT export) is a thousand times too large: half its largest side
 // is held to a box's half extents' range.
-void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
+void warn_mesh_size(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
     const collision::TriangleMesh* mesh = obstacle.mesh ? obstacle.mesh.get() : nullptr;
     if (mesh == nullptr || mesh->vertex_count() == 0) return;
     Vec3 low = mesh->vertex(0), high = low;
@@ -51,7 +49,7 @@ public:
             if (const Object* object = std::get_if<Object>(&f.value)) {
                 // The contact law matters only to a scene that has contacts.
                 if (object->block == contact_law_ && !contacts_) continue;
-                if (const void* inner = object->find(part)) walk(*object->block, inner, join(path, f.key), prefix);
+                if (const void* inner = object->find(part)) walk(*object->block, inner, join_path(path, f.key), prefix);
             } else if (const List* list = std::get_if<List>(&f.value)) {
                 for (std::size_t i = 0; i < list->size(part); ++i) {
                     const std::string element = path + (path.empty() ? "" : ".") + f.key + "[" + std::to_string(i) + "]";
@@ -65,7 +63,7 @@ public:
         if (block.check == Block::Check::obstacle) {
             const auto& obstacle = *static_cast<const collision::Obstacle*>(part);
             if (obstacle.kind == collision::ObstacleKind::mesh)
-                warn_mesh(obstacle, names_.c_names ? prefix.substr(0, prefix.size() - 1) : path, logger_);
+                warn_mesh_size(obstacle, names_.c_names ? prefix.substr(0, prefix.size() - 1) : path, logger_);
         }
     }
 

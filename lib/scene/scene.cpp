@@ -25,13 +25,22 @@ using namespace enteron::mechanics;
 
 int32_t clamped_ends(const SceneConfig& config) { return config.pinned ? config.pinned->clamped : pin_none; }
 
-AxisModel make_model(const SceneConfig& config) {
+// A profile given, or null (the constant).
+const spline::LengthProfile* given(const spline::LengthProfile& profile) {
+    return profile.empty() ? nullptr : &profile;
+}
+
+template <class Profiles>
+AxisModel make_model(const SceneConfig& config, const Profiles& profiles) {
     const IntestineConfig& intestine = config.intestine;
     AxisModel model;
     model.control_points = intestine.control_points;
     model.rest_segment_length = intestine.length / static_cast<double>(intestine.control_points - 1);
     model.linear_density = intestine.linear_density;
     model.ends = spline_ends(config);
+    model.linear_density_profile = given(profiles.linear_density);
+    model.stretch_stiffness_profile = given(profiles.stretch_stiffness);
+    model.bend_stiffness_profile = given(profiles.bend_stiffness);
     return model;
 }
 
@@ -51,7 +60,7 @@ std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t cou
 constexpr double kContactDampingDepth = 0.1;
 
 // Tells what a mesh obstacle's connectivity means for its contacts.
-void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
+void warn_mesh_topology(const collision::Obstacle& obstacle, const std::string& name, const Logger& logger) {
     if (obstacle.kind != collision::ObstacleKind::mesh || !logger.enabled()) return;
     const collision::MeshDistanceField& field = *obstacle.field;
     const collision::MeshTopologyReport& r = field.report();
@@ -73,10 +82,13 @@ void warn_mesh(const collision::Obstacle& obstacle, const std::string& name, con
                1e-6 * double(field.memory_bytes()));
 }
 
-StepperSettings stepper_settings(const SceneConfig& config) {
+StepperSettings stepper_settings(const SceneConfig& config, const AxisModel& model) {
     const SolverConfig& solver = config.solver;
-    return {solver.integrator,       solver.timestep,  solver.max_substeps,
-            solver.max_subdivisions, solver.max_speed, config.intestine.linear_density * config.intestine.length};
+    const IntestineConfig& intestine = config.intestine;
+    const double mass = model.linear_density_profile != nullptr
+                            ? model.linear_density_profile->integral(intestine.length)
+                            : intestine.linear_density * intestine.length;
+    return {solver.integrator, solver.timestep, solver.max_substeps, solver.max_subdivisions, solver.max_speed, mass};
 }
 
 }  // namespace
@@ -86,11 +98,15 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     : memory_(memory),
       logger_(logger),
       solver_(config.solver),
-      model_(make_model(config)),
+      profiles_{spline::LengthProfile(config.intestine.radius_profile, memory),
+                spline::LengthProfile(config.intestine.linear_density_profile, memory),
+                spline::LengthProfile(config.intestine.stretch_stiffness_profile, memory),
+                spline::LengthProfile(config.intestine.bend_stiffness_profile, memory)},
+      model_(make_model(config, profiles_)),
       tool_channels_(memory),
       frames_(memory),
       dynamics_(model_, memory),
-      stepper_(dynamics_, frames_, stepper_settings(config), logger, memory),
+      stepper_(dynamics_, frames_, stepper_settings(config, model_), logger, memory),
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
@@ -139,7 +155,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
         // A mesh's start can only be checked once its field is built.
         if (obstacle.kind == collision::ObstacleKind::mesh)
             validate_obstacle(obstacle, name, names, state.q.data(), n, &start_clearance_);
-        warn_mesh(obstacle, name, logger_);
+        warn_mesh_topology(obstacle, name, logger_);
         add_to_environment(obstacle);
         ++obstacles_;
     }
@@ -178,7 +194,7 @@ std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::
     validate_obstacle(prepared, name, names, stepper_.state().q.data(), model_.control_points, &start_clearance_);
     add_to_environment(prepared);
     add_to_fingerprint(description_, obstacle);
-    warn_mesh(prepared, name, logger_);
+    warn_mesh_topology(prepared, name, logger_);
     const std::size_t index = obstacles_++;
     refinalize();
     publish();
@@ -358,7 +374,8 @@ void Scene::remove_tool(std::size_t index) {
 collision::CollisionSpheres& Scene::collision_spheres() {
     if (!spheres_) {
         auto spheres = make_owned<collision::CollisionSpheres>(memory_, model_.control_points, rest_length_,
-                                                               sphere_spacing(), radius_, memory_, model_.ends);
+                                                               sphere_spacing(), radius_, memory_, model_.ends,
+                                                               given(profiles_.radius));
         // Room for the contacts each snapshot lists, before anything refers to the spheres.
         published_.reserve_contacts(collision::kLoggedContactsPerSphere * spheres->size());
         spheres_ = std::move(spheres);

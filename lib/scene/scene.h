@@ -109,8 +109,15 @@ public:
     void remove_tool(std::size_t index);
 
     std::size_t control_points() const { return model_.control_points; }
-    // Tube radius R of the intestine, m (what skins reconstruct around the axis).
+    // Tube radius R of the intestine, m (what skins reconstruct around the axis); with a
+    // radius profile, its largest value.
     double radius() const { return radius_; }
+    // The radius profile (spline/length_profile.h), empty when the radius is constant.
+    const spline::LengthProfile& radius_profile() const { return profiles_.radius; }
+    // The tube's radius at arc length s from the first end at rest, m.
+    double radius_at(double s) const { return profiles_.radius.empty() ? radius_ : profiles_.radius.at(s); }
+    // The axis' length at rest, m.
+    double rest_length() const { return rest_length_; }
 
     // Save and restore (docs/scoring-and-state.md; scene_state.cpp). save_state writes the state
     // into `buffer` if it fits in `capacity` bytes (a null buffer only measures) and returns
@@ -162,6 +169,10 @@ private:
     std::pmr::memory_resource* memory_;
     Logger logger_;
     SolverConfig solver_;
+    // The properties along the length (empty: constant); model_ and the spheres point here.
+    struct Profiles {
+        spline::LengthProfile radius, linear_density, stretch_stiffness, bend_stiffness;
+    } profiles_;
     mechanics::AxisModel model_;
     // The collision spheres the contact effects share; made with the first of them (before
     // dynamics_, which holds those effects, so that it outlives them).

@@ -43,6 +43,14 @@ struct IntestineConfig {
     double stretch_stiffness = 100.0;  // EA, N: the stretch effect
     double bend_stiffness = 2.5e-3;    // EI, N m^2: the bend effect
     ShapeConfig shape;
+    // Properties along the length, each in place of its constant above: pairs s_0, value_0,
+    // s_1, value_1, ... (s the arc length from the first end at rest, m, increasing, from 0
+    // to the length; piecewise linear between them; spline/length_profile.h). Empty: the
+    // constant. validate() sets each constant to its profile's largest value.
+    std::vector<double> radius_profile;             // m
+    std::vector<double> linear_density_profile;     // kg/m
+    std::vector<double> stretch_stiffness_profile;  // N
+    std::vector<double> bend_stiffness_profile;     // N m^2
 };
 
 struct SolverConfig {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "scene/scene_fingerprint.h"
 
+#include <iterator>
+
 #include "collision/triangle_mesh.h"
 
 namespace enteron::scene {
@@ -30,6 +32,17 @@ void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
     f.add(intestine.linear_density);
     f.add(intestine.stretch_stiffness);
     f.add(intestine.bend_stiffness);
+    // The profiles only when given, so that a scene without them keeps its fingerprint (and
+    // the states saved from it).
+    const std::vector<double>* profiles[] = {&intestine.radius_profile, &intestine.linear_density_profile,
+                                             &intestine.stretch_stiffness_profile, &intestine.bend_stiffness_profile};
+    for (std::size_t k = 0; k < std::size(profiles); ++k) {
+        const std::vector<double>* profile = profiles[k];
+        if (profile->empty()) continue;
+        add(f, k);
+        add(f, profile->size());
+        f.add_bytes(profile->data(), profile->size() * sizeof(double));
+    }
     // The start shape as its points: the mesentery's springs take their lengths there.
     add(f, config.start_points.size());
     f.add_bytes(config.start_points.data(), config.start_points.size() * sizeof(double));

@@ -135,25 +135,34 @@ const Field kShapeFields[] = {
 };
 const Block kShape{kShapeFields, std::size(kShapeFields), &kShapeFields[0]};
 
+// A profile follows the constant it replaces, which then takes the profile's largest value
+// and is checked again by its row (validate.cpp): the constant's rules hold for every value.
 const Field kIntestineFields[] = {
     number<&IntestineConfig::length>("length", "length_m").above(0.0).at_most(kMaxLength).plausible_in(kLength),
     number<&IntestineConfig::radius>("radius", "radius_m")
         .above(0.0)
         .must_be(Relation::below, 1.0, "length")
         .plausible_in(kRadius),
+    length_profile<&IntestineConfig::radius_profile>("radius_profile", "radius_profile_m", "radius"),
     count<&IntestineConfig::control_points>("control_points", "control_points")
         .at_least(static_cast<double>(spline::kMinControlPoints))
         .at_most(kMaxControlPoints),
     number<&IntestineConfig::linear_density>("linear_density", "linear_density_kg_per_m")
         .above(0.0)
         .plausible_in(kLinearDensity),
+    length_profile<&IntestineConfig::linear_density_profile>("linear_density_profile",
+                                                             "linear_density_profile_kg_per_m", "linear_density"),
     // 0 turns an elasticity off: a choice, not a mistake.
     number<&IntestineConfig::stretch_stiffness>("stretch_stiffness", "stretch_stiffness_N")
         .at_least(0.0)
         .plausible_in(kStretchStiffness, true),
+    length_profile<&IntestineConfig::stretch_stiffness_profile>("stretch_stiffness_profile",
+                                                                "stretch_stiffness_profile_N", "stretch_stiffness"),
     number<&IntestineConfig::bend_stiffness>("bend_stiffness", "bend_stiffness_N_m2")
         .at_least(0.0)
         .plausible_in(kBendStiffness, true),
+    length_profile<&IntestineConfig::bend_stiffness_profile>("bend_stiffness_profile", "bend_stiffness_profile_N_m2",
+                                                             "bend_stiffness"),
     object<&IntestineConfig::shape>("shape", kShape),
 };
 const Block kIntestine = block_of(kIntestineFields);

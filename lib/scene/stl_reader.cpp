@@ -64,7 +64,7 @@ float little_f32(const char* at) {
     return value;
 }
 
-void read_binary(std::string_view bytes, uint64_t triangles, MeshSoup& soup) {
+void stl_reader_read_binary(std::string_view bytes, uint64_t triangles, MeshSoup& soup) {
     Welder welder(soup);
     welder.reserve(triangles);
     soup.reserve(triangles / 2 + 3, triangles);
@@ -105,7 +105,7 @@ void expect_line(MeshText& in, std::initializer_list<std::string_view> expected,
     if (!in.at_end()) in.refuse("more words than \"" + wanted + "\"");
 }
 
-void read_ascii(std::string_view text, MeshSoup& soup) {
+void stl_reader_read_ascii(std::string_view text, MeshSoup& soup) {
     Welder welder(soup);
     MeshText in(text);
     in.next_line();  // "solid name"
@@ -141,13 +141,13 @@ MeshSoup read_stl(std::string_view bytes) {
     if (bytes.size() >= kHeaderBytes + 4) {
         const uint64_t triangles = little_u32(bytes.data() + kHeaderBytes);
         if (bytes.size() == kHeaderBytes + 4 + triangles * kTriangleBytes) {
-            read_binary(bytes, triangles, soup);
+            stl_reader_read_binary(bytes, triangles, soup);
             return soup;
         }
     }
     MeshText first(bytes);
     if (first.next_line() && first.word() == "solid") {
-        read_ascii(bytes, soup);
+        stl_reader_read_ascii(bytes, soup);
         return soup;
     }
     if (bytes.size() < kHeaderBytes + 4)

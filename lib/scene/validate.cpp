@@ -22,12 +22,6 @@ std::string format(const Vec3& v) {
     return "[" + format_number(v[0]) + ", " + format_number(v[1]) + ", " + format_number(v[2]) + "]";
 }
 
-std::string indexed(const std::string& name, std::size_t index) {
-    return name + "[" + std::to_string(index) + "]";
-}
-
-std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
-
 // "0-11, 40, 52-239": the indices (ascending) as ranges, at most a few of them.
 std::string index_ranges(const std::vector<std::size_t>& indices) {
     constexpr std::size_t kMaxRanges = 6;
@@ -137,13 +131,14 @@ private:
     void limits(const Checked<T>& value, const Field& field, const Scope& scope) const;
     void agree(double value, const Field& field, const Scope& scope) const;
     void point(const Point& point, const Field& field, const Scope& scope) const;
-    void custom(Special special, const Field& field, const Scope& scope) const;
+    void custom(const Custom& special, const Field& field, const Scope& scope) const;
     void block_rules(const Scope& scope) const;
     void shape_points(const Field& field, const Scope& scope) const;
     void pinned_points(const Field& field, const Scope& scope) const;
+    void length_profile(const Custom& profile, const Field& field, const Scope& scope) const;
     void mesh(const collision::TriangleMesh& mesh, const Scope& scope) const;
     std::string virtual_name(const Scope& scope, const char* key) const {
-        return names_.c_names ? scope.prefix + key : join(scope.path, key);
+        return names_.c_names ? scope.prefix + key : join_path(scope.path, key);
     }
 
     const FieldNames& names_;
@@ -156,7 +151,7 @@ Located Validator::locate(const Scope& scope, const char* key) const {
         const FieldPath found = find_path(s->block, key);
         if (!found) continue;
         Located at{found.field, found.part(s->part), s->path, s->prefix};
-        for (std::size_t i = 0; i < found.depth; ++i) at.path = join(at.path, found.objects[i]->key);
+        for (std::size_t i = 0; i < found.depth; ++i) at.path = join_path(at.path, found.objects[i]->key);
         return at;
     }
     throw Error(ErrorCode::internal, std::string("the scene table names no field \"") + key + "\"");
@@ -177,12 +172,12 @@ void Validator::field(const Field& f, const Scope& scope, Pass pass) const {
     void* part = scope.part;
     if (const Object* object = std::get_if<Object>(&f.value)) {
         if (void* inner = const_cast<void*>(object->find(part)))
-            walk(Scope{&scope, *object->block, inner, join(scope.path, f.key), scope.prefix}, pass);
+            walk(Scope{&scope, *object->block, inner, join_path(scope.path, f.key), scope.prefix}, pass);
         return;
     }
     if (const List* list = std::get_if<List>(&f.value)) {
         for (std::size_t i = 0; i < list->size(part); ++i)
-            walk(Scope{&scope, *list->block, list->element(part, i), indexed(join(scope.path, f.key), i),
+            walk(Scope{&scope, *list->block, list->element(part, i), index_path(join_path(scope.path, f.key), i),
                        names_.element_prefix(f, scope.prefix, i)},
                  pass);
         return;
@@ -209,7 +204,7 @@ void Validator::field(const Field& f, const Scope& scope, Pass pass) const {
     } else if (const Rotation* rotation = std::get_if<Rotation>(&f.value)) {
         rotation->set(part, unit_quaternion(rotation->get(part), [&] { return name(f, scope); }, names_.code));
     } else if (const Custom* special = std::get_if<Custom>(&f.value)) {
-        custom(special->special, f, scope);
+        custom(*special, f, scope);
     }
 }
 
@@ -243,8 +238,8 @@ void Validator::agree(double value, const Field& field, const Scope& scope) cons
     if (ok) return;
     const char* op = a.relation == Relation::below ? "<" : a.relation == Relation::at_most ? "<=" : ">=";
     const std::string own = name(field, scope), other_name = name(at);
-    const bool own_given = given_.has(join(scope.path, field.key));
-    const bool other_given = given_.has(join(at.path, at.field->key));
+    const bool own_given = given_.has(join_path(scope.path, field.key));
+    const bool other_given = given_.has(join_path(at.path, at.field->key));
     const std::string scaled = a.factor == 1.0 ? other_name : format_number(a.factor) + " x " + other_name;
     if (!own_given && other_given) {
         std::string message = other_name + " (" + format_number(other) + ") does not fit the default " + own + " (" +
@@ -265,7 +260,7 @@ void Validator::agree(double value, const Field& field, const Scope& scope) cons
 void Validator::point(const Point& p, const Field& field, const Scope& scope) const {
     const Vec3 v = p.get(scope.part);
     const std::string base = name(field, scope);
-    for (std::size_t k = 0; k < 3; ++k) limits(Checked<double>(v[k], indexed(base, k), names_.code), field, scope);
+    for (std::size_t k = 0; k < 3; ++k) limits(Checked<double>(v[k], index_path(base, k), names_.code), field, scope);
     if (!p.direction) return;
     // Normalising needs a length that is neither zero nor overflowing.
     if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0) fail(base, "must be non-zero, got " + format(v));
@@ -274,9 +269,10 @@ void Validator::point(const Point& p, const Field& field, const Scope& scope) co
         fail(base, "must have a length between 1e-150 and 1e150, got " + format(v));
 }
 
-void Validator::custom(Special special, const Field& field, const Scope& scope) const {
-    switch (special) {
+void Validator::custom(const Custom& special, const Field& field, const Scope& scope) const {
+    switch (special.special) {
         case Special::shape_points: shape_points(field, scope); break;
+        case Special::length_profile: length_profile(special, field, scope); break;
         case Special::pinned_points: pinned_points(field, scope); break;
         // Checked when read (the version), or as the obstacle's mesh (block_rules).
         default: break;
@@ -296,7 +292,7 @@ void Validator::shape_points(const Field& field, const Scope& scope) const {
         fail(points, "must hold " + format_number(3 * n) + " values (" + name(control_points) + " x 3), got " +
                          format_number(shape.points.size()));
     for (std::size_t i = 0; i < shape.points.size(); ++i)
-        Checked<double>(shape.points[i], nested ? indexed(indexed(points, i / 3), i % 3) : indexed(points, i),
+        Checked<double>(shape.points[i], nested ? index_path(index_path(points, i / 3), i % 3) : index_path(points, i),
                         names_.code);
 }
 
@@ -307,15 +303,57 @@ void Validator::pinned_points(const Field& field, const Scope& scope) const {
     const std::string clamped = name(*scope.block.find("clamped"), scope);
     for (std::size_t i = 0; i < pinned.points.size(); ++i) {
         const std::size_t point = pinned.points[i];
-        Checked<std::size_t>(point, indexed(name(field, scope), i), names_.code).below(n, name(control_points));
+        Checked<std::size_t>(point, index_path(name(field, scope), i), names_.code).below(n, name(control_points));
         const mechanics::ClampedEnd end = mechanics::clamped_end_neighbour(
             point, n, (pinned.clamped & pin_first) != 0, (pinned.clamped & pin_last) != 0);
         if (end != mechanics::ClampedEnd::none)
-            fail(indexed(name(field, scope), i),
+            fail(index_path(name(field, scope), i),
                  "is " + std::to_string(point) + ", a control point whose motion the clamped " +
                      (end == mechanics::ClampedEnd::first ? "first" : "last") + " end already constrains (" + clamped +
                      "): a point pin there would fight the clamp; remove it");
     }
+}
+
+// A property along the length: pairs (s, value) with s increasing from 0 (or before) to the
+// length (or past it), every value > 0, in place of its constant, which takes the largest.
+void Validator::length_profile(const Custom& profile, const Field& field, const Scope& scope) const {
+    const std::vector<double>& pairs = profile.profile(scope.part);
+    if (pairs.empty()) return;
+    const std::string own = name(field, scope);
+    const Located constant = locate(scope, profile.replaces);
+    const Located length = locate(scope, "length");
+    const bool nested = !names_.c_names;
+    // JSON: radius_profile[k][0]; C: radius_profile_m[2 k] (the flat array of pairs).
+    const auto entry = [&](std::size_t k, std::size_t part) {
+        return nested ? index_path(index_path(own, k), part) : index_path(own, 2 * k + part);
+    };
+    if (!(value_of(*constant.field, constant.part) != 0.0))
+        fail(own, "is given, but " + name(constant) + " is 0, which turns its effect off: give one of them");
+    if (given_.has(join_path(constant.path, constant.field->key)))
+        fail(own, "and " + name(constant) + " are both given: a profile replaces the constant, give one of them");
+    const std::size_t count = pairs.size() / 2;
+    if (count < 2) fail(own, "must have at least 2 pairs [s, value] (from s = 0 to the length), got " + std::to_string(count));
+    for (std::size_t i = 0; i < pairs.size(); ++i) Checked<double>(pairs[i], entry(i / 2, i % 2), names_.code);
+    for (std::size_t k = 0; k < count; ++k) {
+        const double s = pairs[2 * k], value = pairs[2 * k + 1];
+        if (!(value > 0.0)) fail(entry(k, 1), "must be > 0, got " + format_number(value));
+        if (k > 0 && !(s > pairs[2 * k - 2]))
+            fail(entry(k, 0), "must be greater than the s before it (" + format_number(pairs[2 * k - 2]) +
+                                  "): s must increase along the profile, got " + format_number(s));
+    }
+    const double total = value_of(*length.field, length.part);
+    if (!(pairs[0] <= 0.0))
+        fail(entry(0, 0), "must be <= 0: the profile must cover the bowel from its first end (s = 0), got " +
+                              format_number(pairs[0]));
+    // A hair of rounding spared: a points shape's length is the spline's, computed.
+    if (!(pairs[2 * count - 2] >= total * (1.0 - 1e-9)))
+        fail(entry(count - 1, 0), "must be >= " + name(length) + " (" + format_number(total) +
+                                      "): the profile must cover the bowel to its last end, got " +
+                                      format_number(pairs[2 * count - 2]));
+    double largest = 0.0;
+    for (std::size_t k = 0; k < count; ++k) largest = std::max(largest, pairs[2 * k + 1]);
+    std::get<Number>(constant.field->value).set(const_cast<void*>(constant.part), largest);
+    this->field(*constant.field, scope, Pass::values);  // its rules, for the largest value
 }
 
 // The rules between the fields of a block, beyond each field's own.
@@ -386,12 +424,12 @@ void Validator::mesh(const collision::TriangleMesh& m, const Scope& scope) const
                        std::to_string(collision::kMaxMeshTriangles) + " a mesh obstacle may have");
     for (std::size_t i = 0; i < m.vertices.size(); ++i)
         if (!std::isfinite(m.vertices[i]))
-            fail(indexed(virtual_name(scope, "vertices"), i / 3),
+            fail(index_path(virtual_name(scope, "vertices"), i / 3),
                  "must be finite, got " + format_number(m.vertices[i]) + " for coordinate " + std::to_string(i % 3));
     const std::size_t vertices = m.vertex_count();
     for (std::size_t i = 0; i < m.indices.size(); ++i)
         if (m.indices[i] >= vertices)
-            fail(indexed(virtual_name(scope, "triangles"), i / 3),
+            fail(index_path(virtual_name(scope, "triangles"), i / 3),
                  "refers to vertex " + std::to_string(m.indices[i]) + ", but the mesh has " + std::to_string(vertices) +
                      " vertices (indices count from 0)");
     bool some_area = false;
@@ -420,7 +458,7 @@ void check_clamped_tangents(const SceneConfig& config, const FieldNames& names) 
 void mark_apart(const Block& block, const void* part, const void* defaults, const std::string& path, FieldSet& apart) {
     for (const Field& f : block) {
         if (f.present != nullptr && !f.present(part)) continue;
-        const std::string at = join(path, f.key);
+        const std::string at = join_path(path, f.key);
         bool differs = false;
         if (const Object* object = std::get_if<Object>(&f.value)) {
             const void* inner = object->find(part);
@@ -447,13 +485,13 @@ void mark_apart(const Block& block, const void* part, const void* defaults, cons
 
 std::string FieldNames::of(const Field& field, const std::string& path, const std::string& prefix) const {
     if (c_names && field.c_name != nullptr) return prefix + field.c_name;
-    std::string name = c_names ? prefix + field.key : join(path, field.key);
-    if (field.elements > 0) name = indexed(name, field.element);
+    std::string name = c_names ? prefix + field.key : join_path(path, field.key);
+    if (field.elements > 0) name = index_path(name, field.element);
     return name;
 }
 
 std::string FieldNames::element_prefix(const Field& field, const std::string& prefix, std::size_t index) const {
-    return indexed(prefix + (field.c_name != nullptr ? field.c_name : field.key), index) + ".";
+    return index_path(prefix + (field.c_name != nullptr ? field.c_name : field.key), index) + ".";
 }
 
 std::string FieldNames::at(const std::string& path) const {
@@ -463,7 +501,7 @@ std::string FieldNames::at(const std::string& path) const {
 
 std::string FieldNames::obstacle(std::size_t index) const {
     const Field& environment = *scene_block().find("environment");
-    return indexed(c_names ? environment.c_name : environment.key, index);
+    return index_path(c_names ? environment.c_name : environment.key, index);
 }
 
 const FieldNames& json_field_names() {
@@ -483,6 +521,10 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     if (config.intestine.shape.kind == ShapeKind::points && config.intestine.length == kLengthOfThePoints) {
         SceneConfig placeholder = config;
         placeholder.intestine.length = IntestineConfig().length;
+        for (std::vector<double>* profile :
+             {&placeholder.intestine.radius_profile, &placeholder.intestine.linear_density_profile,
+              &placeholder.intestine.stretch_stiffness_profile, &placeholder.intestine.bend_stiffness_profile})
+            profile->clear();
         validator.walk(Scope{nullptr, scene_block(), &placeholder, "", ""}, Validator::Pass::values);
         config.intestine.length = points_spline_length(config);
         if (!(config.intestine.length > config.intestine.radius))
@@ -556,10 +598,14 @@ collision::ToolPose validate_tool_pose(const collision::ToolPose& pose, const st
     const std::string path = prefix.empty() ? prefix : prefix.substr(0, prefix.size() - 1);
     for (std::size_t c = 0; c < 3; ++c)
         if (!std::isfinite(pose.position[c]))
-            Checked<double>(pose.position[c], indexed(names.of(position, path, prefix), c), names.code);
+            Checked<double>(pose.position[c], index_path(names.of(position, path, prefix), c), names.code);
     collision::ToolPose unit = pose;
     unit.orientation = unit_quaternion(pose.orientation, [&] { return names.of(orientation, path, prefix); }, names.code);
     return unit;
 }
+
+std::string join_path(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+std::string index_path(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
 
 }  // namespace enteron::scene

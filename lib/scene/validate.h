@@ -47,6 +47,12 @@ const FieldNames& json_field_names();
 // ent_scene_desc, ent_tool_desc and ent_obstacle_desc names, raising ErrorCode::invalid_argument.
 const FieldNames& c_field_names();
 
+// The JSON path of a key inside an object's path: ("intestine", "length") is
+// "intestine.length"; ("", "intestine") is "intestine".
+std::string join_path(const std::string& path, const std::string& key);
+// The path of an array's element: ("intestine.shape.points", 2) is "intestine.shape.points[2]".
+std::string index_path(const std::string& path, std::size_t index);
+
 // The fields the caller wrote, by JSON path ("intestine.shape.helix_pitch"), as opposed to
 // those left at their defaults: where two fields disagree, the message blames the written
 // one. By default every field counts as written.

@@ -12,12 +12,16 @@
 
 #include "numerics/banded_matrix.h"
 #include "spline/catmull_rom.h"
+#include "spline/length_profile.h"
 
 namespace enteron::spline {
 
 // Adds the Gram matrix to `out`, which must already be count x count. Four-point Gauss
 // quadrature per segment: exact, since the integrand is a polynomial of degree <= 6.
+// With a `profile` (length_profile.h), the integrand is also multiplied by the profile at
+// each node's arc length segment_length (segment + t): G_jk = scale * integral of
+// f(s) w_j w_k, exact while f is linear over the segment (degree 7).
 void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics::ScalarBandMatrix& out,
-                     Ends ends = {});
+                     Ends ends = {}, const LengthProfile* profile = nullptr, double segment_length = 0.0);
 
 }  // namespace enteron::spline

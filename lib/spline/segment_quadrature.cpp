@@ -16,8 +16,10 @@ void fill(std::size_t count, Derivative order, Ends ends, std::pmr::vector<Quadr
         // An end segment with the quadratic treatment: every node at its midpoint (see the header).
         const bool quadratic_end = (segment == 0 && ends.first == EndTreatment::quadratic) ||
                                    (segment + 2 == count && ends.last == EndTreatment::quadratic);
-        for (const auto& node : rule)
-            out.push_back({segment_weights(count, segment, quadratic_end ? 0.5 : node.t, order, ends), node.weight});
+        for (const auto& node : rule) {
+            const double t = quadratic_end ? 0.5 : node.t;
+            out.push_back({segment_weights(count, segment, t, order, ends), node.weight, double(segment) + t});
+        }
     }
 }
 

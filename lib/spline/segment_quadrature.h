@@ -24,6 +24,7 @@ namespace enteron::spline {
 struct QuadratureNode {
     SegmentWeights weights;  // basis weights (of the chosen order) at this node
     double weight = 0.0;     // Gauss weight; the weights of one segment sum to 1
+    double parameter = 0.0;  // where along the axis: segment + t (its rest arc length / l0)
 };
 
 // Nodes of a `points_per_segment`-point Gauss rule (2 to 5) on each of the count-1 segments.

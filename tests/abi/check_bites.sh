@@ -11,10 +11,12 @@
 #
 # One copy of the source tree and one build directory serve all three: the copy carries
 # each change behind a preprocessor macro, and ENTERON_ABI_VARIANT (a compile definition
-# of the enteron target only, added to the copy's lib/CMakeLists.txt) picks one, so
-# enteron_core is built once and each variant recompiles only lib/capi.
+# of the enteron target only, added to the copy's lib/CMakeLists.txt) picks one, so each
+# variant recompiles only lib/capi. Given CORE_ARCHIVE (the calling build's
+# libenteron_core.a), the copy links it instead of compiling enteron_core again: abidw
+# reads the types from lib/capi's debug information only, and those are the copy's.
 #
-# Usage: check_bites.sh SOURCE_DIR WORK_DIR
+# Usage: check_bites.sh SOURCE_DIR WORK_DIR [CORE_ARCHIVE]
 # Environment: CMAKE (default cmake), NINJA (default: found by cmake), JOBS (default 2).
 set -euo pipefail
 source_dir="$(cd "${1:?usage: check_bites.sh SOURCE_DIR WORK_DIR}" && pwd)"
@@ -23,6 +25,7 @@ cmake_cmd="${CMAKE:-cmake}"
 jobs="${JOBS:-2}"
 ninja=()
 [[ -n "${NINJA:-}" ]] && ninja=(-DCMAKE_MAKE_PROGRAM="$NINJA")
+core_archive="${3:-}"
 copy="$work_dir/src"
 build="$work_dir/build"
 
@@ -68,6 +71,13 @@ edit include/enteron/enteron.h \
 edit lib/CMakeLists.txt \
     '^(target_compile_definitions\(enteron PRIVATE ENTERON_BUILDING_LIBRARY)\)' \
     '\1 ENTERON_ABI_VARIANT=${ENTERON_ABI_VARIANT})'
+if [[ -n "$core_archive" ]]; then
+    [[ -f "$core_archive" ]] || fail "no enteron_core archive at $core_archive"
+    : >"$copy/lib/abi_prebuilt_core.cpp"
+    edit lib/CMakeLists.txt \
+        '^add_library\(enteron_core STATIC \$\{ENTERON_CORE_SOURCES\}\)$' \
+        "add_library(enteron_core STATIC \${CMAKE_CURRENT_SOURCE_DIR}/abi_prebuilt_core.cpp)\ntarget_link_libraries(enteron_core PUBLIC $core_archive)"
+fi
 
 # Runs abi/check on the library built for one variant; prints its output; returns its status.
 check_variant() {

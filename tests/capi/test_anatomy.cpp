@@ -14,6 +14,7 @@
 
 namespace {
 
+using capi_test::max_abs_difference;
 using capi_test::ScenePtr;
 
 using test_meshes::box;
@@ -50,19 +51,13 @@ int32_t add(ent_scene* scene, const ent_obstacle_desc& desc) {
     return id;
 }
 
-bool step_n(ent_scene* scene, int steps, double dt = 1e-3) {
+bool anatomy_step_n(ent_scene* scene, int steps, double dt = 1e-3) {
     for (int i = 0; i < steps; ++i)
         if (ent_scene_step(scene, dt) != ENT_OK) {
             ADD_FAILURE() << "step " << i << ": " << ent_last_error();
             return false;
         }
     return true;
-}
-
-double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
-    double d = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::fabs(a[i] - b[i]));
-    return d;
 }
 
 // The same bowel against an analytic obstacle and the mesh that approximates it: contacts,
@@ -74,15 +69,15 @@ void expect_same_as_analytic(const ent_obstacle_desc& analytic, const Mesh& mesh
     ASSERT_TRUE(a && m);
     add(a.get(), analytic);
     add(m.get(), mesh_desc(mesh));
-    ASSERT_TRUE(step_n(a.get(), 1));
-    ASSERT_TRUE(step_n(m.get(), 1));
+    ASSERT_TRUE(anatomy_step_n(a.get(), 1));
+    ASSERT_TRUE(anatomy_step_n(m.get(), 1));
     const ent_stats sa = capi_test::stats(a.get()), sm = capi_test::stats(m.get());
     ASSERT_GT(sa.contacts, 0u) << "the test must touch the obstacle";
     EXPECT_NEAR(double(sm.contacts), double(sa.contacts), 2.0);
     EXPECT_NEAR(sm.max_penetration_m, sa.max_penetration_m, tolerance);
     // 30 ms later the contacts have pushed the bowel by millimetres: the same way.
-    ASSERT_TRUE(step_n(a.get(), 30));
-    ASSERT_TRUE(step_n(m.get(), 30));
+    ASSERT_TRUE(anatomy_step_n(a.get(), 30));
+    ASSERT_TRUE(anatomy_step_n(m.get(), 30));
     const std::vector<double> pa = capi_test::control_points(a.get()), pm = capi_test::control_points(m.get());
     const std::vector<double> p0 = capi_test::control_points(line_bowel(start, 0.2, 20).get());
     const double moved = max_abs_difference(pa, p0);
@@ -157,7 +152,7 @@ TEST(Anatomy, AnOpenMeshHoldsTheBowelOnTheSideItsNormalsFace) {
     ASSERT_TRUE(scene);
     add(scene.get(), mesh_desc(sheet));
     EXPECT_NE(log.find("one-sided"), std::string::npos) << log;
-    ASSERT_TRUE(step_n(scene.get(), 1000));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 1000));
     const std::vector<double> p = capi_test::control_points(scene.get());
     for (std::size_t i = 2; i < p.size(); i += 3) EXPECT_GT(p[i], 0.0125 - 0.005) << "point " << i / 3 << " fell through";
 }
@@ -188,7 +183,7 @@ TEST(Anatomy, ANonManifoldMeshIsAcceptedWithAWarningAndSteps) {
     ASSERT_EQ(ent_obstacle_set_friction(scene.get(), id, 0.0), ENT_OK);
     const double g[3] = {-3.0, 3.0, -9.81};
     ASSERT_EQ(ent_scene_set_gravity(scene.get(), g), ENT_OK);
-    ASSERT_TRUE(step_n(scene.get(), 1000));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 1000));
     const std::vector<double> p = capi_test::control_points(scene.get());
     const double r = 0.0125;
     double closest = 1e9;
@@ -299,13 +294,13 @@ TEST(Anatomy, AnObstacleThatJumpsIsHandledWithBoundedForce) {
     ent_obstacle_desc organ = mesh_desc(ball);
     organ.position_m[2] = 0.3;  // 30 cm above
     const int32_t id = add(scene.get(), organ);
-    ASSERT_TRUE(step_n(scene.get(), 100));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 100));
     const double onto[3] = {0.0, 0.0, 0.03}, q[4] = {1, 0, 0, 0};
     ASSERT_EQ(ent_obstacle_set_pose(scene.get(), id, onto, q), ENT_OK);
     ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
     // k R per contact: at most 6.25 N on a sphere of 1.9 g for 1 ms, a few m/s.
     EXPECT_LT(capi_test::stats(scene.get()).kinetic_energy_J, 1.0);
-    ASSERT_TRUE(step_n(scene.get(), 500));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 500));
     for (double x : capi_test::control_points(scene.get())) EXPECT_TRUE(std::isfinite(x));
 }
 
@@ -333,16 +328,16 @@ TEST(Anatomy, APinOnAnObstacleFollowsItAndCanBeReleased) {
     EXPECT_NEAR(p[2], before[2] + 0.05, 1e-6);
     // A pin made at run time on a free point holds it where it is.
     const uint32_t middle = 12;
-    ASSERT_TRUE(step_n(scene.get(), 100));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 100));
     ASSERT_EQ(ent_scene_pin_point(scene.get(), middle, ENT_NO_OBSTACLE), ENT_OK) << ent_last_error();
     const std::vector<double> held = capi_test::control_points(scene.get());
-    ASSERT_TRUE(step_n(scene.get(), 200));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 200));
     p = capi_test::control_points(scene.get());
     for (int k = 0; k < 3; ++k) EXPECT_EQ(p[3 * middle + k], held[3 * middle + k]);
     // Released, the end falls with the rest.
     ASSERT_EQ(ent_scene_unpin_point(scene.get(), 0), ENT_OK);
     EXPECT_EQ(ent_scene_unpin_point(scene.get(), 0), ENT_ERROR_NOT_FOUND);
-    ASSERT_TRUE(step_n(scene.get(), 200));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 200));
     EXPECT_LT(capi_test::control_points(scene.get())[2], p[2] - 0.01);
 }
 
@@ -432,8 +427,8 @@ TEST(Anatomy, AClampedEndOnAnObstacleFollowsItsFrame) {
         ScenePtr world = capi_test::create_json(clamped_on_organ_json(integrator, false));
         ASSERT_TRUE(scene && world);
         // Let it droop first, at rest.
-        ASSERT_TRUE(step_n(scene.get(), 500));
-        ASSERT_TRUE(step_n(world.get(), 500));
+        ASSERT_TRUE(anatomy_step_n(scene.get(), 500));
+        ASSERT_TRUE(anatomy_step_n(world.get(), 500));
         const std::vector<double> start = capi_test::control_points(scene.get());
         const std::array<double, 3> start_direction = first_end_direction(start);
         const double local[3] = {start[0] - kOrganStart[0], start[1] - kOrganStart[1], start[2] - kOrganStart[2]};
@@ -590,7 +585,7 @@ TEST(Anatomy, GravityChangesBetweenSteps) {
     ASSERT_TRUE(scene);
     const double sideways[3] = {4.0, 0.0, 0.0};
     ASSERT_EQ(ent_scene_set_gravity(scene.get(), sideways), ENT_OK);
-    ASSERT_TRUE(step_n(scene.get(), 100));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 100));
     const std::vector<double> p = capi_test::control_points(scene.get());
     double x = 0.0, z = 0.0;
     for (std::size_t i = 0; i < p.size(); i += 3) x += p[i] - 0.3 * double(i / 3) / 11.0, z += p[i + 2];
@@ -620,7 +615,7 @@ TEST(Anatomy, FrictionIsPerObstacle) {
         floor.kind = ENT_OBSTACLE_PLANE;
         const int32_t id = add(scene.get(), floor);
         EXPECT_EQ(ent_obstacle_set_friction(scene.get(), id, friction), ENT_OK);
-        step_n(scene.get(), 500);
+        anatomy_step_n(scene.get(), 500);
         return capi_test::control_points(scene.get())[0] - start[0];
     };
     const double slippery = slide(0.0), sticky = slide(1.0);
@@ -640,7 +635,7 @@ TEST(Anatomy, ObstaclesCanBeRemoved) {
     uint32_t count = 0;
     ASSERT_EQ(ent_scene_obstacle_count(scene.get(), &count), ENT_OK);
     EXPECT_EQ(count, 2u);
-    ASSERT_TRUE(step_n(scene.get(), 200));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 200));
     EXPECT_GT(capi_test::control_points(scene.get())[2], 0.0);
     ASSERT_EQ(ent_scene_remove_obstacle(scene.get(), a), ENT_OK);
     ASSERT_EQ(ent_scene_obstacle_count(scene.get(), &count), ENT_OK);
@@ -652,7 +647,7 @@ TEST(Anatomy, ObstaclesCanBeRemoved) {
     double position[3], orientation[4];
     EXPECT_EQ(ent_obstacle_pose(scene.get(), a, position, orientation), ENT_ERROR_NOT_FOUND);
     EXPECT_EQ(ent_obstacle_pose(scene.get(), b, position, orientation), ENT_OK);
-    ASSERT_TRUE(step_n(scene.get(), 200));
+    ASSERT_TRUE(anatomy_step_n(scene.get(), 200));
     EXPECT_LT(capi_test::control_points(scene.get())[2], -0.1) << "falls once the floor is gone";
 }
 

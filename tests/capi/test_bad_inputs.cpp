@@ -21,14 +21,17 @@
 #include <limits>
 #include <set>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using enteron_test::contains;
+using enteron_test::kNaN;
+
 const double kInf = std::numeric_limits<double>::infinity();
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // A recognisable value that no successful create would write.
 template <class T>
@@ -37,10 +40,10 @@ T* sentinel() {
     return reinterpret_cast<T*>(&storage);
 }
 
-struct SkinDeleter {
+struct BadInputsSkinDeleter {
     void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
 };
-using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
+using BadInputsSkinPtr = std::unique_ptr<ent_skin, BadInputsSkinDeleter>;
 
 // ---- the live objects every row is tried against ---------------------------------------------
 
@@ -282,6 +285,12 @@ std::function<ent_status(const Live&)> measuring(Call call, bool for_another_sce
 }
 
 const uint32_t kPinnedTooFar[1] = {12};
+// Radius profiles (s m, R m) over small_desc's 1 m: decreasing s, short of the length, a
+// radius of 0.
+const double kProfileBackwards[6] = {0.0, 0.01, 0.6, 0.012, 0.5, 0.01};
+const double kProfileShort[4] = {0.0, 0.01, 0.8, 0.012};
+const double kProfileZero[4] = {0.0, 0.01, 1.0, 0.0};
+const double kProfileFine[4] = {0.0, 0.012, 1.0, 0.008};
 const uint32_t kSizes[] = {0u, 3u, 0xdeadbeefu};
 
 ent_callbacks callbacks_with(bool allocate_only, uint32_t size) {
@@ -461,6 +470,46 @@ std::vector<BadInput> table() {
              d.pinned_point_count = 2;
          }),
          kArg, "pinned_points"},
+        {"ent_scene_create", "radius_profile_m not increasing in s",
+         create_with([](ent_scene_desc& d) {
+             d.radius_profile_m = kProfileBackwards;
+             d.radius_profile_count = 3;
+         }),
+         kArg, "radius_profile_m[4]"},
+        {"ent_scene_create", "radius_profile_m short of the length",
+         create_with([](ent_scene_desc& d) {
+             d.radius_profile_m = kProfileShort;
+             d.radius_profile_count = 2;
+         }),
+         kArg, "radius_profile_m[2]"},
+        {"ent_scene_create", "radius_profile_m with a radius of 0",
+         create_with([](ent_scene_desc& d) {
+             d.radius_profile_m = kProfileZero;
+             d.radius_profile_count = 2;
+         }),
+         kArg, "radius_profile_m[3]"},
+        {"ent_scene_create", "radius_profile_m NULL with a count",
+         create_with([](ent_scene_desc& d) { d.radius_profile_count = 2; }), kArg, "radius_profile_m"},
+        {"ent_scene_create", "radius_profile_m with radius_m given too",
+         create_with([](ent_scene_desc& d) {
+             d.radius_profile_m = kProfileFine;
+             d.radius_profile_count = 2;
+             d.radius_m = 0.01;
+         }),
+         kArg, "radius_m"},
+        {"ent_scene_create", "stretch_stiffness_profile_N with the stretch effect off",
+         create_with([](ent_scene_desc& d) {
+             d.stretch_stiffness_profile_N = kProfileFine;
+             d.stretch_stiffness_profile_count = 2;
+             d.effects &= ~ENT_EFFECT_BIT(ENT_EFFECT_STRETCH);
+         }),
+         kArg, "stretch_stiffness_profile_N"},
+        {"ent_scene_create", "linear_density_profile_count UINT32_MAX (huge)",
+         create_with([](ent_scene_desc& d) {
+             d.linear_density_profile_kg_per_m = kProfileFine;
+             d.linear_density_profile_count = 0xffffffffu;
+         }),
+         kArg, "linear_density_profile_kg_per_m_count"},
         {"ent_scene_create", "pinned_point_count UINT32_MAX (huge)",
          create_with([](ent_scene_desc& d) {
              d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
@@ -521,6 +570,21 @@ std::vector<BadInput> table() {
         {"ent_scene_create_json", "not an object", json("[1, 2]"), kScene, "object"},
         {"ent_scene_create_json", "unknown top-level key", json(R"({"intestnie": {}})"), kScene, "intestnie"},
         {"ent_scene_create_json", "unknown nested key", json(R"({"intestine": {"lenght": 1.0}})"), kScene, "lenght"},
+        {"ent_scene_create_json", "radius_profile not increasing in s",
+         json(R"({"intestine": {"length": 1, "radius_profile": [[0, 0.01], [0.6, 0.01], [0.5, 0.01], [1, 0.01]]}})"),
+         kScene, "intestine.radius_profile[2][0]"},
+        {"ent_scene_create_json", "radius_profile not covering the length",
+         json(R"({"intestine": {"length": 1, "radius_profile": [[0.1, 0.01], [1, 0.01]]}})"), kScene,
+         "intestine.radius_profile[0][0]"},
+        {"ent_scene_create_json", "radius_profile with a negative radius",
+         json(R"({"intestine": {"length": 1, "radius_profile": [[0, 0.01], [1, -0.01]]}})"), kScene,
+         "intestine.radius_profile[1][1]"},
+        {"ent_scene_create_json", "radius_profile and radius both given",
+         json(R"({"intestine": {"length": 1, "radius": 0.01, "radius_profile": [[0, 0.01], [1, 0.01]]}})"), kScene,
+         "both given"},
+        {"ent_scene_create_json", "bend_stiffness_profile not of pairs",
+         json(R"({"intestine": {"length": 1, "bend_stiffness_profile": [[0, 0.01, 3]]}})"), kScene,
+         "intestine.bend_stiffness_profile[0]"},
         {"ent_scene_create_json", "wrong type (string for a number)", json(R"({"intestine": {"radius": "big"}})"),
          kScene, "intestine.radius"},
         {"ent_scene_create_json", "wrong type (number for an object)", json(R"({"solver": 3})"), kScene, "solver"},
@@ -1498,7 +1562,7 @@ void run_table(int32_t integrator) {
     ent_skin_desc_default(&skin_desc);
     ent_skin* skin_raw = nullptr;
     ASSERT_EQ(ent_skin_create(tried.get(), &skin_desc, &skin_raw), ENT_OK) << ent_last_error();
-    SkinPtr skin(skin_raw);
+    BadInputsSkinPtr skin(skin_raw);
     ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
     const Live live{tried.get(), skin.get(), tool};
     int32_t grasping = 0;

@@ -13,9 +13,8 @@ namespace {
 constexpr uint32_t kPoints = 20;
 constexpr double kEnd = 0.1;  // s
 
-// The hinged bowel of test_convergence.cpp (1 m, stretch, bend, gravity, first end pinned),
-// stepped to kEnd with steps alternating between 1.25 h and 0.75 h (one substep each).
-std::vector<double> run_alternating(int32_t integrator, double h) {
+// The hinged bowel of test_convergence.cpp: 1 m, stretch, bend, gravity, first end pinned.
+ent_scene_desc hinged_bowel(int32_t integrator) {
     ent_scene_desc desc = default_desc();
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
                    ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
@@ -24,6 +23,13 @@ std::vector<double> run_alternating(int32_t integrator, double h) {
     desc.shape = ENT_SHAPE_LINE;
     desc.pinned_ends = ENT_PIN_FIRST;
     desc.integrator = integrator;
+    return desc;
+}
+
+// The hinged bowel, stepped to kEnd with steps alternating between 1.25 h and 0.75 h (one
+// substep each).
+std::vector<double> run_alternating(int32_t integrator, double h) {
+    ent_scene_desc desc = hinged_bowel(integrator);
     desc.timestep_s = 0.1;  // never subdivides: each step is one substep of its own dt
     desc.max_substeps = 1000000;
     ScenePtr scene = create(desc);
@@ -90,14 +96,7 @@ TEST(Bdf2, SecondOrderWhenTheStepChangesEveryStep) {
 // the point's motion before the pin (q_{n+1} = q_n + a (q_n - q_{n-1}) for a point whose
 // velocity is held at zero).
 TEST(Bdf2, APointPinnedBetweenStepsStaysWhereItWasPinned) {
-    ent_scene_desc desc = default_desc();
-    desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
-                   ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
-    desc.control_points = kPoints;
-    desc.length_m = 1.0;
-    desc.shape = ENT_SHAPE_LINE;
-    desc.pinned_ends = ENT_PIN_FIRST;
-    desc.integrator = ENT_INTEGRATOR_BDF2;
+    const ent_scene_desc desc = hinged_bowel(ENT_INTEGRATOR_BDF2);
     ScenePtr scene = create(desc);
     ASSERT_TRUE(scene);
     for (int k = 0; k < 50; ++k) ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();

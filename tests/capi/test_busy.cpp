@@ -23,7 +23,7 @@ namespace {
 // A second thread that makes one driving call when asked, from inside the first's call.
 class SecondDriver {
 public:
-    explicit SecondDriver(std::function<ent_status()> call) : call_(std::move(call)), thread_([this] { run(); }) {}
+    explicit SecondDriver(std::function<ent_status()> call) : call_(std::move(call)), thread_([this] { busy_run(); }) {}
     ~SecondDriver() {
         {
             std::lock_guard<std::mutex> lock(mutex_);
@@ -57,7 +57,7 @@ public:
     const std::string& message() const { return message_; }
 
 private:
-    void run() {
+    void busy_run() {
         std::unique_lock<std::mutex> lock(mutex_);
         wake_.wait(lock, [this] { return asked_ || quit_; });
         if (quit_) return;
@@ -97,7 +97,7 @@ ent_scene_desc retried_step(ent_callbacks* callbacks) {
     return desc;
 }
 
-ent_callbacks logging_to(SecondDriver& driver) {
+ent_callbacks busy_logging_to(SecondDriver& driver) {
     ent_callbacks callbacks;
     ent_callbacks_default(&callbacks);
     callbacks.log = overlap_on_log;
@@ -115,7 +115,7 @@ void expect_busy(SecondDriver& second, const char* call) {
 TEST(Busy, AStepDuringAStepIsRefusedAndChangesNothing) {
     ent_scene* scene = nullptr;
     SecondDriver second([&] { return ent_scene_step(scene, 0.01); });
-    ent_callbacks callbacks = logging_to(second);
+    ent_callbacks callbacks = busy_logging_to(second);
     const ent_scene_desc desc = retried_step(&callbacks);
     ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
     ScenePtr owner(scene);
@@ -158,7 +158,7 @@ TEST(Busy, EveryDrivingCallIsRefusedDuringAnother) {
             return ent_scene_add_obstacle(scene, &floor, nullptr);
         };
         SecondDriver second([&] { return call(pair.second); });
-        ent_callbacks callbacks = logging_to(second);
+        ent_callbacks callbacks = busy_logging_to(second);
         const ent_scene_desc desc = retried_step(&callbacks);
         ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
         ScenePtr owner(scene);

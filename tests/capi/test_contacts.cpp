@@ -9,15 +9,18 @@
 
 #include <iostream>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
+using enteron_test::norm3;
+using enteron_test::kIdentity;
+
 constexpr double kRadius = kBowelRadius;  // the default R, m
 constexpr double kStiffness = 500.0;   // the default contact stiffness, N/m
-const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
-double norm3(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
 std::vector<ent_contact> contacts(const ent_scene* scene) {
     const ent_contact_summary s = summary(scene);

@@ -28,8 +28,8 @@ using namespace capi_test;
 
 namespace {
 
-constexpr uint32_t kPoints = 20;
-constexpr double kEnd = 0.1;
+constexpr uint32_t kConvergencePoints = 20;
+constexpr double kConvergenceEnd = 0.1;
 
 struct RunResult {
     std::vector<double> q;
@@ -37,11 +37,11 @@ struct RunResult {
     uint64_t substeps = 0;
 };
 
-RunResult run(int32_t integrator, double dt) {
+RunResult convergence_run(int32_t integrator, double dt) {
     ent_scene_desc desc = default_desc();
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND) |
                    ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
-    desc.control_points = kPoints;
+    desc.control_points = kConvergencePoints;
     desc.length_m = 1.0;
     desc.shape = ENT_SHAPE_LINE;
     desc.pinned_ends = ENT_PIN_FIRST;
@@ -51,7 +51,7 @@ RunResult run(int32_t integrator, double dt) {
     ScenePtr scene = create(desc);
     RunResult out;
     if (!scene) return out;
-    const long steps = std::lround(kEnd / dt);
+    const long steps = std::lround(kConvergenceEnd / dt);
     for (long k = 0; k < steps; ++k) {
         if (ent_scene_step(scene.get(), dt) != ENT_OK) {
             ADD_FAILURE() << integrator_name(integrator) << " dt " << dt << " step " << k << ": " << ent_last_error();
@@ -59,14 +59,14 @@ RunResult run(int32_t integrator, double dt) {
         }
     }
     const ent_stats s = stats(scene.get());
-    EXPECT_NEAR(s.time_s, kEnd, 1e-12);
+    EXPECT_NEAR(s.time_s, kConvergenceEnd, 1e-12);
     out.q = control_points(scene.get());
     out.steps = s.steps;
     out.substeps = s.substeps;
     return out;
 }
 
-double max_point_distance(const std::vector<double>& a, const std::vector<double>& b) {
+double convergence_max_point_distance(const std::vector<double>& a, const std::vector<double>& b) {
     double worst = 0.0;
     for (std::size_t i = 0; i + 2 < a.size(); i += 3) {
         const double dx = a[i] - b[i], dy = a[i + 1] - b[i + 1], dz = a[i + 2] - b[i + 2];
@@ -93,16 +93,16 @@ constexpr double kBaseStep = 0.8e-3;  // s, below both explicit limits (see abov
 TEST_P(Convergence, ObservedOrderAtTheEndTime) {
     const Expectation expectation = GetParam();
     const double h = kBaseStep;
-    static const RunResult reference = run(ENT_INTEGRATOR_RK4, h / 64);
-    ASSERT_EQ(reference.q.size(), 3u * kPoints);
+    static const RunResult reference = convergence_run(ENT_INTEGRATOR_RK4, h / 64);
+    ASSERT_EQ(reference.q.size(), 3u * kConvergencePoints);
 
     double errors[3];
     for (int k = 0; k < 3; ++k) {
         const double dt = h / double(1 << k);
-        const RunResult r = run(expectation.integrator, dt);
-        ASSERT_EQ(r.q.size(), 3u * kPoints);
+        const RunResult r = convergence_run(expectation.integrator, dt);
+        ASSERT_EQ(r.q.size(), 3u * kConvergencePoints);
         EXPECT_EQ(r.substeps, r.steps) << "dt " << dt << " was subdivided: lower h";
-        errors[k] = max_point_distance(r.q, reference.q);
+        errors[k] = convergence_max_point_distance(r.q, reference.q);
     }
     const double order1 = std::log2(errors[0] / errors[1]);
     const double order2 = std::log2(errors[1] / errors[2]);

@@ -14,17 +14,17 @@ using namespace capi_test;
 
 namespace {
 
-constexpr uint32_t kPoints = 20;
-constexpr double kLength = 1.0;
+constexpr uint32_t kEnergyPoints = 20;
+constexpr double kEnergyLength = 1.0;
 constexpr double kStretch = 0.05;  // initial strain of every chord
 
 ScenePtr vibrating_scene(int32_t integrator, double timestep) {
-    const double l0 = kLength / (kPoints - 1);
-    static const std::vector<double> points = bent_points(kPoints, (1.0 + kStretch) * l0, 0.3);
+    const double l0 = kEnergyLength / (kEnergyPoints - 1);
+    static const std::vector<double> points = bent_points(kEnergyPoints, (1.0 + kStretch) * l0, 0.3);
     ent_scene_desc desc = default_desc();
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_STRETCH) | ENT_EFFECT_BIT(ENT_EFFECT_BEND);
-    desc.control_points = kPoints;
-    desc.length_m = kLength;
+    desc.control_points = kEnergyPoints;
+    desc.length_m = kEnergyLength;
     desc.stretch_stiffness_N = 100.0;
     desc.bend_stiffness_N_m2 = 2.5e-3;
     desc.shape = ENT_SHAPE_POINTS;
@@ -39,7 +39,7 @@ TEST(Energy, TheSceneStartsStretchedAndBent) {
     ASSERT_TRUE(scene);
     const ent_stats s = stats(scene.get());
     // 1/2 EA eps^2 L for the stretch alone; bending adds to it.
-    const double stretch_energy = 0.5 * 100.0 * kStretch * kStretch * kLength;
+    const double stretch_energy = 0.5 * 100.0 * kStretch * kStretch * kEnergyLength;
     EXPECT_EQ(s.kinetic_energy_J, 0.0);
     EXPECT_GT(s.potential_energy_J, stretch_energy * 0.98);
     EXPECT_LT(s.potential_energy_J, stretch_energy * 1.5);

@@ -8,24 +8,24 @@
 #include <functional>
 #include <limits>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = 0.0125;  // the default R, m
-constexpr double kGravity = 9.81;   // m/s^2
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using enteron_test::contains;
+using enteron_test::kNaN;
+using enteron_test::all_finite;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+constexpr double kEnvironmentRadius = 0.0125;  // the default R, m
+constexpr double kEnvironmentGravity = 9.81;   // m/s^2
 
-std::vector<double> axis(const ent_scene* scene, uint32_t count = 400) {
+
+std::vector<double> environment_axis(const ent_scene* scene, uint32_t count = 400) {
     std::vector<double> points(3 * std::size_t{count});
     EXPECT_EQ(ent_scene_axis(scene, count, points.data()), ENT_OK) << ent_last_error();
     return points;
-}
-
-bool all_finite(const std::vector<double>& values) {
-    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
 }
 
 double lowest_z(const std::vector<double>& points) {
@@ -66,13 +66,13 @@ ent_obstacle_desc obstacle(int32_t kind) {
     return desc;
 }
 
-ent_obstacle_desc box(double half) {
+ent_obstacle_desc environment_box(double half) {
     ent_obstacle_desc desc = obstacle(ENT_OBSTACLE_BOX_INSIDE);
     for (double& h : desc.half_extents_m) h = half;
     return desc;
 }
 
-int32_t add(ent_scene* scene, const ent_obstacle_desc& desc) {
+int32_t environment_add(ent_scene* scene, const ent_obstacle_desc& desc) {
     int32_t id = -1;
     EXPECT_EQ(ent_scene_add_obstacle(scene, &desc, &id), ENT_OK) << ent_last_error();
     return id;
@@ -138,7 +138,7 @@ TEST(Environment, ABowelDroppedIntoABoxStaysInside) {
     ScenePtr scene = create_json(json);
     ASSERT_TRUE(scene);
     const double center[3] = {0, 0, 0}, half[3] = {0.12, 0.12, 0.12};
-    ASSERT_LT(beyond_box(axis(scene.get()), center, half, kRadius), 0.0) << "starts clear of the walls";
+    ASSERT_LT(beyond_box(environment_axis(scene.get()), center, half, kEnvironmentRadius), 0.0) << "starts clear of the walls";
     double peak = 0.0;
     for (int i = 0; i < 2000; ++i) {  // 2 s
         ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << "step " << i << ": " << ent_last_error();
@@ -146,20 +146,20 @@ TEST(Environment, ABowelDroppedIntoABoxStaysInside) {
         if (i % 10 == 0) {
             // No tunnelling, even while it springs open: the axis never leaves the box
             // (the deepest contact was measured at 0.63 R during the first 0.1 s).
-            const std::vector<double> points = axis(scene.get());
+            const std::vector<double> points = environment_axis(scene.get());
             ASSERT_TRUE(all_finite(points)) << "step " << i;
             ASSERT_LT(beyond_box(points, center, half, 0.0), 0.0) << "step " << i;
         }
     }
     const ent_stats s = stats(scene.get());
-    const std::vector<double> points = axis(scene.get());
+    const std::vector<double> points = environment_axis(scene.get());
     ASSERT_TRUE(all_finite(points));
-    EXPECT_LE(beyond_box(points, center, half, 0.75 * kRadius), 0.0);
-    EXPECT_LT(s.max_penetration_m, 0.25 * kRadius);
+    EXPECT_LE(beyond_box(points, center, half, 0.75 * kEnvironmentRadius), 0.0);
+    EXPECT_LT(s.max_penetration_m, 0.25 * kEnvironmentRadius);
     EXPECT_GT(s.contacts, 0u);
-    EXPECT_LT(peak, kRadius);
+    EXPECT_LT(peak, kEnvironmentRadius);
     // It lies on the floor.
-    EXPECT_LT(lowest_z(points), -0.12 + 1.25 * kRadius);
+    EXPECT_LT(lowest_z(points), -0.12 + 1.25 * kEnvironmentRadius);
 }
 
 TEST(Environment, ABowelFallingOntoAPlaneStopsOnIt) {
@@ -167,18 +167,18 @@ TEST(Environment, ABowelFallingOntoAPlaneStopsOnIt) {
     ASSERT_TRUE(scene);
     ent_obstacle_desc floor = obstacle(ENT_OBSTACLE_PLANE);
     floor.normal[2] = 2.5;  // not unit: the library normalises it
-    EXPECT_EQ(add(scene.get(), floor), 0);
+    EXPECT_EQ(environment_add(scene.get(), floor), 0);
     for (int i = 0; i < 1000; ++i) {
         ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << "step " << i << ": " << ent_last_error();
-        const std::vector<double> points = axis(scene.get(), 100);
+        const std::vector<double> points = environment_axis(scene.get(), 100);
         ASSERT_TRUE(all_finite(points)) << "step " << i;
         // The impact was measured at 0.13 R deep.
-        ASSERT_GE(lowest_z(points), 0.75 * kRadius) << "step " << i;
+        ASSERT_GE(lowest_z(points), 0.75 * kEnvironmentRadius) << "step " << i;
     }
-    const std::vector<double> points = axis(scene.get(), 100);
+    const std::vector<double> points = environment_axis(scene.get(), 100);
     for (std::size_t i = 2; i < points.size(); i += 3) {
-        EXPECT_GE(points[i], 0.75 * kRadius);
-        EXPECT_LE(points[i], 1.25 * kRadius) << "lying flat on the plane";
+        EXPECT_GE(points[i], 0.75 * kEnvironmentRadius);
+        EXPECT_LE(points[i], 1.25 * kEnvironmentRadius) << "lying flat on the plane";
     }
     const ent_stats s = stats(scene.get());
     EXPECT_GT(s.contacts, 0u);
@@ -197,10 +197,10 @@ TEST(Environment, TheRestingDepthFollowsTheContactSettings) {
     struct Case {
         double spacing, stiffness;  // 0: the defaults R / 2 and 500 N/m
     };
-    for (const Case& c : {Case{0.0, 0.0}, Case{0.0, 100.0}, Case{kRadius, 0.0}}) {
-        const double spacing = c.spacing > 0.0 ? c.spacing : 0.5 * kRadius;
+    for (const Case& c : {Case{0.0, 0.0}, Case{0.0, 100.0}, Case{kEnvironmentRadius, 0.0}}) {
+        const double spacing = c.spacing > 0.0 ? c.spacing : 0.5 * kEnvironmentRadius;
         const double stiffness = c.stiffness > 0.0 ? c.stiffness : 500.0;
-        const double expected = mu * kGravity * spacing / stiffness;
+        const double expected = mu * kEnvironmentGravity * spacing / stiffness;
         SCOPED_TRACE("spacing " + std::to_string(spacing) + ", stiffness " + std::to_string(stiffness));
 
         ent_scene_desc desc = line_desc(0.6, 24, 0.02);
@@ -208,7 +208,7 @@ TEST(Environment, TheRestingDepthFollowsTheContactSettings) {
         if (c.stiffness > 0.0) desc.contact_stiffness_N_per_m = c.stiffness;
         ScenePtr from_c = create(desc);
         ASSERT_TRUE(from_c);
-        add(from_c.get(), obstacle(ENT_OBSTACLE_PLANE));
+        environment_add(from_c.get(), obstacle(ENT_OBSTACLE_PLANE));
         // The ends and the spline weights spread the load a little unevenly (2% measured).
         EXPECT_NEAR(resting_depth(from_c.get()), expected, 0.1 * expected) << "C description";
 
@@ -255,15 +255,15 @@ void drape_over(const Organ& organ, bool from_json) {
             "intestine": { "length": 0.6, "control_points": 24, "stretch_stiffness": 100,
                            "bend_stiffness": 0.0025,
                            "shape": { "kind": "line", "center": [-0.3, 0, )" +
-                                 std::to_string(top + kRadius + 0.03) + R"(] } },
+                                 std::to_string(top + kEnvironmentRadius + 0.03) + R"(] } },
             "gravity": [0, 0, -9.81], "damping": {},
             "environment": [ { "type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1] },
                              { )" + shape + R"(, "radius": )" + std::to_string(organ.radius) + " } ] }";
         scene = create_json(json);
     } else {
-        scene = create(line_desc(0.6, 24, top + kRadius + 0.03));
+        scene = create(line_desc(0.6, 24, top + kEnvironmentRadius + 0.03));
         if (scene) {
-            EXPECT_EQ(add(scene.get(), obstacle(ENT_OBSTACLE_PLANE)), 0);
+            EXPECT_EQ(environment_add(scene.get(), obstacle(ENT_OBSTACLE_PLANE)), 0);
             ent_obstacle_desc o = obstacle(organ.kind);
             for (int c = 0; c < 3; ++c) {
                 o.center_m[c] = organ.start[c];
@@ -271,27 +271,27 @@ void drape_over(const Organ& organ, bool from_json) {
                 o.end_m[c] = organ.end[c];
             }
             o.radius_m = organ.radius;
-            EXPECT_EQ(add(scene.get(), o), 1);
+            EXPECT_EQ(environment_add(scene.get(), o), 1);
         }
     }
     ASSERT_TRUE(scene);
     double closest = 1e300;
     for (int i = 0; i < 1500; ++i) {
         ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << "step " << i << ": " << ent_last_error();
-        const std::vector<double> points = axis(scene.get(), 200);
+        const std::vector<double> points = environment_axis(scene.get(), 200);
         ASSERT_TRUE(all_finite(points)) << "step " << i;
         const double d = distance_to_segment(points, organ.start, organ.end);
         closest = std::min(closest, d);
         // Measured at most 0.17 R deep.
-        ASSERT_GE(d, organ.radius + 0.75 * kRadius) << "step " << i;
+        ASSERT_GE(d, organ.radius + 0.75 * kEnvironmentRadius) << "step " << i;
     }
     // Still draped over it, and resting.
-    const std::vector<double> points = axis(scene.get(), 200);
-    EXPECT_LT(distance_to_segment(points, organ.start, organ.end), organ.radius + 1.05 * kRadius);
+    const std::vector<double> points = environment_axis(scene.get(), 200);
+    EXPECT_LT(distance_to_segment(points, organ.start, organ.end), organ.radius + 1.05 * kEnvironmentRadius);
     EXPECT_GT(stats(scene.get()).contacts, 0u);
     EXPECT_LT(stats(scene.get()).kinetic_energy_J, 1e-4);
     ::testing::Test::RecordProperty(std::string(organ.name) + (from_json ? "_json" : "_c") + "_deepest_over_R",
-                                    std::to_string(1.0 - (closest - organ.radius) / kRadius));
+                                    std::to_string(1.0 - (closest - organ.radius) / kEnvironmentRadius));
 }
 
 TEST(Environment, ABowelDrapedOverASphereNeverEntersIt) {
@@ -322,20 +322,20 @@ TEST(Environment, EveryIntegratorKeepsAShortBowelInTheBox) {
         desc.shape_center_m[2] = 0.05;
         ScenePtr scene = create(desc);
         ASSERT_TRUE(scene);
-        add(scene.get(), box(0.1));
+        environment_add(scene.get(), environment_box(0.1));
         for (int i = 0; i < 1000; ++i) {
             ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << "step " << i << ": " << ent_last_error();
             if (i % 10 == 0) {
-                ASSERT_LT(beyond_box(axis(scene.get(), 100), center, half, 0.0), 0.0) << "step " << i;
+                ASSERT_LT(beyond_box(environment_axis(scene.get(), 100), center, half, 0.0), 0.0) << "step " << i;
             }
         }
-        const std::vector<double> points = axis(scene.get(), 100);
+        const std::vector<double> points = environment_axis(scene.get(), 100);
         ASSERT_TRUE(all_finite(points));
-        EXPECT_LE(beyond_box(points, center, half, 0.75 * kRadius), 0.0);
+        EXPECT_LE(beyond_box(points, center, half, 0.75 * kEnvironmentRadius), 0.0);
         const ent_stats s = stats(scene.get());
-        EXPECT_LT(s.max_penetration_m, 0.25 * kRadius);
+        EXPECT_LT(s.max_penetration_m, 0.25 * kEnvironmentRadius);
         EXPECT_GT(s.contacts, 0u);
-        EXPECT_LT(lowest_z(points), -0.1 + 1.25 * kRadius) << "on the floor";
+        EXPECT_LT(lowest_z(points), -0.1 + 1.25 * kEnvironmentRadius) << "on the floor";
         if (integrator == ENT_INTEGRATOR_RK4 || integrator == ENT_INTEGRATOR_SYMPLECTIC_EULER) {
             // The contacts' stiffness and friction shorten the stable substep: more substeps
             // than the same bowel takes without obstacles.
@@ -362,10 +362,10 @@ TEST(Environment, IsOffWithoutObstaclesAndOnFromTheFirst) {
     EXPECT_EQ(s.max_penetration_m, 0.0);
 
     // A floor just below the falling bowel: on, it runs, and it catches the bowel.
-    const double z = lowest_z(axis(scene.get()));
+    const double z = lowest_z(environment_axis(scene.get()));
     ent_obstacle_desc floor = obstacle(ENT_OBSTACLE_PLANE);
-    floor.center_m[2] = z - kRadius - 0.02;
-    EXPECT_EQ(add(scene.get(), floor), 0);
+    floor.center_m[2] = z - kEnvironmentRadius - 0.02;
+    EXPECT_EQ(environment_add(scene.get(), floor), 0);
     e = effect_stats(scene.get(), ENT_EFFECT_ENVIRONMENT);
     EXPECT_EQ(e.enabled, 1);
     EXPECT_EQ(e.calls, 0u);
@@ -375,7 +375,7 @@ TEST(Environment, IsOffWithoutObstaclesAndOnFromTheFirst) {
     EXPECT_GE(e.calls, 500u);
     s = stats(scene.get());
     EXPECT_GT(s.contacts, 0u);
-    EXPECT_GE(lowest_z(axis(scene.get())), floor.center_m[2] + 0.75 * kRadius);
+    EXPECT_GE(lowest_z(environment_axis(scene.get())), floor.center_m[2] + 0.75 * kEnvironmentRadius);
 }
 
 TEST(Environment, AnEmptyJsonEnvironmentIsOff) {
@@ -407,17 +407,17 @@ TEST(Environment, ObstacleIdsCountInOrderJsonFirst) {
                          { "type": "plane", "point": [0, 0, -0.2], "normal": [0, 0, 1] } ] })");
     ASSERT_TRUE(scene);
     EXPECT_EQ(effect_stats(scene.get(), ENT_EFFECT_ENVIRONMENT).enabled, 1);
-    EXPECT_EQ(add(scene.get(), obstacle(ENT_OBSTACLE_SPHERE)), 2);
+    EXPECT_EQ(environment_add(scene.get(), obstacle(ENT_OBSTACLE_SPHERE)), 2);
     // No place for the id: still added, still counted.
     const ent_obstacle_desc capsule = obstacle(ENT_OBSTACLE_CAPSULE);
     EXPECT_EQ(ent_scene_add_obstacle(scene.get(), &capsule, nullptr), ENT_OK) << ent_last_error();
-    EXPECT_EQ(add(scene.get(), box(0.3)), 4);
+    EXPECT_EQ(environment_add(scene.get(), environment_box(0.3)), 4);
 
     ScenePtr from_c = create(line_desc(0.5, 10, 0.0));
     ASSERT_TRUE(from_c);
-    EXPECT_EQ(add(from_c.get(), obstacle(ENT_OBSTACLE_PLANE)), 0);
-    EXPECT_EQ(add(from_c.get(), obstacle(ENT_OBSTACLE_SPHERE)), 1);
-    EXPECT_EQ(add(from_c.get(), obstacle(ENT_OBSTACLE_CAPSULE)), 2);
+    EXPECT_EQ(environment_add(from_c.get(), obstacle(ENT_OBSTACLE_PLANE)), 0);
+    EXPECT_EQ(environment_add(from_c.get(), obstacle(ENT_OBSTACLE_SPHERE)), 1);
+    EXPECT_EQ(environment_add(from_c.get(), obstacle(ENT_OBSTACLE_CAPSULE)), 2);
     ASSERT_TRUE(step_n(from_c.get(), 1e-3, 5));
 }
 
@@ -430,12 +430,12 @@ TEST(Environment, FieldsAKindDoesNotUseAreIgnored) {
     sphere.normal[0] = sphere.normal[1] = sphere.normal[2] = 0.0;
     sphere.start_m[1] = kNaN;
     sphere.end_m[2] = kNaN;
-    EXPECT_EQ(add(scene.get(), sphere), 0);
+    EXPECT_EQ(environment_add(scene.get(), sphere), 0);
     ent_obstacle_desc plane = obstacle(ENT_OBSTACLE_PLANE);
     plane.center_m[2] = -0.5;
     plane.radius_m = -1.0;
     plane.half_extents_m[1] = kNaN;
-    EXPECT_EQ(add(scene.get(), plane), 1);
+    EXPECT_EQ(environment_add(scene.get(), plane), 1);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 10));
     EXPECT_TRUE(all_finite(control_points(scene.get())));
 }
@@ -538,9 +538,9 @@ void expect_unchanged(const Snapshot& before, const Snapshot& after, const char*
 // control points, stats and the environment's effect stats stay bit-identical; no id is used.
 void refuse(const BadObstacle& bad, int existing) {
     SCOPED_TRACE(std::string(bad.name) + ", " + std::to_string(existing) + " obstacles before");
-    ScenePtr scene = create(line_desc(0.5, 12, kRadius));
+    ScenePtr scene = create(line_desc(0.5, 12, kEnvironmentRadius));
     ASSERT_TRUE(scene);
-    for (int i = 0; i < existing; ++i) EXPECT_EQ(add(scene.get(), obstacle(ENT_OBSTACLE_PLANE)), i);
+    for (int i = 0; i < existing; ++i) EXPECT_EQ(environment_add(scene.get(), obstacle(ENT_OBSTACLE_PLANE)), i);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 30));  // on the plane, if there is one
     const Snapshot before = snapshot(scene.get());
     if (existing > 0) {
@@ -563,7 +563,7 @@ void refuse(const BadObstacle& bad, int existing) {
     // No id was used up, and the scene still steps.
     ent_obstacle_desc far_sphere = obstacle(ENT_OBSTACLE_SPHERE);
     far_sphere.center_m[2] = 10.0;
-    EXPECT_EQ(add(scene.get(), far_sphere), existing);
+    EXPECT_EQ(environment_add(scene.get(), far_sphere), existing);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 10));
     EXPECT_TRUE(all_finite(control_points(scene.get())));
 }
@@ -574,9 +574,9 @@ TEST(Environment, BadObstaclesAreRefusedAndChangeNothing) {
 }
 
 TEST(Environment, NullSceneOrDescriptionIsRefused) {
-    ScenePtr scene = create(line_desc(0.5, 12, kRadius));
+    ScenePtr scene = create(line_desc(0.5, 12, kEnvironmentRadius));
     ASSERT_TRUE(scene);
-    EXPECT_EQ(add(scene.get(), obstacle(ENT_OBSTACLE_PLANE)), 0);
+    EXPECT_EQ(environment_add(scene.get(), obstacle(ENT_OBSTACLE_PLANE)), 0);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 30));
     const Snapshot before = snapshot(scene.get());
     int32_t id = 12345;
@@ -587,7 +587,7 @@ TEST(Environment, NullSceneOrDescriptionIsRefused) {
     EXPECT_TRUE(contains(ent_last_error(), "desc")) << ent_last_error();
     EXPECT_EQ(id, 12345);
     expect_unchanged(before, snapshot(scene.get()), "NULL scene or desc");
-    EXPECT_EQ(add(scene.get(), good), 1);
+    EXPECT_EQ(environment_add(scene.get(), good), 1);
 }
 
 // A normal whose length underflows or overflows cannot be normalised: the rule of

@@ -16,11 +16,11 @@ using namespace capi_test;
 
 namespace {
 
-constexpr uint32_t kPoints = 30;
-constexpr double kLength = 6.0;
-constexpr double kDensity = 0.3;
+constexpr uint32_t kFreeFallPoints = 30;
+constexpr double kFreeFallLength = 6.0;
+constexpr double kFreeFallDensity = 0.3;
 constexpr double kStep = 1e-3;
-const double kGravity[3] = {0.5, -1.0, -9.81};  // not along an axis: all three coordinates move
+const double kFreeFallGravity[3] = {0.5, -1.0, -9.81};  // not along an axis: all three coordinates move
 
 class FreeFall : public ::testing::TestWithParam<int32_t> {
 protected:
@@ -34,12 +34,12 @@ protected:
         desc.shape_direction[0] = 1.0;
         desc.shape_direction[1] = 1.0;
         desc.shape_direction[2] = 0.0;
-        desc.control_points = kPoints;
-        desc.length_m = kLength;
-        desc.linear_density_kg_per_m = kDensity;
+        desc.control_points = kFreeFallPoints;
+        desc.length_m = kFreeFallLength;
+        desc.linear_density_kg_per_m = kFreeFallDensity;
         desc.integrator = GetParam();
         desc.timestep_s = kStep;
-        for (int c = 0; c < 3; ++c) desc.gravity_m_per_s2[c] = kGravity[c];
+        for (int c = 0; c < 3; ++c) desc.gravity_m_per_s2[c] = kFreeFallGravity[c];
         return create(desc);
     }
     bool is_rk4() const { return GetParam() == ENT_INTEGRATOR_RK4; }
@@ -47,8 +47,8 @@ protected:
     // Displacement after k steps by the integrator's exact discrete solution.
     double expected_displacement(int c, int k) const {
         const double t = k * kStep;
-        if (is_bdf2()) return kGravity[c] * (0.5 * t * t + 0.75 * kStep * kStep * (1.0 - std::pow(3.0, -k)));
-        return is_rk4() ? 0.5 * kGravity[c] * t * t : 0.5 * kGravity[c] * (t * t + kStep * t);
+        if (is_bdf2()) return kFreeFallGravity[c] * (0.5 * t * t + 0.75 * kStep * kStep * (1.0 - std::pow(3.0, -k)));
+        return is_rk4() ? 0.5 * kFreeFallGravity[c] * t * t : 0.5 * kFreeFallGravity[c] * (t * t + kStep * t);
     }
 };
 
@@ -68,14 +68,14 @@ TEST_P(FreeFall, EveryControlPointFollowsTheExactDiscreteSolution) {
     ScenePtr scene = make_scene();
     ASSERT_TRUE(scene);
     const std::vector<double> start = control_points(scene.get());
-    ASSERT_EQ(start.size(), 3u * kPoints);
+    ASSERT_EQ(start.size(), 3u * kFreeFallPoints);
     int done = 0;
     for (int k : {1, 2, 3, 10, 100, 400}) {
         ASSERT_TRUE(step_n(scene.get(), kStep, k - done));
         done = k;
         const std::vector<double> q = control_points(scene.get());
         double worst = 0.0;
-        for (uint32_t i = 0; i < kPoints; ++i)
+        for (uint32_t i = 0; i < kFreeFallPoints; ++i)
             for (int c = 0; c < 3; ++c)
                 worst = std::max(worst, std::fabs(q[3 * i + c] - start[3 * i + c] - expected_displacement(c, k)));
         EXPECT_LT(worst, 1e-9) << "after " << k << " steps";
@@ -102,7 +102,7 @@ TEST_P(FreeFall, KineticAndPotentialEnergyOfARigidFall) {
     // the gravity potential -m g . (centre of mass) changes by -m g . displacement.
     ScenePtr scene = make_scene();
     ASSERT_TRUE(scene);
-    const double mass = kDensity * kLength;
+    const double mass = kFreeFallDensity * kFreeFallLength;
     const double pe0 = stats(scene.get()).potential_energy_J;
     EXPECT_EQ(stats(scene.get()).kinetic_energy_J, 0.0);
     const int k = 300;
@@ -111,8 +111,8 @@ TEST_P(FreeFall, KineticAndPotentialEnergyOfARigidFall) {
     const double t = k * kStep;
     double g2 = 0.0, g_dot_d = 0.0;
     for (int c = 0; c < 3; ++c) {
-        g2 += kGravity[c] * kGravity[c];
-        g_dot_d += kGravity[c] * expected_displacement(c, k);
+        g2 += kFreeFallGravity[c] * kFreeFallGravity[c];
+        g_dot_d += kFreeFallGravity[c] * expected_displacement(c, k);
     }
     const double ke = 0.5 * mass * g2 * t * t;
     EXPECT_NEAR(s.kinetic_energy_J, ke, 1e-9 * ke);
@@ -133,13 +133,13 @@ TEST_P(FreeFall, CentreOfMassFallsByHalfGTSquaredUpToTheEulerTerm) {
     const auto c1 = axis_centroid(scene.get());
     const double t = k * kStep;
     for (int c = 0; c < 3; ++c) {
-        const double exact = 0.5 * kGravity[c] * t * t;
-        const double euler_term = 0.5 * kGravity[c] * kStep * t;
+        const double exact = 0.5 * kFreeFallGravity[c] * t * t;
+        const double euler_term = 0.5 * kFreeFallGravity[c] * kStep * t;
         const double moved = c1[c] - c0[c];
         if (is_rk4()) {
             EXPECT_NEAR(moved, exact, 1e-9) << "coordinate " << c;
         } else if (is_bdf2()) {
-            EXPECT_NEAR(moved - exact, 0.75 * kGravity[c] * kStep * kStep, 1e-9) << "coordinate " << c;
+            EXPECT_NEAR(moved - exact, 0.75 * kFreeFallGravity[c] * kStep * kStep, 1e-9) << "coordinate " << c;
         } else {
             EXPECT_NEAR(moved - exact, euler_term, 1e-9) << "coordinate " << c;
             EXPECT_GT(std::fabs(euler_term), 1e-5) << "the term must be visible to this test";

@@ -5,12 +5,14 @@
 // the guard cannot save says which check failed and by how much, at which control point,
 // and which effect drove it; and it gives up within the bound the header states.
 #include "capi_test_support.h"
+#include "test_helpers.h"
 
 using namespace capi_test;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using enteron_test::contains;
+
 
 std::string refused_json(const std::string& json) {
     ent_scene* scene = nullptr;

@@ -17,18 +17,18 @@ using namespace capi_test;
 
 namespace {
 
-struct SkinDeleter {
+struct LifetimesSkinDeleter {
     void operator()(ent_skin* skin) const { ent_skin_destroy(skin); }
 };
-using SkinPtr = std::unique_ptr<ent_skin, SkinDeleter>;
+using LifetimesSkinPtr = std::unique_ptr<ent_skin, LifetimesSkinDeleter>;
 
-SkinPtr make_skin(ent_scene* scene, int32_t method) {
+LifetimesSkinPtr lifetimes_make_skin(ent_scene* scene, int32_t method) {
     ent_skin_desc desc;
     ent_skin_desc_default(&desc);
     desc.method = method;
     ent_skin* skin = nullptr;
     EXPECT_EQ(ent_skin_create(scene, &desc, &skin), ENT_OK) << ent_last_error();
-    return SkinPtr(skin);
+    return LifetimesSkinPtr(skin);
 }
 
 ent_scene_desc falling_desc() {
@@ -54,7 +54,7 @@ TEST(Lifetimes, ASkinOutlivesItsSceneOnTheLastPublishedState) {
         ent_scene* scene = nullptr;
         const ent_scene_desc desc = falling_desc();
         ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
-        SkinPtr skin = make_skin(scene, method);
+        LifetimesSkinPtr skin = lifetimes_make_skin(scene, method);
         ASSERT_TRUE(step_n(scene, 1e-3, 50));
         ASSERT_EQ(ent_skin_update(skin.get()), ENT_OK) << ent_last_error();
         double before_s = 0.0;
@@ -82,7 +82,7 @@ TEST(Lifetimes, ASkinMadeBeforeAnyUpdateOutlivesItsSceneToo) {
     ent_scene* scene = nullptr;
     const ent_scene_desc desc = falling_desc();
     ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
-    SkinPtr a = make_skin(scene, ENT_SKIN_TUBE), b = make_skin(scene, ENT_SKIN_CONVOLUTION);
+    LifetimesSkinPtr a = lifetimes_make_skin(scene, ENT_SKIN_TUBE), b = lifetimes_make_skin(scene, ENT_SKIN_CONVOLUTION);
     ent_scene_destroy(scene);
     a.reset();  // the skins go in any order; the last one frees the snapshots
     ASSERT_EQ(ent_skin_update(b.get()), ENT_OK) << ent_last_error();
@@ -90,12 +90,12 @@ TEST(Lifetimes, ASkinMadeBeforeAnyUpdateOutlivesItsSceneToo) {
 }
 
 // Counts the caller's allocator: the scene's memory goes with the last of it and its skins.
-struct Heap {
+struct LifetimesHeap {
     std::mutex mutex;
     std::map<void*, size_t> live;
 };
 void* heap_allocate(void* user, size_t size, size_t alignment) {
-    Heap& heap = *static_cast<Heap*>(user);
+    LifetimesHeap& heap = *static_cast<LifetimesHeap*>(user);
     const size_t a = alignment < sizeof(void*) ? sizeof(void*) : alignment;
     void* p = std::aligned_alloc(a, (size + a - 1) / a * a + a);
     std::lock_guard<std::mutex> lock(heap.mutex);
@@ -103,7 +103,7 @@ void* heap_allocate(void* user, size_t size, size_t alignment) {
     return p;
 }
 void heap_release(void* user, void* memory, size_t, size_t) {
-    Heap& heap = *static_cast<Heap*>(user);
+    LifetimesHeap& heap = *static_cast<LifetimesHeap*>(user);
     {
         std::lock_guard<std::mutex> lock(heap.mutex);
         heap.live.erase(memory);
@@ -112,7 +112,7 @@ void heap_release(void* user, void* memory, size_t, size_t) {
 }
 
 // Callbacks that allocate from `heap` and count its blocks.
-ent_callbacks allocating_from(Heap& heap) {
+ent_callbacks allocating_from(LifetimesHeap& heap) {
     ent_callbacks callbacks;
     ent_callbacks_default(&callbacks);
     callbacks.allocate = heap_allocate;
@@ -122,13 +122,13 @@ ent_callbacks allocating_from(Heap& heap) {
 }
 
 TEST(Lifetimes, TheScenesMemoryGoesWithTheLastOfTheSceneAndItsSkins) {
-    Heap heap;
+    LifetimesHeap heap;
     const ent_callbacks callbacks = allocating_from(heap);
     ent_scene_desc desc = falling_desc();
     desc.callbacks = &callbacks;
     ent_scene* scene = nullptr;
     ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
-    SkinPtr skin = make_skin(scene, ENT_SKIN_TUBE);
+    LifetimesSkinPtr skin = lifetimes_make_skin(scene, ENT_SKIN_TUBE);
     ASSERT_TRUE(step_n(scene, 1e-3, 10));
     const std::size_t with_scene = heap.live.size();
     ent_scene_destroy(scene);
@@ -143,7 +143,7 @@ TEST(Lifetimes, ADestroyedSceneThatItsSkinsKeepIsRefusedNotRead) {
     ent_scene* scene = nullptr;
     const ent_scene_desc desc = falling_desc();
     ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
-    SkinPtr skin = make_skin(scene, ENT_SKIN_TUBE);
+    LifetimesSkinPtr skin = lifetimes_make_skin(scene, ENT_SKIN_TUBE);
     ent_scene_destroy(scene);
     // Using a destroyed scene is the caller's mistake; while its skins keep the handle, the
     // library can tell, and says so instead of reading what is gone.
@@ -164,7 +164,7 @@ TEST(Lifetimes, ASceneDestroyedWhileARenderThreadUpdatesItsSkinIsSafe) {
     ent_scene* scene = nullptr;
     const ent_scene_desc desc = falling_desc();
     ASSERT_EQ(ent_scene_create(&desc, &scene), ENT_OK) << ent_last_error();
-    SkinPtr skin = make_skin(scene, ENT_SKIN_CONVOLUTION);
+    LifetimesSkinPtr skin = lifetimes_make_skin(scene, ENT_SKIN_CONVOLUTION);
     std::atomic<bool> destroyed{false}, done{false};
     std::atomic<long> failures{0}, updates_after{0};
     std::thread render([&] {
@@ -188,12 +188,12 @@ TEST(Lifetimes, ASceneDestroyedWhileARenderThreadUpdatesItsSkinIsSafe) {
 // a step inside the call (max_speed is tiny, so the guard rejects the first attempt and
 // logs) while the main thread destroys the scene; then the step goes on and returns a
 // status. Before, the destroy freed the scene under the step (ASan: heap-use-after-free).
-struct HeldStep : Heap {
+struct HeldStep : LifetimesHeap {
     std::condition_variable changed;
     bool holding = false, destroyed = false;
 };
 void hold_the_first_warning(void* user, int32_t level, const char*) {
-    HeldStep& held = static_cast<HeldStep&>(*static_cast<Heap*>(user));
+    HeldStep& held = static_cast<HeldStep&>(*static_cast<LifetimesHeap*>(user));
     if (level != ENT_LOG_WARNING) return;
     std::unique_lock<std::mutex> lock(held.mutex);
     if (held.destroyed || held.holding) return;
@@ -201,7 +201,7 @@ void hold_the_first_warning(void* user, int32_t level, const char*) {
     held.changed.notify_all();
     held.changed.wait(lock, [&] { return held.destroyed; });
 }
-std::size_t live_blocks(Heap& heap) {
+std::size_t live_blocks(LifetimesHeap& heap) {
     std::lock_guard<std::mutex> lock(heap.mutex);
     return heap.live.size();
 }
@@ -246,7 +246,7 @@ TEST(Lifetimes, ASkinDestroyedDuringItsUpdateOnAnotherThreadGoesAsTheUpdateRetur
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 20));
     int raced = 0;
     for (int round = 0; round < 40 && raced < 8; ++round) {
-        ent_skin* skin = make_skin(scene.get(), round % 2 ? ENT_SKIN_CONVOLUTION : ENT_SKIN_POINT_SKELETON).release();
+        ent_skin* skin = lifetimes_make_skin(scene.get(), round % 2 ? ENT_SKIN_CONVOLUTION : ENT_SKIN_POINT_SKELETON).release();
         std::atomic<bool> finished{false};
         ent_status updated = ENT_ERROR_INTERNAL;
         std::thread render([&] {

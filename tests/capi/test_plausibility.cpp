@@ -6,11 +6,14 @@
 
 #include <mutex>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using enteron_test::contains;
+
 
 ScenePtr json_with(const std::string& json, Warnings& warnings) {
     const ent_callbacks callbacks = logging_to(warnings);

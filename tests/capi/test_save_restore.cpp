@@ -14,11 +14,15 @@
 #include <cstdint>
 #include <random>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 using saved_state_image::kHeaderSize;
 using saved_state_image::reseal;
 
 namespace {
+
+using enteron_test::kIdentity;
 
 // A serpentine pile in a box, self-colliding, with a tool (implicit Euler).
 const char* const kPile = R"({
@@ -29,7 +33,6 @@ const char* const kPile = R"({
   "tools": [{"position": [0, 0, 0.02]}]})";
 
 constexpr double kDt = 1e-3;
-const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
 
 // Where the tool goes down: over control point 6 of the pile at its start (x, y).
 double g_aim[2] = {0.0, 0.0};
@@ -95,7 +98,7 @@ std::vector<unsigned char> published(const ent_scene* scene) {
 }
 
 // Steps k = first .. first + count - 1 of a script (the trainee's by default); what each published.
-std::vector<std::vector<unsigned char>> run(ent_scene* scene, int first, int count,
+std::vector<std::vector<unsigned char>> save_restore_run(ent_scene* scene, int first, int count,
                                             void (*script_step)(ent_scene*, int) = script) {
     std::vector<std::vector<unsigned char>> out;
     for (int k = first; k < first + count; ++k) {
@@ -126,15 +129,15 @@ void expect_refused(ent_scene* scene, const std::vector<unsigned char>& image, e
 TEST(SaveRestore, ARestoredSceneContinuesBitIdentically) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
-    run(scene.get(), 0, 100);
+    save_restore_run(scene.get(), 0, 100);
     const std::vector<unsigned char> image = save(scene.get());
     const std::vector<unsigned char> at_save = published(scene.get());
     // Through the grasp (step 120), the pull and the release (200).
-    const auto first = run(scene.get(), 100, 150);
+    const auto first = save_restore_run(scene.get(), 100, 150);
     ASSERT_EQ(ent_scene_restore_state(scene.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
     EXPECT_TRUE(published(scene.get()) == at_save) << "the restore publishes the saved instant";
     EXPECT_TRUE(save(scene.get()) == image) << "save after restore gives the same image";
-    const auto second = run(scene.get(), 100, 150);
+    const auto second = save_restore_run(scene.get(), 100, 150);
     expect_same_runs(first, second);
     // The run touched and grasped: the comparison covered contacts and a grasp.
     ent_tool_contacts t{};
@@ -157,7 +160,7 @@ TEST(SaveRestore, TwoIdenticalRunsSaveIdenticalImages) {
     for (int r = 0; r < 2; ++r) {
         ScenePtr scene = create_pile();
         ASSERT_TRUE(scene);
-        runs[r] = run(scene.get(), 0, 150);
+        runs[r] = save_restore_run(scene.get(), 0, 150);
         images[r] = save(scene.get());
         ASSERT_GT(stats(scene.get()).last_step_ns, 0u) << "the scene does time its steps";
     }
@@ -211,7 +214,7 @@ std::vector<unsigned char> with_wall_clock_figures(const std::vector<unsigned ch
 TEST(SaveRestore, ImagesWithWallClockFiguresStillRestore) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
-    run(scene.get(), 0, 120);
+    save_restore_run(scene.get(), 0, 120);
     const std::vector<unsigned char> image = save(scene.get());
     const std::vector<unsigned char> old = with_wall_clock_figures(image, 24);
     ASSERT_EQ(old.size(), image.size() + 8 + 8 * ENT_EFFECT_COUNT);
@@ -230,7 +233,7 @@ TEST(SaveRestore, ImagesWithWallClockFiguresStillRestore) {
     EXPECT_EQ(effect_stats(from_old.get(), ENT_EFFECT_STRETCH).calls,
               effect_stats(scene.get(), ENT_EFFECT_STRETCH).calls) << "the work counters are restored";
     EXPECT_TRUE(save(from_old.get()) == image) << "the old image restores the same state";
-    expect_same_runs(run(from_new.get(), 120, 60), run(from_old.get(), 120, 60));
+    expect_same_runs(save_restore_run(from_new.get(), 120, 60), save_restore_run(from_old.get(), 120, 60));
 }
 
 TEST(SaveRestore, Bdf2ContinuesBitIdentically) {
@@ -241,21 +244,21 @@ TEST(SaveRestore, Bdf2ContinuesBitIdentically) {
     const std::vector<double> q = control_points(scene.get());
     g_aim[0] = q[3 * 6];
     g_aim[1] = q[3 * 6 + 1];
-    run(scene.get(), 0, 100);
+    save_restore_run(scene.get(), 0, 100);
     const std::vector<unsigned char> image = save(scene.get());
-    const auto first = run(scene.get(), 100, 60);
+    const auto first = save_restore_run(scene.get(), 100, 60);
     ScenePtr fresh = create_json(json);
     ASSERT_TRUE(fresh);
     ASSERT_EQ(ent_scene_restore_state(fresh.get(), image.data(), image.size()), ENT_OK) << ent_last_error();
-    expect_same_runs(first, run(fresh.get(), 100, 60));
+    expect_same_runs(first, save_restore_run(fresh.get(), 100, 60));
 }
 
 TEST(SaveRestore, AFreshSceneFromTheSameDescriptionContinuesTheSame) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
-    run(scene.get(), 0, 130);  // grasping
+    save_restore_run(scene.get(), 0, 130);  // grasping
     const std::vector<unsigned char> image = save(scene.get());
-    const auto original = run(scene.get(), 130, 100);
+    const auto original = save_restore_run(scene.get(), 130, 100);
 
     ScenePtr fresh = create_pile();
     ASSERT_TRUE(fresh);
@@ -263,7 +266,7 @@ TEST(SaveRestore, AFreshSceneFromTheSameDescriptionContinuesTheSame) {
     int32_t grasping = 0;
     ASSERT_EQ(ent_tool_state(fresh.get(), 0, &grasping), ENT_OK);
     EXPECT_EQ(grasping, 1) << "the grasp is part of the state";
-    expect_same_runs(original, run(fresh.get(), 130, 100));
+    expect_same_runs(original, save_restore_run(fresh.get(), 130, 100));
 }
 
 // The anatomy the caller moves between steps: the box (obstacle 0) sways and turns a
@@ -284,7 +287,7 @@ void sway(ent_scene* scene, int k) {
 }
 
 std::vector<std::vector<unsigned char>> run_swaying(ent_scene* scene, int first, int count) {
-    return run(scene, first, count, sway);
+    return save_restore_run(scene, first, count, sway);
 }
 
 TEST(SaveRestore, MovingAnatomyContinuesBitIdentically) {
@@ -321,7 +324,7 @@ TEST(SaveRestore, AnObstacleRemovedInOneSceneOnlyIsRefused) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
     ASSERT_EQ(ent_scene_add_obstacle(scene.get(), &plane, nullptr), ENT_OK) << ent_last_error();
-    run(scene.get(), 0, 10);
+    save_restore_run(scene.get(), 0, 10);
     ASSERT_EQ(ent_scene_remove_obstacle(scene.get(), 1), ENT_OK) << ent_last_error();
     const std::vector<unsigned char> image = save(scene.get());
     ScenePtr fresh = create_pile();
@@ -335,7 +338,7 @@ TEST(SaveRestore, AnObstacleRemovedInOneSceneOnlyIsRefused) {
 TEST(SaveRestore, AStateOfAnotherSceneIsRefused) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
-    run(scene.get(), 0, 10);
+    save_restore_run(scene.get(), 0, 10);
     const std::vector<unsigned char> image = save(scene.get());
     // Another length; and the same description with one more obstacle added.
     std::string longer = kPile;
@@ -356,9 +359,9 @@ TEST(SaveRestore, AStateOfAnotherSceneIsRefused) {
 TEST(SaveRestore, BadImagesAreRefusedWithTheSceneUntouched) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
-    run(scene.get(), 0, 20);
+    save_restore_run(scene.get(), 0, 20);
     const std::vector<unsigned char> good = save(scene.get());
-    run(scene.get(), 20, 5);  // so that a wrongly applied restore would show
+    save_restore_run(scene.get(), 20, 5);  // so that a wrongly applied restore would show
 
     std::vector<unsigned char> image(good.begin(), good.end() - 1);
     expect_refused(scene.get(), image, ENT_ERROR_INVALID_ARGUMENT, "truncated");
@@ -448,7 +451,7 @@ TEST(SaveRestore, RestoreRecoversFromUnstable) {
 TEST(SaveRestore, FuzzedImagesFailCleanly) {
     ScenePtr scene = create_pile();
     ASSERT_TRUE(scene);
-    run(scene.get(), 0, 130);
+    save_restore_run(scene.get(), 0, 130);
     const std::vector<unsigned char> good = save(scene.get());
     std::mt19937_64 random(22);
     int accepted = 0, refused = 0;

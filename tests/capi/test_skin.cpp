@@ -13,8 +13,8 @@ using namespace skin_test;
 
 namespace {
 
-constexpr double kR = 0.0125;
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kSkinR = 0.0125;
+constexpr double kSkinPi = 3.14159265358979323846;
 
 
 // A scene whose axis is exactly the given control points (no effects: it never moves).
@@ -24,7 +24,7 @@ ScenePtr points_scene(const std::vector<double>& q) {
     desc.shape = ENT_SHAPE_POINTS;
     desc.control_points = uint32_t(q.size() / 3);
     desc.shape_points_xyz_m = q.data();
-    desc.radius_m = kR;
+    desc.radius_m = kSkinR;
     return create(desc);
 }
 
@@ -37,10 +37,10 @@ std::vector<double> straight(int n, double spacing) {
 std::vector<double> u_turn(double leg, double gap, double spacing) {
     std::vector<double> q;
     const double r = 0.5 * gap;
-    const int legs = int(std::ceil(leg / spacing)), arc = int(std::ceil(kPi * r / spacing));
+    const int legs = int(std::ceil(leg / spacing)), arc = int(std::ceil(kSkinPi * r / spacing));
     for (int i = 0; i < legs; ++i) q.insert(q.end(), {-leg + i * (leg / legs), -r, 0.0});
     for (int i = 0; i < arc; ++i) {
-        const double a = -0.5 * kPi + kPi * i / arc;
+        const double a = -0.5 * kSkinPi + kSkinPi * i / arc;
         q.insert(q.end(), {r * std::cos(a), r * std::sin(a), 0.0});
     }
     for (int i = 0; i <= legs; ++i) q.insert(q.end(), {-i * (leg / legs), r, 0.0});
@@ -71,7 +71,7 @@ TEST(Skin, StraightTubeEveryMethodWithinHalfAPercent) {
 }
 
 TEST(Skin, TightUTurnImplicitMethodsDoNotBlendTheLegs) {
-    ScenePtr scene = points_scene(u_turn(0.15, 2.2 * kR, 0.25 * kR));
+    ScenePtr scene = points_scene(u_turn(0.15, 2.2 * kSkinR, 0.25 * kSkinR));
     ASSERT_TRUE(scene);
     for (int32_t method : {ENT_SKIN_POINT_SKELETON, ENT_SKIN_CONVOLUTION}) {
         SkinPtr skin = make_skin(scene.get(), method);
@@ -85,7 +85,7 @@ TEST(Skin, TightUTurnImplicitMethodsDoNotBlendTheLegs) {
     SkinPtr tube = make_skin(scene.get(), ENT_SKIN_TUBE);
     ASSERT_EQ(ent_skin_update(tube.get()), ENT_OK);
     EXPECT_EQ(metrics(tube.get()).inverted_triangles, 0u);
-    ScenePtr tight = points_scene(u_turn(0.15, 1.4 * kR, 0.25 * kR));
+    ScenePtr tight = points_scene(u_turn(0.15, 1.4 * kSkinR, 0.25 * kSkinR));
     SkinPtr folded = make_skin(tight.get(), ENT_SKIN_TUBE);
     ASSERT_EQ(ent_skin_update(folded.get()), ENT_OK);
     EXPECT_EQ(metrics(folded.get()).inverted_triangles, 0u);

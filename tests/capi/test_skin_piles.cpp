@@ -17,7 +17,7 @@ using namespace skin_test;
 
 namespace {
 
-constexpr double kR = 0.0125;
+constexpr double kSkinPilesR = 0.0125;
 
 
 struct ent_skin_metrics measured(ent_scene* scene, int32_t method, double ring_spacing_radii = 0.5,
@@ -39,7 +39,7 @@ TEST(SkinPiles, ImplicitSkinsWithinOnePercentOnTheDemoPileAndTheTightFoldPile) {
         SCOPED_TRACE(pile.name);
         ScenePtr scene(enteron::bench::settle_pile(pile));
         ASSERT_TRUE(scene) << ent_last_error();
-        const enteron::bench::BendRadii bends = enteron::bench::bend_radii(scene.get(), kR);
+        const enteron::bench::BendRadii bends = enteron::bench::bend_radii(scene.get(), kSkinPilesR);
         if (pile.name == std::string("tight_fold_pile")) {
             // What makes the pile tight: at least half the axis under 4 R, and U-turns
             // down to 1.5 R.

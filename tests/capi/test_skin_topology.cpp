@@ -14,7 +14,7 @@ using namespace skin_test;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kSkinTopologyPi = 3.14159265358979323846;
 
 // The public header only: a small vector of our own.
 struct Vec3 {
@@ -240,7 +240,7 @@ TEST(SkinTopology, AroundVIsContinuousAlongTheBowelAndBetweenFrames) {
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 5));
         ASSERT_EQ(ent_skin_update(tube.get()), ENT_OK);
         const Vec3 after = seam(mesh(tube.get()));
-        EXPECT_LT(std::acos(std::min(1.0, before.dot(after))), 0.1 * kPi) << "frame " << frame;
+        EXPECT_LT(std::acos(std::min(1.0, before.dot(after))), 0.1 * kSkinTopologyPi) << "frame " << frame;
         before = after;
     }
 }

@@ -38,11 +38,11 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kLength = 0.5;
-constexpr double kDensity = 0.3;
+constexpr double kStaticsLength = 0.5;
+constexpr double kStaticsDensity = 0.3;
 constexpr double kEA = 1e4;
 constexpr double kEI = 1e-2;
-constexpr double kGravity = 0.01;
+constexpr double kStaticsGravity = 0.01;
 
 struct Deflection {
     double tip;        // m, downward
@@ -58,8 +58,8 @@ Deflection settle_cantilever(uint32_t n) {
                    ENT_EFFECT_BIT(ENT_EFFECT_DAMPING) | ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) |
                    ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
     desc.control_points = n;
-    desc.length_m = kLength;
-    desc.linear_density_kg_per_m = kDensity;
+    desc.length_m = kStaticsLength;
+    desc.linear_density_kg_per_m = kStaticsDensity;
     desc.stretch_stiffness_N = kEA;
     desc.bend_stiffness_N_m2 = kEI;
     desc.shape = ENT_SHAPE_LINE;
@@ -67,7 +67,7 @@ Deflection settle_cantilever(uint32_t n) {
     desc.timestep_s = 0.02;
     desc.gravity_m_per_s2[0] = 0.0;
     desc.gravity_m_per_s2[1] = 0.0;
-    desc.gravity_m_per_s2[2] = -kGravity;
+    desc.gravity_m_per_s2[2] = -kStaticsGravity;
     desc.drag_N_s_per_m2 = 1.5;
     desc.stretch_damping_N_s = 0.5;
     desc.bend_damping_N_m2_s = 0.0;
@@ -90,8 +90,8 @@ Deflection settle_cantilever(uint32_t n) {
 }
 
 TEST(Statics, CantileverTipDeflectionConvergesToBeamTheory) {
-    const double w = kDensity * kGravity;
-    const double analytic = w * std::pow(kLength, 4) / (8.0 * kEI);
+    const double w = kStaticsDensity * kStaticsGravity;
+    const double analytic = w * std::pow(kStaticsLength, 4) / (8.0 * kEI);
     const uint32_t counts[] = {10, 20, 40};
     const double bounds[] = {0.66, 0.34, 0.17};               // against the clamped beam
     const double pinned_root_bounds[] = {0.094, 0.046, 0.024};  // against clamp + pin at l0
@@ -101,8 +101,8 @@ TEST(Statics, CantileverTipDeflectionConvergesToBeamTheory) {
         const Deflection d = settle_cantilever(n);
         ASSERT_TRUE(d.settled) << "N " << n << " did not settle in " << d.steps << " steps";
         const double error = std::fabs(d.tip - analytic) / analytic;
-        const double l0 = kLength / double(n - 1);
-        const double pinned_root = std::pow(1.0 - l0 / kLength, 3) * analytic;
+        const double l0 = kStaticsLength / double(n - 1);
+        const double pinned_root = std::pow(1.0 - l0 / kStaticsLength, 3) * analytic;
         const double pinned_root_error = std::fabs(d.tip - pinned_root) / pinned_root;
         std::printf("N %u: tip %.6e m, analytic %.6e m, error %.4f, vs clamp + pin at l0 %.4f, %d steps\n", n,
                     d.tip, analytic, error, pinned_root_error, d.steps);

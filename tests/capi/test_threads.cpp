@@ -12,13 +12,13 @@ using namespace capi_test;
 
 namespace {
 
-constexpr uint32_t kPoints = 30;
-constexpr double kDt = 1e-3;
+constexpr uint32_t kThreadsPoints = 30;
+constexpr double kThreadsDt = 1e-3;
 
 TEST(Threads, ReadersSeeWholeSnapshotsWhileTheSceneSteps) {
     ent_scene_desc desc = default_desc();
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY);
-    desc.control_points = kPoints;
+    desc.control_points = kThreadsPoints;
     desc.length_m = 1.0;
     desc.shape = ENT_SHAPE_LINE;
     desc.integrator = ENT_INTEGRATOR_SYMPLECTIC_EULER;
@@ -33,15 +33,15 @@ TEST(Threads, ReadersSeeWholeSnapshotsWhileTheSceneSteps) {
     std::atomic<long> torn{0}, failures{0}, reads{0}, stale_or_backwards{0};
 
     auto reader = [&] {
-        std::vector<double> q(3 * kPoints), axis(3 * 16);
+        std::vector<double> q(3 * kThreadsPoints), axis(3 * 16);
         uint64_t last_steps = 0;
         while (!done.load()) {
             uint32_t count = 0;
-            if (ent_scene_control_points(scene.get(), kPoints, q.data(), &count) != ENT_OK || count != kPoints) {
+            if (ent_scene_control_points(scene.get(), kThreadsPoints, q.data(), &count) != ENT_OK || count != kThreadsPoints) {
                 ++failures;
                 continue;
             }
-            for (uint32_t i = 1; i < kPoints; ++i)
+            for (uint32_t i = 1; i < kThreadsPoints; ++i)
                 for (int c = 0; c < 3; ++c) {
                     const double di = q[3 * i + c] - start[3 * i + c];
                     const double d0 = q[c] - start[c];
@@ -49,7 +49,7 @@ TEST(Threads, ReadersSeeWholeSnapshotsWhileTheSceneSteps) {
                     // g t dt, i.e. 2 dt / t of it, far above this tolerance.
                     if (std::fabs(di - d0) > 1e-11 * (1.0 + std::fabs(d0))) {
                         ++torn;
-                        i = kPoints;
+                        i = kThreadsPoints;
                         break;
                     }
                 }
@@ -60,7 +60,7 @@ TEST(Threads, ReadersSeeWholeSnapshotsWhileTheSceneSteps) {
                 continue;
             }
             // One snapshot's time and step count belong together.
-            const double expected_time = double(s.steps) * kDt;
+            const double expected_time = double(s.steps) * kThreadsDt;
             if (std::fabs(s.time_s - expected_time) > 1e-9 * (1.0 + expected_time)) ++torn;
             if (s.steps < last_steps) ++stale_or_backwards;
             last_steps = s.steps;
@@ -74,7 +74,7 @@ TEST(Threads, ReadersSeeWholeSnapshotsWhileTheSceneSteps) {
     // while (a step takes microseconds; the readers may be slow to start).
     long steps = 0;
     while (steps < 3000 || (reads.load() < 2000 && steps < 2000000)) {
-        if (ent_scene_step(scene.get(), kDt) != ENT_OK) {
+        if (ent_scene_step(scene.get(), kThreadsDt) != ENT_OK) {
             ADD_FAILURE() << "step " << steps << ": " << ent_last_error();
             break;
         }

@@ -13,15 +13,17 @@
 #include <utility>
 
 #include "../../bench/skin_piles.h"
+#include "test_helpers.h"
 
 using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = kBowelRadius;  // the default R, m
-const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
+using enteron_test::kIdentity;
+using enteron_test::norm3;
 
-double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+constexpr double kToolHapticsRadius = kBowelRadius;  // the default R, m
+
 
 ent_tool_feedback feedback(const ent_scene* scene, int32_t tool) {
     ent_tool_feedback f{};
@@ -112,7 +114,7 @@ Continuity reversal(double dt, int32_t mode, double max_force) {
     Continuity out;
     ScenePtr scene = bowel_on_floor(1.0, 40, dt);
     if (!scene) return out;
-    const double r = 0.0025, top = 2 * kRadius + r, speed = 0.05, depth = 0.015;
+    const double r = 0.0025, top = 2 * kToolHapticsRadius + r, speed = 0.05, depth = 0.015;
     const double start[3] = {0.0, 0.0, top + 0.002};
     add_tool(scene.get(), start, r, max_force, mode);
     const int down = int(std::lround((depth + 0.002) / speed / dt));
@@ -173,7 +175,7 @@ TEST(ToolHaptics, NoClickAtAReversalWithFriction) {
 // the motion itself is 0.057 N; the rest was the coupling's damper (docs/haptics.md).
 Continuity scenario(const char* name, double dt) {
     Continuity out;
-    const double r = 0.0025, top = 2 * kRadius + r;
+    const double r = 0.0025, top = 2 * kToolHapticsRadius + r;
     const std::string which = name;
     ScenePtr scene = which == "drag" ? settled_pile() : bowel_on_floor(1.0, 40, dt);
     if (!scene) return out;
@@ -284,7 +286,7 @@ TEST(ToolHaptics, ForceContinuitySuite) {
 TEST(ToolHaptics, AClosingGraspIsSavedAndRestored) {
     // A grasp taken 1 mm away closes over the next steps; a second tool never grasps. Saved
     // mid-closing, restored: the same forces to the bit (the rest length is state).
-    const double dt = 1e-3, r = 0.0025, top = 2 * kRadius + r;
+    const double dt = 1e-3, r = 0.0025, top = 2 * kToolHapticsRadius + r;
     ScenePtr scene = bowel_on_floor(1.0, 40, dt);
     ASSERT_TRUE(scene);
     const double above[3] = {0.0, 0.0, top + 0.001}, away[3] = {0.3, 0.0, 0.1};
@@ -339,7 +341,7 @@ TEST(ToolHaptics, TheProxyNeverPassesThroughTheBowelAndItsForceStaysBounded) {
         for (double speed : {0.1, 0.5, 2.0, 5.0}) {
             ScenePtr scene = bowel_on_floor(0.6, 25, dt);
             ASSERT_TRUE(scene);
-            const double from[3] = {0.0, -0.05, kRadius}, length = 0.3;
+            const double from[3] = {0.0, -0.05, kToolHapticsRadius}, length = 0.3;
             add_tool(scene.get(), from, r, max_force, ENT_TOOL_MODE_PROXY);
             const double travel = 0.10;  // to y = 5 cm, well beyond the tube
             const int steps = std::max(1, int(std::lround(travel / speed / dt)));
@@ -354,9 +356,9 @@ TEST(ToolHaptics, TheProxyNeverPassesThroughTheBowelAndItsForceStaysBounded) {
                 EXPECT_EQ(f.commanded_position_m[1], p[1]);
             }
             std::cout << "[ sweep max_force " << max_force << " N, " << speed << " m/s ] closest approach to the axis "
-                      << closest / kRadius << " R, largest force " << largest << " N\n";
+                      << closest / kToolHapticsRadius << " R, largest force " << largest << " N\n";
             // Issue 18: the surface never comes closer to the axis than 0.8 R.
-            EXPECT_GE(closest, 0.8 * kRadius) << speed << " m/s, " << max_force << " N";
+            EXPECT_GE(closest, 0.8 * kToolHapticsRadius) << speed << " m/s, " << max_force << " N";
             EXPECT_LE(largest, max_force * (1 + 1e-9));
             EXPECT_GT(largest, 0.05 * std::min(max_force, 5.0)) << "the bowel resisted";
         }
@@ -375,7 +377,7 @@ TEST(ToolHaptics, AForceBoundedAtMaxForceIsSaidSaturated) {
             ScenePtr scene = bowel_on_floor(0.6, 25, dt);
             ASSERT_TRUE(scene);
             // Down 12 mm into the bowel at 50 mm/s, then held there.
-            const double top = 2 * kRadius + r, start[3] = {0.0, 0.0, top + 0.002};
+            const double top = 2 * kToolHapticsRadius + r, start[3] = {0.0, 0.0, top + 0.002};
             add_tool(scene.get(), start, r, max_force, mode);
             int saturated = 0, at_bound = 0, at_bound_and_saturated = 0;
             double smallest_saturated = 1e9;
@@ -418,7 +420,7 @@ TEST(ToolHaptics, TheReportedForceNeverExceedsMaxForceWithClampedEndsOrBdf2) {
                          std::to_string(speed) + " m/s");
             ScenePtr scene = bowel_on_floor(0.6, 25, dt, integrator, clamped);
             ASSERT_TRUE(scene) << ent_last_error();
-            const double from[3] = {0.0, -0.05, kRadius}, travel = 0.10;
+            const double from[3] = {0.0, -0.05, kToolHapticsRadius}, travel = 0.10;
             add_tool(scene.get(), from, r, max_force, ENT_TOOL_MODE_PROXY);
             const int steps = std::max(1, int(std::lround(travel / speed / dt)));
             double largest = 0.0;
@@ -468,7 +470,7 @@ PileSweep sweep_through_pile(int32_t mode, double max_force, double speed) {
 }
 
 void print_sweep(double speed, double max_force, const char* mode, const PileSweep& s) {
-    std::cout << "| " << speed << " | " << max_force << " | " << mode << " | " << s.closest / kRadius
+    std::cout << "| " << speed << " | " << max_force << " | " << mode << " | " << s.closest / kToolHapticsRadius
               << (s.stepped ? "" : " (a step failed)") << " | " << s.largest << " |\n";
 }
 
@@ -481,7 +483,7 @@ TEST(ToolHaptics, TheProxyNeverEntersTheSettledPileAtAnySpeed) {
             // Issue 18: the tool's surface never closer to the axis than 0.8 R (into the tube
             // less than 0.2 R), the force within its bound.
             EXPECT_TRUE(proxy.stepped) << ent_last_error();
-            EXPECT_GE(proxy.closest, 0.8 * kRadius) << speed << " m/s, " << max_force << " N";
+            EXPECT_GE(proxy.closest, 0.8 * kToolHapticsRadius) << speed << " m/s, " << max_force << " N";
             EXPECT_LE(proxy.largest, max_force * (1 + 1e-9)) << speed << " m/s, " << max_force << " N";
             EXPECT_GT(proxy.largest, 0.05 * max_force) << "the pile resisted";
         }
@@ -489,7 +491,7 @@ TEST(ToolHaptics, TheProxyNeverEntersTheSettledPileAtAnySpeed) {
         // mode, the behaviour before the proxy) goes through the tube.
         const PileSweep direct = sweep_through_pile(ENT_TOOL_MODE_DIRECT, max_force, 5.0);
         print_sweep(5.0, max_force, "direct", direct);
-        EXPECT_LT(direct.closest, 0.8 * kRadius) << max_force << " N";
+        EXPECT_LT(direct.closest, 0.8 * kToolHapticsRadius) << max_force << " N";
     }
 }
 
@@ -508,7 +510,7 @@ TEST(ToolHaptics, DirectModeStillPassesThroughAtSpeed) {
     const double dt = 1e-3, r = 0.0025;
     ScenePtr scene = bowel_on_floor(0.6, 25, dt);
     ASSERT_TRUE(scene);
-    const double from[3] = {0.0, -0.05, kRadius};
+    const double from[3] = {0.0, -0.05, kToolHapticsRadius};
     add_tool(scene.get(), from, r, 5.0, ENT_TOOL_MODE_DIRECT);
     double closest = 1e9;
     for (int i = 1; i <= 20; ++i) {
@@ -519,13 +521,13 @@ TEST(ToolHaptics, DirectModeStillPassesThroughAtSpeed) {
         for (int c = 0; c < 3; ++c) EXPECT_EQ(f.proxy_position_m[c], f.commanded_position_m[c]);
         closest = std::min(closest, closest_approach(scene.get(), f.proxy_position_m, 0.3, r));
     }
-    EXPECT_LT(closest, 0.5 * kRadius);
+    EXPECT_LT(closest, 0.5 * kToolHapticsRadius);
 }
 
 // Drives tool 0 round a closed path (down into the bowel, along it, up, back) `laps` times.
 void closed_paths(ent_scene* scene, int laps, double dt) {
     const double corners[4][3] = {
-        {-0.02, 0.0, 2 * kRadius + 0.01}, {-0.02, 0.0, kRadius}, {0.02, 0.0, kRadius}, {0.02, 0.0, 2 * kRadius + 0.01}};
+        {-0.02, 0.0, 2 * kToolHapticsRadius + 0.01}, {-0.02, 0.0, kToolHapticsRadius}, {0.02, 0.0, kToolHapticsRadius}, {0.02, 0.0, 2 * kToolHapticsRadius + 0.01}};
     const int per_side = int(std::lround(0.1 / dt));
     for (int lap = 0; lap < laps; ++lap)
         for (int side = 0; side < 4; ++side)
@@ -545,7 +547,7 @@ TEST(ToolHaptics, ThePassivityObserverGivesBackNoMoreThanWentIn) {
         for (int32_t limiter : {0, 1}) {
             ScenePtr scene = bowel_on_floor(0.6, 25, dt);
             ASSERT_TRUE(scene);
-            const double start[3] = {-0.02, 0.0, 2 * kRadius + 0.01};
+            const double start[3] = {-0.02, 0.0, 2 * kToolHapticsRadius + 0.01};
             add_tool(scene.get(), start, 0.005, 5.0, mode, limiter);
             closed_paths(scene.get(), 3, dt);
             const ent_tool_stats s = tool_stats(scene.get(), 0);
@@ -573,12 +575,12 @@ TEST(ToolHaptics, TheStiffnessIsPublishedAndPushesBack) {
     ScenePtr scene = bowel_on_floor(0.6, 25, dt);
     ASSERT_TRUE(scene);
     double K[9];
-    const double above[3] = {0.0, 0.0, 3 * kRadius};
+    const double above[3] = {0.0, 0.0, 3 * kToolHapticsRadius};
     add_tool(scene.get(), above, 0.005, 5.0, ENT_TOOL_MODE_PROXY);
     ASSERT_TRUE(step_n(scene.get(), dt, 1));
     ASSERT_EQ(ent_tool_stiffness(scene.get(), 0, K), ENT_OK) << ent_last_error();
     for (double k : K) EXPECT_EQ(k, 0.0) << "nothing touched";
-    const double pressed[3] = {0.0, 0.0, 2 * kRadius + 0.005 - 0.003};
+    const double pressed[3] = {0.0, 0.0, 2 * kToolHapticsRadius + 0.005 - 0.003};
     ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, pressed, kIdentity), ENT_OK);
     ASSERT_TRUE(step_n(scene.get(), dt, 100));
     ASSERT_EQ(ent_tool_stiffness(scene.get(), 0, K), ENT_OK) << ent_last_error();
@@ -599,7 +601,7 @@ TEST(ToolHaptics, ToolsCanBeRemovedAndCounted) {
     int32_t count = -1;
     ASSERT_EQ(ent_scene_tool_count(scene.get(), &count), ENT_OK);
     EXPECT_EQ(count, 0);
-    const double pressed[3] = {0.0, 0.0, 2 * kRadius + 0.005 - 0.003}, away[3] = {0.2, 0.0, 0.1};
+    const double pressed[3] = {0.0, 0.0, 2 * kToolHapticsRadius + 0.005 - 0.003}, away[3] = {0.2, 0.0, 0.1};
     add_tool(scene.get(), pressed, 0.005, 5.0, ENT_TOOL_MODE_PROXY);
     add_tool(scene.get(), away, 0.005, 5.0, ENT_TOOL_MODE_DIRECT);
     ASSERT_EQ(ent_scene_tool_count(scene.get(), &count), ENT_OK);
@@ -676,7 +678,7 @@ TEST(ToolHaptics, BadToolSettingsAreRefusedByName) {
 
 // The mean drag along x on a tool pressed 3 mm into the bowel and slid 10 cm along it.
 double mean_drag(int32_t mode, double friction) {
-    const double dt = 1e-3, r = 0.0025, top = 2 * kRadius + r;
+    const double dt = 1e-3, r = 0.0025, top = 2 * kToolHapticsRadius + r;
     ScenePtr scene = bowel_on_floor(0.6, 25, dt);
     if (!scene) return -1.0;
     ent_tool_desc desc;

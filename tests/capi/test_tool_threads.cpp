@@ -10,12 +10,15 @@
 #include <chrono>
 #include <thread>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = kBowelRadius;  // the default R, m
-const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
+using enteron_test::kIdentity;
+
+constexpr double kToolThreadsRadius = kBowelRadius;  // the default R, m
 
 // A 0.4 m bowel on the floor and a tool resting on its middle.
 ScenePtr bowel_with_tool(double max_force = 5.0) {
@@ -23,13 +26,13 @@ ScenePtr bowel_with_tool(double max_force = 5.0) {
     if (!scene) return scene;
     ent_tool_desc tool;
     ent_tool_desc_default(&tool);
-    tool.position_m[2] = 2 * kRadius + 0.004;
+    tool.position_m[2] = 2 * kToolThreadsRadius + 0.004;
     tool.max_force_N = max_force;
     EXPECT_EQ(ent_tool_add(scene.get(), &tool, nullptr), ENT_OK) << ent_last_error();
     return scene;
 }
 
-ent_tool_feedback feedback(const ent_scene* scene) {
+ent_tool_feedback tool_threads_feedback(const ent_scene* scene) {
     ent_tool_feedback f;
     std::memset(&f, 0, sizeof f);
     f.struct_size = sizeof f;
@@ -47,7 +50,7 @@ TEST(ToolThreads, TheLastPoseBeforeAStepWins) {
     ASSERT_TRUE(step_n(last.get(), 1e-3, 20));
     const std::vector<double> x = control_points(many.get()), y = control_points(last.get());
     EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(double)), 0);
-    const ent_tool_feedback f = feedback(many.get()), g = feedback(last.get());
+    const ent_tool_feedback f = tool_threads_feedback(many.get()), g = tool_threads_feedback(last.get());
     EXPECT_EQ(std::memcmp(f.force_N, g.force_N, sizeof f.force_N), 0);
 }
 
@@ -57,25 +60,25 @@ TEST(ToolThreads, TheLastGraspOrReleaseBeforeAStepWins) {
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK);
     ASSERT_EQ(ent_tool_release(scene.get(), 0), ENT_OK);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
-    EXPECT_EQ(feedback(scene.get()).grasping, 0) << "the release came last";
+    EXPECT_EQ(tool_threads_feedback(scene.get()).grasping, 0) << "the release came last";
     ASSERT_EQ(ent_tool_release(scene.get(), 0), ENT_OK);
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK);
-    EXPECT_EQ(feedback(scene.get()).grasping, 0) << "not before the step takes it";
+    EXPECT_EQ(tool_threads_feedback(scene.get()).grasping, 0) << "not before the step takes it";
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
-    EXPECT_EQ(feedback(scene.get()).grasping, 1) << "the grasp came last";
+    EXPECT_EQ(tool_threads_feedback(scene.get()).grasping, 1) << "the grasp came last";
 }
 
 TEST(ToolThreads, TheFeedbackIsOneSnapshotsWrenchGraspAndContacts) {
     ScenePtr scene = bowel_with_tool();
     ASSERT_TRUE(scene);
-    ent_tool_feedback f = feedback(scene.get());
+    ent_tool_feedback f = tool_threads_feedback(scene.get());
     EXPECT_EQ(f.steps, 0u);
     EXPECT_EQ(f.time_s, 0.0);
     EXPECT_EQ(f.contacts, 0u) << "nothing was evaluated before the first step";
-    const double pressed[3] = {0.0, 0.0, 2 * kRadius - 0.004};  // 4 mm into the bowel
+    const double pressed[3] = {0.0, 0.0, 2 * kToolThreadsRadius - 0.004};  // 4 mm into the bowel
     ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, pressed, kIdentity), ENT_OK);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 30));
-    f = feedback(scene.get());
+    f = tool_threads_feedback(scene.get());
     EXPECT_EQ(f.steps, 30u);
     EXPECT_NEAR(f.time_s, 0.030, 1e-15);
     EXPECT_GT(f.contacts, 0u);
@@ -104,7 +107,7 @@ TEST(ToolThreads, AHapticThreadAt1kHzBesideThePhysicsThread) {
         auto next = std::chrono::steady_clock::now();
         for (long tick = 0; !done.load(); ++tick) {
             const double angle = 0.01 * double(tick);
-            const double p[3] = {0.02 * std::cos(angle), 0.02 * std::sin(angle), 2 * kRadius - 0.002};
+            const double p[3] = {0.02 * std::cos(angle), 0.02 * std::sin(angle), 2 * kToolThreadsRadius - 0.002};
             if (ent_tool_set_pose(scene.get(), 0, p, kIdentity) != ENT_OK) ++failures;
             if (tick % 500 == 250 && ent_tool_grasp(scene.get(), 0) != ENT_OK) ++failures;
             if (tick % 500 == 0 && ent_tool_release(scene.get(), 0) != ENT_OK) ++failures;
@@ -136,7 +139,7 @@ TEST(ToolThreads, AHapticThreadAt1kHzBesideThePhysicsThread) {
     EXPECT_EQ(torn.load(), 0);
     EXPECT_EQ(backwards.load(), 0);
     EXPECT_EQ(over.load(), 0);
-    EXPECT_EQ(feedback(scene.get()).steps, uint64_t(steps));
+    EXPECT_EQ(tool_threads_feedback(scene.get()).steps, uint64_t(steps));
     for (double v : control_points(scene.get())) ASSERT_TRUE(std::isfinite(v));
 }
 

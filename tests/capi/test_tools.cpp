@@ -8,28 +8,27 @@
 #include <iostream>
 #include <limits>
 
+#include "test_helpers.h"
+
 using namespace capi_test;
 
 namespace {
 
-constexpr double kRadius = kBowelRadius;  // the default R, m
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
-const double kIdentity[4] = {1.0, 0.0, 0.0, 0.0};
+using enteron_test::norm3;
+using enteron_test::kIdentity;
+using enteron_test::kNaN;
+using enteron_test::all_finite;
 
-double norm3(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+constexpr double kToolsRadius = kBowelRadius;  // the default R, m
 
-bool all_finite(const std::vector<double>& values) {
-    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
-}
-
-std::vector<double> axis(const ent_scene* scene, uint32_t count = 200) {
+std::vector<double> tools_axis(const ent_scene* scene, uint32_t count = 200) {
     std::vector<double> points(3 * std::size_t{count});
     EXPECT_EQ(ent_scene_axis(scene, count, points.data()), ENT_OK) << ent_last_error();
     return points;
 }
 
 // A 0.4 m bowel along x, centred on the origin, resting on the plane z = 0 (settled 0.2 s).
-ScenePtr bowel_on_plane(int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER) {
+ScenePtr tools_bowel_on_plane(int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER) {
     BowelOnPlane bowel;
     bowel.integrator = integrator;
     bowel.settle_s = 0.2;
@@ -38,7 +37,7 @@ ScenePtr bowel_on_plane(int32_t integrator = ENT_INTEGRATOR_IMPLICIT_EULER) {
 
 // A vertical tool (identity orientation: the shaft rises from the tip) at tip `p`.
 // Direct mode (ENT_TOOL_MODE_DIRECT) where a test measures the capsule where it is put.
-int32_t add_tool(ent_scene* scene, const double p[3], double max_force = 5.0, int32_t mode = ENT_TOOL_MODE_PROXY) {
+int32_t tools_add_tool(ent_scene* scene, const double p[3], double max_force = 5.0, int32_t mode = ENT_TOOL_MODE_PROXY) {
     ent_tool_desc desc;
     ent_tool_desc_default(&desc);
     desc.max_force_N = max_force;
@@ -75,7 +74,7 @@ double mean_y_near(const std::vector<double>& points, double half_width) {
 }
 
 double z_at_middle(const ent_scene* scene) {
-    const std::vector<double> points = axis(scene, 101);
+    const std::vector<double> points = tools_axis(scene, 101);
     return points[3 * 50 + 2];
 }
 
@@ -123,11 +122,11 @@ double drive(ent_scene* scene, const double from[3], const double to[3], int ste
 TEST(Tools, APushMovesTheBowelAwayAndTheForceOpposesTheMotion) {
     for (int32_t integrator : kIntegrators) {
         SCOPED_TRACE(integrator_name(integrator));
-        ScenePtr scene = bowel_on_plane(integrator);
+        ScenePtr scene = tools_bowel_on_plane(integrator);
         ASSERT_TRUE(scene);
-        const double start[3] = {0.0, 0.05, kRadius}, end[3] = {0.0, -0.03, kRadius};
-        ASSERT_EQ(add_tool(scene.get(), start), 0);
-        EXPECT_GT(mean_y_near(axis(scene.get()), 0.02), -0.002);
+        const double start[3] = {0.0, 0.05, kToolsRadius}, end[3] = {0.0, -0.03, kToolsRadius};
+        ASSERT_EQ(tools_add_tool(scene.get(), start), 0);
+        EXPECT_GT(mean_y_near(tools_axis(scene.get()), 0.02), -0.002);
         double largest = 0.0;
         // 8 cm at 0.1 m/s, checking at every step that the force opposes the motion (-y).
         // The largest step-to-step change of the force: a haptic device renders it, so it
@@ -135,7 +134,7 @@ TEST(Tools, APushMovesTheBowelAwayAndTheForceOpposesTheMotion) {
         double previous_y = start[1], previous_force[3] = {0.0, 0.0, 0.0}, jump = 0.0;
         for (int i = 1; i <= 800; ++i) {
             const double a = i / 800.0;
-            const double p[3] = {0.0, (1 - a) * start[1] + a * end[1], kRadius};
+            const double p[3] = {0.0, (1 - a) * start[1] + a * end[1], kToolsRadius};
             ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK) << ent_last_error();
             ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << ent_last_error();
             const Wrench w = wrench(scene.get(), 0);
@@ -148,7 +147,7 @@ TEST(Tools, APushMovesTheBowelAwayAndTheForceOpposesTheMotion) {
             std::copy(w.force, w.force + 3, previous_force);
             previous_y = p[1];
         }
-        const std::vector<double> points = axis(scene.get());
+        const std::vector<double> points = tools_axis(scene.get());
         ASSERT_TRUE(all_finite(points));
         const double y = mean_y_near(points, 0.02);
         EXPECT_LT(y, end[1] - 0.005) << "the bowel near the tool is pushed beyond the tip";
@@ -162,29 +161,29 @@ TEST(Tools, APushMovesTheBowelAwayAndTheForceOpposesTheMotion) {
 
 TEST(Tools, TheForceNeverExceedsMaxForce) {
     // Crushing the bowel into the plane would need far more than 1 N.
-    ScenePtr scene = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
     ASSERT_TRUE(scene);
-    const double above[3] = {0.0, 0.0, 3 * kRadius}, down[3] = {0.0, 0.0, 0.0};
-    ASSERT_EQ(add_tool(scene.get(), above, 1.0), 0);
+    const double above[3] = {0.0, 0.0, 3 * kToolsRadius}, down[3] = {0.0, 0.0, 0.0};
+    ASSERT_EQ(tools_add_tool(scene.get(), above, 1.0), 0);
     double largest = 0.0;
     drive(scene.get(), above, down, 300, 1e-3, 1.0, &largest);
     drive(scene.get(), down, down, 100, 1e-3, 1.0, &largest);
     EXPECT_GT(largest, 0.99) << "the bound is reached";
-    EXPECT_TRUE(all_finite(axis(scene.get())));
+    EXPECT_TRUE(all_finite(tools_axis(scene.get())));
 }
 
 // The largest step-to-step change of the force on a tool pushed at 0.1 m/s into the bowel
 // with steps of dt.
 double largest_force_change(double dt) {
-    ScenePtr scene = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
     if (!scene) return -1.0;
-    const double start[3] = {0.0, 0.03, kRadius};
+    const double start[3] = {0.0, 0.03, kToolsRadius};
     // Direct: the bound below is the scene's contact stiffness times the tool's travel.
-    add_tool(scene.get(), start, 5.0, ENT_TOOL_MODE_DIRECT);
+    tools_add_tool(scene.get(), start, 5.0, ENT_TOOL_MODE_DIRECT);
     const int steps = int(std::lround(0.3 / dt));  // 3 cm in 0.3 s
     double previous[3] = {0.0, 0.0, 0.0}, jump = 0.0;
     for (int i = 1; i <= steps; ++i) {
-        const double p[3] = {0.0, start[1] - 0.1 * i * dt, kRadius};
+        const double p[3] = {0.0, start[1] - 0.1 * i * dt, kToolsRadius};
         EXPECT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK) << ent_last_error();
         EXPECT_EQ(ent_scene_step(scene.get(), dt), ENT_OK) << ent_last_error();
         const Wrench w = wrench(scene.get(), 0);
@@ -212,10 +211,10 @@ TEST(Tools, TheForceChangesSmoothlyFromStepToStep) {
 TEST(Tools, PushingInAndPullingBackDoesNoNetWorkOnTheTool) {
     for (int32_t integrator : kIntegrators) {
         SCOPED_TRACE(integrator_name(integrator));
-        ScenePtr scene = bowel_on_plane(integrator);
+        ScenePtr scene = tools_bowel_on_plane(integrator);
         ASSERT_TRUE(scene);
-        const double out[3] = {0.0, 0.04, kRadius}, in[3] = {0.0, 0.0, kRadius};
-        ASSERT_EQ(add_tool(scene.get(), out), 0);
+        const double out[3] = {0.0, 0.04, kToolsRadius}, in[3] = {0.0, 0.0, kToolsRadius};
+        ASSERT_EQ(tools_add_tool(scene.get(), out), 0);
         double largest = 0.0;
         const double work_in = drive(scene.get(), out, in, 400, 1e-3, 5.0, &largest);
         const double work_out = drive(scene.get(), in, out, 400, 1e-3, 5.0, &largest);
@@ -230,11 +229,11 @@ TEST(Tools, PushingInAndPullingBackDoesNoNetWorkOnTheTool) {
 // ---- grasp ----------------------------------------------------------------------------------
 
 TEST(Tools, AGraspLiftsTheBowelAndAReleaseDropsIt) {
-    ScenePtr scene = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
     ASSERT_TRUE(scene);
-    const double touch[3] = {0.0, 0.0, 2 * kRadius + 0.004}, high[3] = {0.0, 0.0, 0.1};
+    const double touch[3] = {0.0, 0.0, 2 * kToolsRadius + 0.004}, high[3] = {0.0, 0.0, 0.1};
     // Direct: the tip is where it is put, 1 mm into the bowel (the proxy would rest on it).
-    ASSERT_EQ(add_tool(scene.get(), touch, 5.0, ENT_TOOL_MODE_DIRECT), 0);
+    ASSERT_EQ(tools_add_tool(scene.get(), touch, 5.0, ENT_TOOL_MODE_DIRECT), 0);
     EXPECT_EQ(grasping(scene.get(), 0), 0);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     const Wrench before = wrench(scene.get(), 0);
@@ -254,7 +253,7 @@ TEST(Tools, AGraspLiftsTheBowelAndAReleaseDropsIt) {
     EXPECT_EQ(grasping(scene.get(), 0), 1);
     const double lifted = z_at_middle(scene.get());
     // It hangs below the tip by the two radii and the spring's stretch under its weight.
-    EXPECT_GT(lifted, high[2] - (0.005 + kRadius) - 0.01) << "the held point follows the tip";
+    EXPECT_GT(lifted, high[2] - (0.005 + kToolsRadius) - 0.01) << "the held point follows the tip";
     EXPECT_LT(wrench(scene.get(), 0).force[2], -0.1) << "the bowel's weight pulls the tool down";
 
     ASSERT_EQ(ent_tool_release(scene.get(), 0), ENT_OK) << ent_last_error();
@@ -263,28 +262,28 @@ TEST(Tools, AGraspLiftsTheBowelAndAReleaseDropsIt) {
     EXPECT_EQ(grasping(scene.get(), 0), 0);
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 599));
     const double dropped = z_at_middle(scene.get());
-    EXPECT_LT(dropped, 2 * kRadius) << "released, it falls back to the plane";
+    EXPECT_LT(dropped, 2 * kToolsRadius) << "released, it falls back to the plane";
     EXPECT_NEAR(norm3(wrench(scene.get(), 0).force), 0.0, 1e-12);
     std::cout << "[ grasp ] lifted to " << lifted << " m, dropped to " << dropped << " m, largest |F| " << largest
               << " N\n";
 }
 
 TEST(Tools, AGraspOutOfReachHoldsNothing) {
-    ScenePtr scene = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
     ASSERT_TRUE(scene);
     const double far[3] = {0.0, 0.0, 0.2};
-    ASSERT_EQ(add_tool(scene.get(), far), 0);
+    ASSERT_EQ(tools_add_tool(scene.get(), far), 0);
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK) << ent_last_error();
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     EXPECT_EQ(grasping(scene.get(), 0), 0);
 }
 
 TEST(Tools, AnOverPullSlipsAndIsReportedReleased) {
-    ScenePtr scene = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
     ASSERT_TRUE(scene);
     // The grasp may pull 0.3 N: less than the weight of the half bowel it would lift.
-    const double touch[3] = {0.0, 0.0, 2 * kRadius + 0.004}, high[3] = {0.0, 0.0, 0.3};
-    ASSERT_EQ(add_tool(scene.get(), touch, 0.3), 0);
+    const double touch[3] = {0.0, 0.0, 2 * kToolsRadius + 0.004}, high[3] = {0.0, 0.0, 0.3};
+    ASSERT_EQ(tools_add_tool(scene.get(), touch, 0.3), 0);
     ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK) << ent_last_error();
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     ASSERT_EQ(grasping(scene.get(), 0), 1);
@@ -302,9 +301,9 @@ TEST(Tools, AnOverPullSlipsAndIsReportedReleased) {
     }
     EXPECT_TRUE(slipped) << "the grasp should have slipped";
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 300));
-    const std::vector<double> points = axis(scene.get());
+    const std::vector<double> points = tools_axis(scene.get());
     EXPECT_TRUE(all_finite(points));
-    EXPECT_LT(z_at_middle(scene.get()), 2 * kRadius) << "the slipped bowel falls back";
+    EXPECT_LT(z_at_middle(scene.get()), 2 * kToolsRadius) << "the slipped bowel falls back";
     std::cout << "[ slip ] largest |F| before the slip " << largest << " N\n";
 }
 
@@ -314,10 +313,10 @@ TEST(Tools, AGraspSlipsWhateverTheJump) {
     // still reported held, because the guard counted the energy of the spring the slip had
     // let go of (9 J, past the 3 J the tool's motion may bring in).
     for (double jump : {0.1, 0.3, 1.0, 3.0}) {
-        ScenePtr scene = bowel_on_plane();
+        ScenePtr scene = tools_bowel_on_plane();
         ASSERT_TRUE(scene);
-        const double touch[3] = {0.0, 0.0, 2 * kRadius + 0.004};
-        ASSERT_EQ(add_tool(scene.get(), touch), 0);
+        const double touch[3] = {0.0, 0.0, 2 * kToolsRadius + 0.004};
+        ASSERT_EQ(tools_add_tool(scene.get(), touch), 0);
         ASSERT_EQ(ent_tool_grasp(scene.get(), 0), ENT_OK) << ent_last_error();
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
         ASSERT_EQ(grasping(scene.get(), 0), 1);
@@ -326,7 +325,7 @@ TEST(Tools, AGraspSlipsWhateverTheJump) {
         ASSERT_EQ(ent_scene_step(scene.get(), 1e-3), ENT_OK) << "jump " << jump << " m: " << ent_last_error();
         EXPECT_EQ(grasping(scene.get(), 0), 0) << "jump " << jump << " m: the grasp slipped";
         EXPECT_TRUE(step_n(scene.get(), 1e-3, 100)) << "jump " << jump << " m";
-        EXPECT_TRUE(all_finite(axis(scene.get())));
+        EXPECT_TRUE(all_finite(tools_axis(scene.get())));
     }
 }
 
@@ -335,21 +334,21 @@ TEST(Tools, AGraspSlipsWhateverTheJump) {
 TEST(Tools, AFastToolSweepsTheBowelInsteadOfPassingThrough) {
     // 2 m/s across the bowel, given as frames of 1/30 s (67 mm, over five bowel diameters),
     // so only the motion through the substeps can catch the bowel.
-    ScenePtr scene = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
     ASSERT_TRUE(scene);
-    const double start[3] = {0.0, 0.1, kRadius};
-    ASSERT_EQ(add_tool(scene.get(), start, 50.0), 0);
+    const double start[3] = {0.0, 0.1, kToolsRadius};
+    ASSERT_EQ(tools_add_tool(scene.get(), start, 50.0), 0);
     const double dt = 1.0 / 30.0;
     double y = start[1];
     double penetration = 0.0;
     for (int frame = 0; frame < 6; ++frame) {
         y -= 2.0 * dt;
-        const double p[3] = {0.0, y, kRadius};
+        const double p[3] = {0.0, y, kToolsRadius};
         ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, p, kIdentity), ENT_OK) << ent_last_error();
         ASSERT_EQ(ent_scene_step(scene.get(), dt), ENT_OK) << ent_last_error();
         penetration = std::max(penetration, stats(scene.get()).max_penetration_m);
     }
-    const std::vector<double> points = axis(scene.get());
+    const std::vector<double> points = tools_axis(scene.get());
     ASSERT_TRUE(all_finite(points));
     // The material middle of the bowel, where the tool struck, is carried ahead of the tool
     // (not left behind it, as a tool that jumped through would leave it). The legs may
@@ -381,15 +380,15 @@ TEST(Tools, NoToolNoCallsAndToolContactsCountInTheStats) {
     EXPECT_EQ(stats(scene.get()).contacts, 0u);
 
     // A tool pressed onto the free bowel (no gravity, no environment): its contacts alone.
-    const double p[3] = {0.0, 0.0, kRadius + 0.004};
-    ASSERT_EQ(add_tool(scene.get(), p, 5.0, ENT_TOOL_MODE_DIRECT), 0);  // penetration where it is put
+    const double p[3] = {0.0, 0.0, kToolsRadius + 0.004};
+    ASSERT_EQ(tools_add_tool(scene.get(), p, 5.0, ENT_TOOL_MODE_DIRECT), 0);  // penetration where it is put
     ASSERT_TRUE(step_n(scene.get(), 1e-3, 1));
     e = effect_stats(scene.get(), ENT_EFFECT_TOOLS);
     EXPECT_EQ(e.enabled, 1);
     EXPECT_GE(e.calls, 1u);
     const ent_stats s = stats(scene.get());
     EXPECT_GT(s.contacts, 0u);
-    EXPECT_NEAR(s.max_penetration_m, (kRadius + 0.005) - (kRadius + 0.004), 2e-4);
+    EXPECT_NEAR(s.max_penetration_m, (kToolsRadius + 0.005) - (kToolsRadius + 0.004), 2e-4);
     EXPECT_STREQ(ent_effect_name(ENT_EFFECT_TOOLS), "tools");
 }
 
@@ -399,10 +398,10 @@ TEST(Tools, NoToolNoCallsAndToolContactsCountInTheStats) {
 TEST(Tools, AProxyInContactCountsItsSolvesInTheStats) {
     for (const int32_t mode : {ENT_TOOL_MODE_PROXY, ENT_TOOL_MODE_DIRECT}) {
         SCOPED_TRACE(mode == ENT_TOOL_MODE_PROXY ? "proxy" : "direct");
-        ScenePtr scene = bowel_on_plane();
+        ScenePtr scene = tools_bowel_on_plane();
         ASSERT_TRUE(scene);
-        const double above[3] = {0.0, 0.0, 3.0 * kRadius}, into[3] = {0.0, 0.0, 1.2 * kRadius};
-        ASSERT_EQ(add_tool(scene.get(), above, 5.0, mode), 0);
+        const double above[3] = {0.0, 0.0, 3.0 * kToolsRadius}, into[3] = {0.0, 0.0, 1.2 * kToolsRadius};
+        ASSERT_EQ(tools_add_tool(scene.get(), above, 5.0, mode), 0);
         uint32_t most_iterations = 0;
         for (int i = 1; i <= 50; ++i) {
             const double a = i / 50.0;
@@ -436,15 +435,15 @@ TEST(Tools, ANonUnitQuaternionIsNormalisedAndTheShaftFollowsLocalZ) {
     const double unit[4] = {half, half, 0.0, 0.0}, scaled[4] = {3 * half, 3 * half, 0.0, 0.0};
     std::vector<double> results[2];
     for (int k = 0; k < 2; ++k) {
-        ScenePtr scene = bowel_on_plane();
+        ScenePtr scene = tools_bowel_on_plane();
         ASSERT_TRUE(scene);
         ent_tool_desc desc;
         ent_tool_desc_default(&desc);
         desc.position_m[1] = 0.1;  // the shaft runs from y = 0.1 to y = -0.2 across the bowel
-        desc.position_m[2] = 3 * kRadius;
+        desc.position_m[2] = 3 * kToolsRadius;
         std::memcpy(desc.orientation_wxyz, k == 0 ? unit : scaled, sizeof unit);
         ASSERT_EQ(ent_tool_add(scene.get(), &desc, nullptr), ENT_OK) << ent_last_error();
-        const double low[3] = {0.0, 0.1, 1.5 * kRadius};
+        const double low[3] = {0.0, 0.1, 1.5 * kToolsRadius};
         ASSERT_EQ(ent_tool_set_pose(scene.get(), 0, low, k == 0 ? unit : scaled), ENT_OK) << ent_last_error();
         ASSERT_TRUE(step_n(scene.get(), 1e-3, 50));
         const Wrench w = wrench(scene.get(), 0);
@@ -503,12 +502,12 @@ TEST(Tools, BadJsonToolsAreRefusedWithTheirPath) {
 // ---- bad input ------------------------------------------------------------------------------
 
 TEST(Tools, BadInputReturnsAStatusAndChangesNothing) {
-    ScenePtr scene = bowel_on_plane();
-    ScenePtr twin = bowel_on_plane();
+    ScenePtr scene = tools_bowel_on_plane();
+    ScenePtr twin = tools_bowel_on_plane();
     ASSERT_TRUE(scene && twin);
-    const double p[3] = {0.0, 0.02, kRadius};
-    ASSERT_EQ(add_tool(scene.get(), p), 0);
-    ASSERT_EQ(add_tool(twin.get(), p), 0);
+    const double p[3] = {0.0, 0.02, kToolsRadius};
+    ASSERT_EQ(tools_add_tool(scene.get(), p), 0);
+    ASSERT_EQ(tools_add_tool(twin.get(), p), 0);
     double f[3], t[3];
     int32_t held = 0;
     const double nan_p[3] = {0.0, kNaN, 0.0};

@@ -18,21 +18,21 @@ using namespace capi_test;
 
 namespace {
 
-constexpr double kDt = 0.01;
-constexpr double kGravity = 9.81;
+constexpr double kUnstableDt = 0.01;
+constexpr double kUnstableGravity = 9.81;
 constexpr double kDrag = 3.0;
-constexpr double kDensity = 0.3;
-constexpr double kLength = 1.0;
+constexpr double kUnstableDensity = 0.3;
+constexpr double kUnstableLength = 1.0;
 
 ScenePtr falling_scene(double max_speed, uint32_t max_subdivisions) {
     ent_scene_desc desc = default_desc();
     desc.effects = ENT_EFFECT_BIT(ENT_EFFECT_GRAVITY) | ENT_EFFECT_BIT(ENT_EFFECT_DAMPING);
     desc.control_points = 10;
-    desc.length_m = kLength;
-    desc.linear_density_kg_per_m = kDensity;
+    desc.length_m = kUnstableLength;
+    desc.linear_density_kg_per_m = kUnstableDensity;
     desc.shape = ENT_SHAPE_LINE;
     desc.integrator = ENT_INTEGRATOR_SYMPLECTIC_EULER;
-    desc.timestep_s = kDt;
+    desc.timestep_s = kUnstableDt;
     desc.drag_N_s_per_m2 = kDrag;
     desc.stretch_damping_N_s = 0.0;
     desc.bend_damping_N_m2_s = 0.0;
@@ -42,9 +42,9 @@ ScenePtr falling_scene(double max_speed, uint32_t max_subdivisions) {
 }
 
 double speed_after_one_step(int substeps) {
-    const double gamma = kDrag / kDensity;
-    const double h = kDt / substeps;
-    return kGravity / gamma * (1.0 - std::pow(1.0 - h * gamma, substeps));
+    const double gamma = kDrag / kUnstableDensity;
+    const double h = kUnstableDt / substeps;
+    return kUnstableGravity / gamma * (1.0 - std::pow(1.0 - h * gamma, substeps));
 }
 
 TEST(Unstable, TheClosedFormSpeedsStraddleTheLimit) {
@@ -58,7 +58,7 @@ TEST(Unstable, WithoutALimitOneStepIsOneSubstep) {
     ScenePtr scene = falling_scene(50.0, 4);
     ASSERT_TRUE(scene);
     EXPECT_EQ(stats(scene.get()).last_step_attempts, 0u) << "no step yet";
-    ASSERT_EQ(ent_scene_step(scene.get(), kDt), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_scene_step(scene.get(), kUnstableDt), ENT_OK) << ent_last_error();
     const ent_stats s = stats(scene.get());
     EXPECT_EQ(s.substeps, 1u);
     EXPECT_EQ(s.rollbacks, 0u);
@@ -73,14 +73,14 @@ TEST(Unstable, WithoutALimitOneStepIsOneSubstep) {
     EXPECT_EQ(s.proxy_unbalanced_solves, 0u);
     EXPECT_EQ(s.full_contact_searches, 0u) << "no self-contact";
     const double v = speed_after_one_step(1);
-    const double ke = 0.5 * kDensity * kLength * v * v;
+    const double ke = 0.5 * kUnstableDensity * kUnstableLength * v * v;
     EXPECT_NEAR(s.kinetic_energy_J, ke, 1e-9 * ke);
 }
 
 TEST(Unstable, ARejectedStepIsRetriedWithHalvedSubsteps) {
     ScenePtr scene = falling_scene(0.097, 4);
     ASSERT_TRUE(scene);
-    ASSERT_EQ(ent_scene_step(scene.get(), kDt), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_scene_step(scene.get(), kUnstableDt), ENT_OK) << ent_last_error();
     const ent_stats s = stats(scene.get());
     EXPECT_EQ(s.steps, 1u);
     EXPECT_EQ(s.rollbacks, 1u);
@@ -88,17 +88,17 @@ TEST(Unstable, ARejectedStepIsRetriedWithHalvedSubsteps) {
     EXPECT_EQ(s.last_step_attempts, 2u);
     EXPECT_EQ(s.last_step_substeps, 3u) << "the rejected attempt's substep counts";
     EXPECT_EQ(s.subdivided_steps, 1u);
-    EXPECT_NEAR(s.time_s, kDt, 1e-15);
+    EXPECT_NEAR(s.time_s, kUnstableDt, 1e-15);
     // The published state is the two-substep one.
     const double v = speed_after_one_step(2);
-    const double ke = 0.5 * kDensity * kLength * v * v;
+    const double ke = 0.5 * kUnstableDensity * kUnstableLength * v * v;
     EXPECT_NEAR(s.kinetic_energy_J, ke, 1e-9 * ke);
 }
 
 void expect_unstable_step_changes_nothing(ent_scene* scene, uint32_t max_subdivisions) {
     const std::vector<double> q0 = control_points(scene);
     const ent_stats s0 = stats(scene);
-    EXPECT_EQ(ent_scene_step(scene, kDt), ENT_ERROR_UNSTABLE);
+    EXPECT_EQ(ent_scene_step(scene, kUnstableDt), ENT_ERROR_UNSTABLE);
     EXPECT_NE(std::string(ent_last_error()), "");
     const std::vector<double> q1 = control_points(scene);
     const ent_stats s1 = stats(scene);
@@ -129,7 +129,7 @@ TEST(Unstable, AStepTheGuardCannotSaveChangesNothing) {
     // substep: 0.0956 * 0.9 + 0.0981 = 0.184 m/s with one substep, about as much with 16.
     ScenePtr scene = falling_scene(0.097, 4);
     ASSERT_TRUE(scene);
-    ASSERT_EQ(ent_scene_step(scene.get(), kDt), ENT_OK) << ent_last_error();
+    ASSERT_EQ(ent_scene_step(scene.get(), kUnstableDt), ENT_OK) << ent_last_error();
     expect_unstable_step_changes_nothing(scene.get(), 4);
     // The scene is still usable and still where it was: with the limit lifted, a twin that
     // never failed would continue identically (checked in BadInputs); here, at least, a

@@ -17,6 +17,8 @@
 #                        (tests/docs/check_cpp_api.py)
 #   docs.spdx            every source file starts with its SPDX licence line
 #                        (tests/docs/check_spdx.py; --fix adds it)
+#   docs.unity_names     no two files of a target define functions of one name that a unity
+#                        build would merge into one overload set (tests/docs/check_unity_names.py)
 # Python 3's standard library only.
 if(EXISTS /usr/bin/python3)
   set(_enteron_docs_python /usr/bin/python3)
@@ -38,11 +40,13 @@ add_test(NAME docs.cpp_api COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_
          --root ${PROJECT_SOURCE_DIR})
 add_test(NAME docs.spdx COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_spdx.py
          --root ${PROJECT_SOURCE_DIR})
+add_test(NAME docs.unity_names COMMAND ${_enteron_docs_python} ${CMAKE_CURRENT_LIST_DIR}/check_unity_names.py
+         --root ${PROJECT_SOURCE_DIR})
 add_executable(enteron_scene_table ${CMAKE_CURRENT_LIST_DIR}/print_scene_table.cpp)
 target_link_libraries(enteron_scene_table PRIVATE enteron_core nlohmann_json::nlohmann_json)
 target_compile_options(enteron_scene_table PRIVATE ${ENTERON_WARNINGS})
 add_test(NAME docs.json_keys COMMAND ${_enteron_check_docs} --table $<TARGET_FILE:enteron_scene_table> json_keys)
 set(_enteron_docs_tests docs.header docs.links docs.doc_paths docs.readme_example docs.unit_tests docs.cpp_api docs.spdx
-    docs.json_keys)
+    docs.json_keys docs.unity_names)
 set_tests_properties(${_enteron_docs_tests} PROPERTIES LABELS docs TIMEOUT 60
   ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)

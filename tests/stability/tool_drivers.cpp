@@ -9,7 +9,7 @@ namespace stability {
 
 namespace {
 
-constexpr int32_t kTool = 0;
+constexpr int32_t kDrivenTool = 0;
 const double kVertical[4] = {1.0, 0.0, 0.0, 0.0};  // identity: the shaft rises from the tip
 const double kFailed = std::numeric_limits<double>::quiet_NaN();
 
@@ -32,12 +32,12 @@ protected:
             step_[c] = target[c] - tip_[c];
             tip_[c] = target[c];
         }
-        return ent_tool_set_pose(scene, kTool, tip_, kVertical) == ENT_OK;
+        return ent_tool_set_pose(scene, kDrivenTool, tip_, kVertical) == ENT_OK;
     }
     // F . dx with F = minus the wrench: the force on the bowel at the end of the step.
     double wrench_work(const ent_scene* scene) const {
         double force[3], torque[3];
-        if (ent_tool_wrench(scene, kTool, force, torque) != ENT_OK) return kFailed;
+        if (ent_tool_wrench(scene, kDrivenTool, force, torque) != ENT_OK) return kFailed;
         return -(force[0] * step_[0] + force[1] * step_[1] + force[2] * step_[2]);
     }
     double step_length() const { return std::sqrt(step_[0] * step_[0] + step_[1] * step_[1] + step_[2] * step_[2]); }
@@ -78,7 +78,7 @@ public:
             // A new cycle: release, and back down to the next control point in one step.
             cycle_ = cycle;
             grasped_ = false;
-            if (ent_tool_release(scene, kTool) != ENT_OK) return false;
+            if (ent_tool_release(scene, kDrivenTool) != ENT_OK) return false;
             double point[3];
             if (!control_point(scene, static_cast<uint32_t>(37 * cycle + 11), point)) return false;
             point[2] += 0.015;  // resting on the bowel (R + tool radius = 17.5 mm)
@@ -86,7 +86,7 @@ public:
         }
         if (!grasped_) {
             grasped_ = true;
-            if (ent_tool_grasp(scene, kTool) != ENT_OK) return false;
+            if (ent_tool_grasp(scene, kDrivenTool) != ENT_OK) return false;
         }
         double target[3] = {tip_[0], tip_[1], tip_[2]};
         if (in_cycle < pull_) target[2] += speed_ * (time_s - last_time_);

@@ -121,7 +121,22 @@ namespace Enteron
         public static Scene FromDescription(SceneDesc desc, double[] shapePointsXyz = null, uint[] pinnedPoints = null,
                                             Callbacks callbacks = null)
         {
+            return FromDescriptionAndProfiles(desc, null, shapePointsXyz, pinnedPoints, callbacks);
+        }
+
+        /// <summary>
+        /// A scene from a C description with properties along the length (see <see cref="Profiles"/>;
+        /// null: none); the other parameters as in <see cref="FromDescription"/>.
+        /// </summary>
+        public static Scene FromDescriptionAndProfiles(SceneDesc desc, Profiles profiles, double[] shapePointsXyz = null,
+                                            uint[] pinnedPoints = null, Callbacks callbacks = null)
+        {
             Library.EnsureCompatible();
+            profiles = profiles ?? new Profiles();
+            Arguments.Multiple(profiles.Radius?.Length ?? 0, 2, "profiles.Radius", "pair");
+            Arguments.Multiple(profiles.LinearDensity?.Length ?? 0, 2, "profiles.LinearDensity", "pair");
+            Arguments.Multiple(profiles.StretchStiffness?.Length ?? 0, 2, "profiles.StretchStiffness", "pair");
+            Arguments.Multiple(profiles.BendStiffness?.Length ?? 0, 2, "profiles.BendStiffness", "pair");
             if (shapePointsXyz != null)
             {
                 Arguments.Multiple(shapePointsXyz.Length, 3, "shapePointsXyz", "point");
@@ -133,7 +148,19 @@ namespace Enteron
             Status status;
             fixed (double* points = shapePointsXyz)
             fixed (uint* pinned = pinnedPoints)
+            fixed (double* radius = profiles.Radius)
+            fixed (double* density = profiles.LinearDensity)
+            fixed (double* stretch = profiles.StretchStiffness)
+            fixed (double* bend = profiles.BendStiffness)
             {
+                desc.radius_profile_m = (IntPtr)radius;
+                desc.radius_profile_count = (uint)((profiles.Radius?.Length ?? 0) / 2);
+                desc.linear_density_profile_kg_per_m = (IntPtr)density;
+                desc.linear_density_profile_count = (uint)((profiles.LinearDensity?.Length ?? 0) / 2);
+                desc.stretch_stiffness_profile_N = (IntPtr)stretch;
+                desc.stretch_stiffness_profile_count = (uint)((profiles.StretchStiffness?.Length ?? 0) / 2);
+                desc.bend_stiffness_profile_N_m2 = (IntPtr)bend;
+                desc.bend_stiffness_profile_count = (uint)((profiles.BendStiffness?.Length ?? 0) / 2);
                 desc.shape_points_xyz_m = (IntPtr)points;
                 desc.pinned_points = (IntPtr)pinned;
                 desc.pinned_point_count = pinnedPoints == null ? 0u : (uint)pinnedPoints.Length;

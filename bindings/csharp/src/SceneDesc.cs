@@ -101,6 +101,16 @@ namespace Enteron
         /// <summary>ends clamped: held in place with their tangent (default none)</summary>
         public PinnedEnds clamped_ends;
 
+        // The properties along the length: set through Scene.FromDescription's profiles.
+        internal IntPtr radius_profile_m;
+        internal uint radius_profile_count;
+        internal IntPtr linear_density_profile_kg_per_m;
+        internal uint linear_density_profile_count;
+        internal IntPtr stretch_stiffness_profile_N;
+        internal uint stretch_stiffness_profile_count;
+        internal IntPtr bend_stiffness_profile_N_m2;
+        internal uint bend_stiffness_profile_count;
+
         /// <summary>The library's defaults (ent_scene_desc_init), struct_size set.</summary>
         public static SceneDesc Default()
         {
@@ -109,5 +119,22 @@ namespace Enteron
                                    "ent_scene_desc_init");
             return desc;
         }
+    }
+
+    /// <summary>
+    /// Properties along the length (docs/scene-json.md, intestine.radius_profile), each in
+    /// place of its constant in <see cref="SceneDesc"/>: pairs s (m, arc length from the first
+    /// end at rest), value, flattened (s0, v0, s1, v1, ...); null: the constant.
+    /// </summary>
+    public sealed class Profiles
+    {
+        /// <summary>(s m, radius m) pairs.</summary>
+        public double[] Radius;
+        /// <summary>(s m, mass per metre kg/m) pairs.</summary>
+        public double[] LinearDensity;
+        /// <summary>(s m, axial stiffness EA N) pairs.</summary>
+        public double[] StretchStiffness;
+        /// <summary>(s m, bending stiffness EI N m^2) pairs.</summary>
+        public double[] BendStiffness;
     }
 }

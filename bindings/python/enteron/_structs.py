@@ -66,6 +66,14 @@ class ent_scene_desc(ctypes.Structure):
         ("contact_friction", ctypes.c_double),
         ("contact_slip_speed_m_per_s", ctypes.c_double),
         ("clamped_ends", ctypes.c_int32),
+        ("radius_profile_m", ctypes.POINTER(ctypes.c_double)),
+        ("radius_profile_count", ctypes.c_uint32),
+        ("linear_density_profile_kg_per_m", ctypes.POINTER(ctypes.c_double)),
+        ("linear_density_profile_count", ctypes.c_uint32),
+        ("stretch_stiffness_profile_N", ctypes.POINTER(ctypes.c_double)),
+        ("stretch_stiffness_profile_count", ctypes.c_uint32),
+        ("bend_stiffness_profile_N_m2", ctypes.POINTER(ctypes.c_double)),
+        ("bend_stiffness_profile_count", ctypes.c_uint32),
     ]
 
 

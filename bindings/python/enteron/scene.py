@@ -152,11 +152,20 @@ class SceneDesc:
                           n: a control_points given too must be n, and length_m to 0, the
                           length of the spline through them, unless length_m is given)
       pinned_points       an iterable of control point indices (sets pinned_point_count)
+      radius_profile_m, linear_density_profile_kg_per_m, stretch_stiffness_profile_N,
+      bend_stiffness_profile_N_m2
+                          an (n, 2) array-like of pairs (s m, value): a property along the
+                          length in place of its constant (sets its _count)
     The arrays are copied and kept with the description until the scene is created. The
     count of an array always comes from the array; an integer field that its C type cannot
     hold (control_points=2**32 + 10) raises OverflowError naming the field, never wraps."""
 
-    _ARRAYS = ("shape_points_xyz_m", "pinned_points")
+    # The profiles (ent_scene_desc: a pointer to pairs, and their count), by pointer field.
+    _PROFILES = {"radius_profile_m": "radius_profile_count",
+                 "linear_density_profile_kg_per_m": "linear_density_profile_count",
+                 "stretch_stiffness_profile_N": "stretch_stiffness_profile_count",
+                 "bend_stiffness_profile_N_m2": "bend_stiffness_profile_count"}
+    _ARRAYS = ("shape_points_xyz_m", "pinned_points") + tuple(_PROFILES)
 
     def __init__(self, **fields):
         self.struct = s.ent_scene_desc()
@@ -171,7 +180,8 @@ class SceneDesc:
         if name in ("struct", "_keep", "_given"):
             object.__setattr__(self, name, value)
             return
-        known = {field[0] for field in s.ent_scene_desc._fields_} - {"struct_size", "callbacks", "pinned_point_count"}
+        known = ({field[0] for field in s.ent_scene_desc._fields_} - {"struct_size", "callbacks", "pinned_point_count"}
+                 - set(self._PROFILES.values()))
         if name not in known:
             raise AttributeError("ent_scene_desc has no settable field %r" % name)
         if name == "effects" and not isinstance(value, int):
@@ -195,6 +205,16 @@ class SceneDesc:
             self.struct.control_points = count
             if "length_m" not in self._given:
                 self.struct.length_m = 0.0  # the length of the spline through them: it starts at rest
+            return
+        if name in self._PROFILES:
+            pairs = np.ascontiguousarray(value, dtype=np.float64)
+            if pairs.ndim != 2 or pairs.shape[1] != 2:
+                raise ValueError("SceneDesc.%s must be an (n, 2) array of pairs (s in m, value), got shape %s"
+                                 % (name, pairs.shape))
+            count = _fields.checked_integer(ctypes.c_uint32, len(pairs), "the pair count of " + name)
+            self._keep[name] = pairs
+            setattr(self.struct, name, pairs.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
+            setattr(self.struct, self._PROFILES[name], count)
             return
         if name == "pinned_points":
             indices = np.array([_fields.checked_integer(ctypes.c_uint32, index, "SceneDesc.pinned_points[%d]" % n)
@@ -236,6 +256,12 @@ class SceneDesc:
         if self.struct.pinned_point_count != len(indices) or (len(indices) and pointer != indices.ctypes.data):
             raise ValueError("SceneDesc.pinned_point_count is %d but pinned_points holds %d indices: set "
                              "pinned_points instead" % (self.struct.pinned_point_count, len(indices)))
+        for name, count_name in self._PROFILES.items():
+            pairs = self._keep.get(name, np.zeros((0, 2)))
+            pointer = ctypes.cast(getattr(self.struct, name), ctypes.c_void_p).value
+            if getattr(self.struct, count_name) != len(pairs) or (len(pairs) and pointer != pairs.ctypes.data):
+                raise ValueError("SceneDesc.%s is %d but %s holds %d pairs: set %s instead"
+                                 % (count_name, getattr(self.struct, count_name), name, len(pairs), name))
         return self.struct
 
     def __getattr__(self, name):

@@ -145,6 +145,32 @@ class SameAsTheCApi(unittest.TestCase):
                 results.append(moved)
         np.testing.assert_array_equal(results[0], results[1])
 
+    def test_profiles_from_c_and_json_make_the_same_scene(self):
+        # A tube narrowing from 3.5 to 1.3 cm and lighter towards its end, falling: the same
+        # trajectory whether the profiles come through ent_scene_desc or JSON.
+        radius = [[0.0, 0.035], [1.5, 0.013]]
+        density = [[0.0, 0.6], [0.5, 0.4], [1.5, 0.3]]
+        desc = enteron.SceneDesc(length_m=1.5, control_points=31, shape=enteron.SHAPE_LINE,
+                                 radius_profile_m=radius, linear_density_profile_kg_per_m=density,
+                                 effects={"gravity", "stretch", "bend", "damping"})
+        text = {"intestine": {"length": 1.5, "control_points": 31, "shape": {"kind": "line"},
+                              "radius_profile": radius, "linear_density_profile": density},
+                "gravity": [0, 0, -9.81], "damping": {}}
+        trajectories = []
+        for scene in (enteron.Scene(desc=desc), enteron.Scene(text)):
+            with scene:
+                for _ in range(50):
+                    scene.step(H)
+                trajectories.append(scene.control_points())
+        np.testing.assert_array_equal(trajectories[0], trajectories[1])
+        self.assertLess(trajectories[0][-1, 2], -1e-3)  # it fell
+        with self.assertRaisesRegex(ValueError, "radius_profile_m must be an \\(n, 2\\) array"):
+            enteron.SceneDesc(radius_profile_m=[0.0, 0.035, 1.5])
+        with self.assertRaises(enteron.Error) as caught:
+            enteron.Scene(desc=enteron.SceneDesc(length_m=1.5, radius_profile_m=[[0, 0.03], [1, 0.02]]))
+        self.assertEqual(caught.exception.status, enteron.ERROR_INVALID_ARGUMENT)
+        self.assertIn("radius_profile_m[2] must be >= length_m", caught.exception.message)
+
     def test_clamped_end_keeps_its_point_and_tangent(self):
         # A horizontal cantilever clamped at its first end sags, its end tangent
         # (4 q1 - 3 q0 - q2) / 2 staying horizontal; the same through JSON's pinned.clamped.

@@ -9,9 +9,7 @@ namespace viewer {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-Eigen::Vector3d point(const std::vector<double>& axis_m, std::size_t i) {
+Eigen::Vector3d axis_tube_point(const std::vector<double>& axis_m, std::size_t i) {
     return Eigen::Vector3d(axis_m[3 * i], axis_m[3 * i + 1], axis_m[3 * i + 2]);
 }
 
@@ -39,7 +37,7 @@ void make_axis_tube(const std::vector<double>& axis_m, double radius_m, int side
     };
     // The tangent at a point: the central difference (one-sided at the ends).
     auto tangent = [&](std::size_t i) {
-        const Eigen::Vector3d d = point(axis_m, i + 1 < points ? i + 1 : i) - point(axis_m, i > 0 ? i - 1 : i);
+        const Eigen::Vector3d d = axis_tube_point(axis_m, i + 1 < points ? i + 1 : i) - axis_tube_point(axis_m, i > 0 ? i - 1 : i);
         return d.norm() > 0.0 ? Eigen::Vector3d(d.normalized()) : Eigen::Vector3d::UnitX();
     };
     Eigen::Vector3d t = tangent(0);
@@ -54,9 +52,9 @@ void make_axis_tube(const std::vector<double>& axis_m, double radius_m, int side
         const Eigen::Vector3d binormal = t.cross(normal);
         const double u = static_cast<double>(i) / static_cast<double>(points - 1);  // evenly in arc length
         for (int k = 0; k < sides; ++k) {
-            const double angle = 2.0 * kPi * k / sides;
+            const double angle = 2.0 * EIGEN_PI * k / sides;
             const Eigen::Vector3d n = std::cos(angle) * normal + std::sin(angle) * binormal;
-            add_vertex(point(axis_m, i) + radius_m * n, n, u);
+            add_vertex(axis_tube_point(axis_m, i) + radius_m * n, n, u);
         }
     }
     const auto side = static_cast<std::uint32_t>(sides);
@@ -72,7 +70,7 @@ void make_axis_tube(const std::vector<double>& axis_m, double radius_m, int side
         const std::size_t i = end == 0 ? 0 : points - 1;
         const Eigen::Vector3d n = end == 0 ? Eigen::Vector3d(-tangent(0)) : tangent(points - 1);
         const auto centre = static_cast<std::uint32_t>(out.axis_u.size());
-        add_vertex(point(axis_m, i), n, end == 0 ? 0.0 : 1.0);
+        add_vertex(axis_tube_point(axis_m, i), n, end == 0 ? 0.0 : 1.0);
         const auto ring = static_cast<std::uint32_t>(i) * side;
         for (std::uint32_t k = 0; k < side; ++k) {
             const std::uint32_t a = ring + k, b = ring + (k + 1) % side;

@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <exception>
 
+#include "../clock.h"
+
 namespace viewer {
 
 std::string describe_tool_status(std::int32_t status) {
@@ -53,11 +55,6 @@ namespace {
 constexpr std::int64_t kRestartTicks = 1000;
 // More tools than this in a message is not a scene anyone simulates.
 constexpr std::int32_t kMostTools = 64;
-
-std::int64_t steady_ns() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
 
 bool finite(const double* values, std::size_t count) {
     return std::all_of(values, values + count, [](double v) { return std::isfinite(v); });

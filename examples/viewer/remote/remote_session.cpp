@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "../clock.h"
 #include "axis_samples.h"
 
 namespace viewer {
@@ -16,11 +17,6 @@ constexpr int kTubeSides = 16;
 // A server mesh older than this (simulated time behind the state) gives way to the tube,
 // which follows every state: a server that stopped sending meshes does not freeze the bowel.
 constexpr double kMeshKeptS = 1.0;
-
-std::int64_t steady_ns() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
 
 bool same_command(const ToolCommands& a, const ToolCommands& b, std::uint32_t i) {
     return a.grasp[i] == b.grasp[i] &&

@@ -24,7 +24,7 @@ namespace enteron::lcm {
 namespace {
 
 template <class Message>
-std::vector<uint8_t> encode(const Message& m, int (*size_of)(const Message*),
+std::vector<uint8_t> message_check_encode(const Message& m, int (*size_of)(const Message*),
                             int (*encoder)(void*, int, int, const Message*)) {
     std::vector<uint8_t> bytes(static_cast<std::size_t>(size_of(&m)));
     EXPECT_EQ(encoder(bytes.data(), 0, static_cast<int>(bytes.size()), &m), static_cast<int>(bytes.size()));
@@ -53,12 +53,12 @@ std::vector<uint8_t> scene_state(int n, int m, int t) {
     message.control_points_m = control_rows.data();
     message.axis_m = axis_rows.data();
     message.tools = tools.data();
-    return encode(message, enteron_scene_state_t_encoded_size, enteron_scene_state_t_encode);
+    return message_check_encode(message, enteron_scene_state_t_encoded_size, enteron_scene_state_t_encode);
 }
 
 TEST(MessageCheck, FixedSizeMessagesMustBeExact) {
     enteron_tool_command_t command{};
-    const std::vector<uint8_t> bytes = encode(command, enteron_tool_command_t_encoded_size, enteron_tool_command_t_encode);
+    const std::vector<uint8_t> bytes = message_check_encode(command, enteron_tool_command_t_encoded_size, enteron_tool_command_t_encode);
     EXPECT_EQ(bytes.size(), tool_command_size());
     EXPECT_EQ(check(ENT_LCM_TOOL_COMMAND, bytes), MessageFault::none);
     std::vector<uint8_t> longer = bytes;
@@ -71,7 +71,7 @@ TEST(MessageCheck, FixedSizeMessagesMustBeExact) {
     EXPECT_EQ(check(ENT_LCM_TOOL_COMMAND, other), MessageFault::fingerprint);
     // Another type's bytes, padded to the command's size, are still not a command.
     enteron_journal_step_t step{};
-    std::vector<uint8_t> step_bytes = encode(step, enteron_journal_step_t_encoded_size, enteron_journal_step_t_encode);
+    std::vector<uint8_t> step_bytes = message_check_encode(step, enteron_journal_step_t_encoded_size, enteron_journal_step_t_encode);
     step_bytes.resize(bytes.size());
     EXPECT_EQ(check(ENT_LCM_TOOL_COMMAND, step_bytes), MessageFault::fingerprint);
 }
@@ -116,7 +116,7 @@ TEST(MessageCheck, MeshCountsAgreeWithItsArrays) {
     mesh.normals = normal_rows.data();
     mesh.axis_u = u.data();
     mesh.triangles = triangle_rows.data();
-    std::vector<uint8_t> bytes = encode(mesh, enteron_mesh_t_encoded_size, enteron_mesh_t_encode);
+    std::vector<uint8_t> bytes = message_check_encode(mesh, enteron_mesh_t_encoded_size, enteron_mesh_t_encode);
     EXPECT_EQ(check(ENT_LCM_MESH, bytes), MessageFault::none);
     bytes.resize(bytes.size() - 12);  // one triangle short
     EXPECT_EQ(check(ENT_LCM_MESH, bytes), MessageFault::size);
@@ -126,7 +126,7 @@ TEST(MessageCheck, TheSessionStringMustFillTheRestAndEndWithItsNul) {
     std::string json = "{\"intestine\": {}}";
     enteron_session_t session{};
     session.scene_json = json.data();
-    std::vector<uint8_t> bytes = encode(session, enteron_session_t_encoded_size, enteron_session_t_encode);
+    std::vector<uint8_t> bytes = message_check_encode(session, enteron_session_t_encoded_size, enteron_session_t_encode);
     EXPECT_EQ(check(ENT_LCM_SESSION, bytes), MessageFault::none);
     std::vector<uint8_t> no_nul = bytes;
     no_nul.back() = '}';

@@ -10,7 +10,7 @@
 namespace enteron::lcm {
 namespace {
 
-constexpr int64_t kMs = 1000000;  // ns
+constexpr int64_t kToolSafetyMs = 1000000;  // ns
 
 class ToolSafetyTest : public ::testing::Test {
 protected:
@@ -42,7 +42,7 @@ protected:
 
 TEST_F(ToolSafetyTest, WithoutACommandTheToolStaysAndRendersNothing) {
     ToolSafety safety = make();
-    safety.plan(nullptr, 5 * kMs);
+    safety.plan(nullptr, 5 * kToolSafetyMs);
     render(safety, 3.0);
     EXPECT_EQ(safety.status() & kNoCommand, kNoCommand);
     EXPECT_FALSE(safety.live());
@@ -56,37 +56,37 @@ TEST_F(ToolSafetyTest, TheWatchdogTripsOnceJustAfterItsTimeAndHoldsTheTool) {
     const AcceptedCommand first = command(1, 0, Eigen::Vector3d(0.0005, 0, 0));
     safety.plan(&first, 0);
     for (int64_t t = 1; t <= 30; ++t) {
-        const ToolSafety::Plan plan = safety.plan(nullptr, t * kMs);
+        const ToolSafety::Plan plan = safety.plan(nullptr, t * kToolSafetyMs);
         render(safety, 1.0);
         ASSERT_TRUE(safety.live()) << "a command 30 ms old is not stale yet (t = " << t << " ms)";
         ASSERT_FALSE(plan.watchdog_tripped);
     }
     const Eigen::Vector3d held = safety.applied_pose().position;
-    const ToolSafety::Plan plan = safety.plan(nullptr, 30 * kMs + 1);
+    const ToolSafety::Plan plan = safety.plan(nullptr, 30 * kToolSafetyMs + 1);
     render(safety, 1.0);
     EXPECT_TRUE(plan.watchdog_tripped);
     EXPECT_EQ(safety.status() & kStale, kStale);
     EXPECT_EQ(safety.device_force(), Eigen::Vector3d::Zero());
     EXPECT_EQ(safety.applied_pose().position, held);
-    EXPECT_FALSE(safety.plan(nullptr, 40 * kMs).watchdog_tripped) << "it trips once per stop";
+    EXPECT_FALSE(safety.plan(nullptr, 40 * kToolSafetyMs).watchdog_tripped) << "it trips once per stop";
 }
 
 TEST_F(ToolSafetyTest, TheForceRampsInOverTheRampTimeAndAgainAfterEveryStop) {
     ToolSafety safety = make();
     const double force = 2.0;
     for (int tick = 1; tick <= 150; ++tick) {
-        const AcceptedCommand c = command(tick, tick * kMs);
-        safety.plan(&c, tick * kMs);
+        const AcceptedCommand c = command(tick, tick * kToolSafetyMs);
+        safety.plan(&c, tick * kToolSafetyMs);
         render(safety, force);
         const double expected = force * std::min(1.0, tick * limits.tick_s / limits.force_ramp_s);
         ASSERT_NEAR(safety.device_force().x(), expected, 1e-12) << "tick " << tick;
     }
     // 50 ms of silence: stale, zero; then commands again: from zero, one tick's share first.
-    safety.plan(nullptr, 200 * kMs);
+    safety.plan(nullptr, 200 * kToolSafetyMs);
     render(safety, force);
     EXPECT_EQ(safety.device_force().x(), 0.0);
-    const AcceptedCommand back = command(151, 201 * kMs);
-    safety.plan(&back, 201 * kMs);
+    const AcceptedCommand back = command(151, 201 * kToolSafetyMs);
+    safety.plan(&back, 201 * kToolSafetyMs);
     render(safety, force);
     EXPECT_NEAR(safety.device_force().x(), force * limits.tick_s / limits.force_ramp_s, 1e-12);
 }
@@ -98,10 +98,10 @@ TEST_F(ToolSafetyTest, TheToolMovesTowardAJumpAtItsSpeedBound) {
     safety.plan(&c, 0);
     EXPECT_NEAR(safety.applied_pose().position.x(), 0.001, 1e-15);
     EXPECT_EQ(safety.status() & kRateLimited, kRateLimited);
-    for (int tick = 2; tick <= 99; ++tick) safety.plan(nullptr, tick * kMs / 10);
+    for (int tick = 2; tick <= 99; ++tick) safety.plan(nullptr, tick * kToolSafetyMs / 10);
     EXPECT_NEAR(safety.applied_pose().position.x(), 0.099, 1e-12);
-    safety.plan(nullptr, 10 * kMs);
-    safety.plan(nullptr, 11 * kMs);
+    safety.plan(nullptr, 10 * kToolSafetyMs);
+    safety.plan(nullptr, 11 * kToolSafetyMs);
     EXPECT_EQ(safety.applied_pose().position, target);
     EXPECT_EQ(safety.status() & kRateLimited, 0);
 }
@@ -152,11 +152,11 @@ TEST_F(ToolSafetyTest, AForceTheLibraryBoundedIsSaidLimited) {
     safety.plan(&c, 0);
     render(safety, 5.0);
     EXPECT_EQ(safety.status() & kForceLimited, 0) << "at max_force but not bounded: the contacts asked 5 N";
-    safety.plan(nullptr, kMs);
+    safety.plan(nullptr, kToolSafetyMs);
     render(safety, 5.0, true, true);
     EXPECT_EQ(safety.status() & kForceLimited, kForceLimited);
     EXPECT_NEAR(safety.device_force().x(), 5.0, 1e-12) << "rendered as given";
-    safety.plan(nullptr, 2 * kMs);
+    safety.plan(nullptr, 2 * kToolSafetyMs);
     render(safety, 5.0, false, true);
     EXPECT_EQ(safety.status() & kForceLimited, 0) << "a failed step renders nothing: nothing is limited";
 }
@@ -182,8 +182,8 @@ TEST_F(ToolSafetyTest, TheDeadmanRendersZeroAndTheForceRampsBackWhenPressed) {
     EXPECT_EQ(safety.device_force(), Eigen::Vector3d::Zero());
     EXPECT_EQ(safety.status() & kForceDisabled, kForceDisabled);
     EXPECT_TRUE(safety.live()) << "the tool still follows the device";
-    const AcceptedCommand pressed = command(2, kMs);
-    safety.plan(&pressed, kMs);
+    const AcceptedCommand pressed = command(2, kToolSafetyMs);
+    safety.plan(&pressed, kToolSafetyMs);
     render(safety, 2.0);
     EXPECT_NEAR(safety.device_force().x(), 2.0 * limits.tick_s / limits.force_ramp_s, 1e-12);
 }
@@ -193,13 +193,13 @@ TEST_F(ToolSafetyTest, GraspIsALevelActedOnOnlyWhenItChanges) {
     AcceptedCommand c = command(1, 0, Eigen::Vector3d::Zero(), true);
     EXPECT_EQ(safety.plan(&c, 0).grasp_action, GraspAction::grasp);
     c.seq = 2;
-    EXPECT_EQ(safety.plan(&c, kMs).grasp_action, GraspAction::none) << "still closed: no new grasp";
-    EXPECT_EQ(safety.plan(nullptr, 2 * kMs).grasp_action, GraspAction::none);
+    EXPECT_EQ(safety.plan(&c, kToolSafetyMs).grasp_action, GraspAction::none) << "still closed: no new grasp";
+    EXPECT_EQ(safety.plan(nullptr, 2 * kToolSafetyMs).grasp_action, GraspAction::none);
     // Stale: an opening that is not there is not acted on; the jaws stay closed.
-    EXPECT_EQ(safety.plan(nullptr, 100 * kMs).grasp_action, GraspAction::none);
+    EXPECT_EQ(safety.plan(nullptr, 100 * kToolSafetyMs).grasp_action, GraspAction::none);
     EXPECT_TRUE(safety.jaws_closed());
-    AcceptedCommand open = command(3, 101 * kMs, Eigen::Vector3d::Zero(), false);
-    EXPECT_EQ(safety.plan(&open, 101 * kMs).grasp_action, GraspAction::release);
+    AcceptedCommand open = command(3, 101 * kToolSafetyMs, Eigen::Vector3d::Zero(), false);
+    EXPECT_EQ(safety.plan(&open, 101 * kToolSafetyMs).grasp_action, GraspAction::release);
     EXPECT_FALSE(safety.jaws_closed());
 }
 

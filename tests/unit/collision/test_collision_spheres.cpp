@@ -201,3 +201,34 @@ TEST(CollisionSpheres, VelocitiesFollowTheVelocitiesAndThePlacement) {
 }
 
 }  // namespace
+
+namespace {
+
+// With a radius profile, each sphere takes the radius at its place and the spacing follows
+// it: neighbours are spacing x R(s) / R_max apart at rest, the same fraction of their radius
+// everywhere (to first order in the change of R over one spacing).
+TEST(CollisionSpheres, ARadiusProfileSetsEachSphereAndItsSpacing) {
+    const enteron::spline::LengthProfile profile({0.0, 0.035, 1.5, 0.013}, std::pmr::new_delete_resource());
+    const std::size_t n = 61;
+    const std::vector<double> q = straight(n, 1.5 / double(n - 1));
+    CollisionSpheres spheres(n, 1.5, 0.5 * 0.035, 0.035, std::pmr::new_delete_resource(), {}, &profile);
+    spheres.update(q.data());
+    EXPECT_EQ(spheres.radius(), 0.035);
+    // The count: R_max x integral of ds / R(s), in steps of the spacing; more than the
+    // 1.5 / 0.0175 + 1 = 87 spheres of the largest radius everywhere.
+    const double span = 0.035 * 1.5 * std::log(0.013 / 0.035) / (0.013 - 0.035);
+    EXPECT_EQ(spheres.size(), static_cast<std::size_t>(std::llround(span / 0.0175)) + 1);
+    EXPECT_GT(spheres.size(), 87u);
+    EXPECT_NEAR(spheres[0].center.x(), 0.0, 1e-12);
+    EXPECT_NEAR(spheres[spheres.size() - 1].center.x(), 1.5, 1e-12);
+    for (std::size_t j = 0; j < spheres.size(); ++j) {
+        const double s = spheres[j].center.x();  // a straight axis at rest: x is the arc length
+        EXPECT_NEAR(spheres[j].radius, profile.at(s), 1e-12) << j;
+        if (j == 0) continue;
+        const double gap = s - spheres[j - 1].center.x();
+        const double middle_radius = profile.at(s - 0.5 * gap);
+        EXPECT_NEAR(gap / middle_radius, spheres.rest_spacing() / 0.035, 1e-3) << j;
+    }
+}
+
+}  // namespace

@@ -20,7 +20,7 @@ namespace enteron::collision {
 namespace {
 
 using collision_test::to_triangle_mesh;
-std::pmr::memory_resource* const kMemory = std::pmr::new_delete_resource();
+std::pmr::memory_resource* const kMeshDistanceFieldMemory = std::pmr::new_delete_resource();
 
 // The signed distance of an axis-aligned box about the origin with half extents h.
 double box_distance(const Vec3& p, const Vec3& h) {
@@ -32,7 +32,7 @@ TEST(MeshDistanceField, ASphereMeshsFieldIsTheSpheresDistance) {
     const double c[3] = {0.0, 0.0, 0.0}, r = 0.05;
     const TriangleMesh mesh = to_triangle_mesh(test_meshes::icosphere(c, r, 3));  // 1280 faces
     const double voxel = 0.002;
-    const MeshDistanceField field(mesh, {voxel, 0.015, false}, kMemory);
+    const MeshDistanceField field(mesh, {voxel, 0.015, false}, kMeshDistanceFieldMemory);
     EXPECT_TRUE(field.report().closed());
     EXPECT_FALSE(field.outside_is_solid());
     // The inscribed mesh lies inside the sphere by at most r (1 - cos(edge angle / 2)).
@@ -62,8 +62,8 @@ TEST(MeshDistanceField, ABoxsFieldIsTheBoxsDistanceAndExactWhenRefined) {
     const Vec3 h(half[0], half[1], half[2]);
     const TriangleMesh mesh = to_triangle_mesh(test_meshes::box(c, half, false));
     const double voxel = 0.004;
-    const MeshDistanceField coarse(mesh, {voxel, 0.012, false}, kMemory);
-    const MeshDistanceField refined(mesh, {voxel, 0.012, true}, kMemory);
+    const MeshDistanceField coarse(mesh, {voxel, 0.012, false}, kMeshDistanceFieldMemory);
+    const MeshDistanceField refined(mesh, {voxel, 0.012, true}, kMeshDistanceFieldMemory);
     std::mt19937_64 random(8);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int near = 0, exact = 0;
@@ -93,7 +93,7 @@ TEST(MeshDistanceField, ABoxsFieldIsTheBoxsDistanceAndExactWhenRefined) {
 
 TEST(MeshDistanceField, ACavityIsSolidOutsideItsWalls) {
     const double c[3] = {0.0, 0.0, 0.0}, half[3] = {0.1, 0.08, 0.06};
-    const MeshDistanceField cavity(to_triangle_mesh(test_meshes::box(c, half, true)), {0.005, 0.015, false}, kMemory);
+    const MeshDistanceField cavity(to_triangle_mesh(test_meshes::box(c, half, true)), {0.005, 0.015, false}, kMeshDistanceFieldMemory);
     EXPECT_TRUE(cavity.outside_is_solid());
     EXPECT_GT(cavity.report().signed_volume, -1.0);
     EXPECT_LT(cavity.report().signed_volume, 0.0);
@@ -104,7 +104,7 @@ TEST(MeshDistanceField, ACavityIsSolidOutsideItsWalls) {
 TEST(MeshDistanceField, AGridTooFineIsRefinedWithTheVoxelSizeThatFits) {
     const double c[3] = {0.0, 0.0, 0.0}, half[3] = {0.5, 0.5, 0.5};
     try {
-        MeshDistanceField field(to_triangle_mesh(test_meshes::box(c, half, false)), {1e-4, 0.01, false}, kMemory);
+        MeshDistanceField field(to_triangle_mesh(test_meshes::box(c, half, false)), {1e-4, 0.01, false}, kMeshDistanceFieldMemory);
         ADD_FAILURE() << "built " << field.voxel_count() << " voxels";
     } catch (const Error& error) {
         EXPECT_EQ(error.code(), ErrorCode::invalid_argument);

@@ -19,21 +19,21 @@ namespace {
 
 using collision_test::brute_force_closest;
 using collision_test::to_triangle_mesh;
-std::pmr::memory_resource* const kMemory = std::pmr::new_delete_resource();
+std::pmr::memory_resource* const kMeshTopologyMemory = std::pmr::new_delete_resource();
 const double kCenter[3] = {0.0, 0.0, 0.0};
 const double kHalf[3] = {0.04, 0.03, 0.02};
 
 TEST(MeshTopology, ClosedMeshesAreClosedWithTheirVolumes) {
     const TriangleMesh box = to_triangle_mesh(test_meshes::box(kCenter, kHalf, false));
-    const MeshTopology box_topology(box, kMemory);
+    const MeshTopology box_topology(box, kMeshTopologyMemory);
     EXPECT_TRUE(box_topology.report().closed());
     EXPECT_NEAR(box_topology.report().signed_volume, 8.0 * kHalf[0] * kHalf[1] * kHalf[2], 1e-15);
     const TriangleMesh cavity = to_triangle_mesh(test_meshes::box(kCenter, kHalf, true));
-    const MeshTopology cavity_topology(cavity, kMemory);
+    const MeshTopology cavity_topology(cavity, kMeshTopologyMemory);
     EXPECT_TRUE(cavity_topology.report().closed());
     EXPECT_NEAR(cavity_topology.report().signed_volume, -8.0 * kHalf[0] * kHalf[1] * kHalf[2], 1e-15);
     const TriangleMesh sphere = to_triangle_mesh(test_meshes::icosphere(kCenter, 0.05, 3));
-    const MeshTopology sphere_topology(sphere, kMemory);
+    const MeshTopology sphere_topology(sphere, kMeshTopologyMemory);
     EXPECT_TRUE(sphere_topology.report().closed());
     const double ball = 4.0 / 3.0 * kPi * std::pow(0.05, 3);
     EXPECT_LT(sphere_topology.report().signed_volume, ball);
@@ -44,20 +44,20 @@ TEST(MeshTopology, OpenNonManifoldFlippedAndDegenerateAreCounted) {
     TriangleMesh sheet;  // a square of two triangles
     sheet.vertices = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
     sheet.indices = {0, 1, 2, 0, 2, 3};
-    const MeshTopology open(sheet, kMemory);
+    const MeshTopology open(sheet, kMeshTopologyMemory);
     EXPECT_EQ(open.report().open_edges, 4u);
     EXPECT_FALSE(open.report().closed());
     TriangleMesh fin = sheet;  // a third triangle on the diagonal, standing up
     fin.vertices.insert(fin.vertices.end(), {0.5, 0.5, 1.0});
     fin.indices.insert(fin.indices.end(), {0, 2, 4});
-    EXPECT_EQ(MeshTopology(fin, kMemory).report().nonmanifold_edges, 1u);
+    EXPECT_EQ(MeshTopology(fin, kMeshTopologyMemory).report().nonmanifold_edges, 1u);
     TriangleMesh flipped = to_triangle_mesh(test_meshes::box(kCenter, kHalf, false));
     std::swap(flipped.indices[1], flipped.indices[2]);
-    EXPECT_EQ(MeshTopology(flipped, kMemory).report().flipped_edges, 3u) << "its three edges";
+    EXPECT_EQ(MeshTopology(flipped, kMeshTopologyMemory).report().flipped_edges, 3u) << "its three edges";
     TriangleMesh degenerate = sheet;
     degenerate.vertices.insert(degenerate.vertices.end(), {2, 0, 0});
     degenerate.indices.insert(degenerate.indices.end(), {0, 1, 4});  // three points on a line
-    const MeshTopology with_sliver(degenerate, kMemory);
+    const MeshTopology with_sliver(degenerate, kMeshTopologyMemory);
     EXPECT_EQ(with_sliver.report().degenerate_triangles, 1u);
     EXPECT_FALSE(with_sliver.usable(2));
     EXPECT_TRUE(with_sliver.usable(0));
@@ -65,7 +65,7 @@ TEST(MeshTopology, OpenNonManifoldFlippedAndDegenerateAreCounted) {
 
 TEST(MeshTopology, PseudoNormalsOfAFaceAnEdgeAndACorner) {
     const TriangleMesh box = to_triangle_mesh(test_meshes::box(kCenter, kHalf, false));
-    const MeshTopology topology(box, kMemory);
+    const MeshTopology topology(box, kMeshTopologyMemory);
     // Beyond the +x face's middle, its edge with +y, and the (+,+,+) corner.
     const struct {
         Vec3 p;
@@ -82,7 +82,7 @@ TEST(MeshTopology, PseudoNormalsOfAFaceAnEdgeAndACorner) {
 
 TEST(MeshTopology, ThePseudoNormalsSignTellsInsideFromOutside) {
     const TriangleMesh box = to_triangle_mesh(test_meshes::box(kCenter, kHalf, false));
-    const MeshTopology topology(box, kMemory);
+    const MeshTopology topology(box, kMeshTopologyMemory);
     std::mt19937_64 random(23);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int inside = 0, outside = 0;

@@ -28,7 +28,7 @@ void expect_normal(const ObstacleContact& c, double x, double y, double z, doubl
     EXPECT_NEAR(c.normal[2], z, tolerance);
 }
 
-Obstacle box(double cx, double cy, double cz, double hx, double hy, double hz) {
+Obstacle obstacle_box(double cx, double cy, double cz, double hx, double hy, double hz) {
     Obstacle o;
     o.kind = ObstacleKind::box_inside;
     o.center = {cx, cy, cz};
@@ -37,7 +37,7 @@ Obstacle box(double cx, double cy, double cz, double hx, double hy, double hz) {
 }
 
 TEST(Obstacle, BoxInsideWallsAndCorner) {
-    const Obstacle o = box(1.0, 2.0, 3.0, 0.1, 0.2, 0.3);
+    const Obstacle o = obstacle_box(1.0, 2.0, 3.0, 0.1, 0.2, 0.3);
     const double r = 0.01;
     // Well inside: nothing. Touching a wall exactly: nothing (depth 0).
     const Vec3 inside(1.0, 2.0, 3.0);

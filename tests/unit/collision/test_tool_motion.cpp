@@ -16,7 +16,7 @@ using namespace enteron::collision;
 
 constexpr double kLength = 0.3;  // m
 
-ToolPose pose(const Vec3& tip, double angle_about_y) {
+ToolPose tool_motion_pose(const Vec3& tip, double angle_about_y) {
     ToolPose p;
     p.position = tip;
     p.orientation = {std::cos(0.5 * angle_about_y), 0.0, std::sin(0.5 * angle_about_y), 0.0};
@@ -24,7 +24,7 @@ ToolPose pose(const Vec3& tip, double angle_about_y) {
 }
 
 TEST(ToolMotion, TheShaftGoesFromTheStartPoseToTheTargetWithinTheStep) {
-    const ToolPose from = pose(Vec3(0.0, 0.0, 0.1), 0.0), to = pose(Vec3(0.02, -0.01, 0.08), 0.5);
+    const ToolPose from = tool_motion_pose(Vec3(0.0, 0.0, 0.1), 0.0), to = tool_motion_pose(Vec3(0.02, -0.01, 0.08), 0.5);
     const StepSpan step{2.0, 1e-3};
     const ShaftAt start = commanded_shaft(from, to, kLength, step, 2.0);
     const ShaftAt end = commanded_shaft(from, to, kLength, step, 2.0 + 1e-3);
@@ -44,7 +44,7 @@ TEST(ToolMotion, TheShaftGoesFromTheStartPoseToTheTargetWithinTheStep) {
 }
 
 TEST(ToolMotion, BetweenStepsTheShaftRestsAtTheStartPose) {
-    const ToolPose from = pose(Vec3(0.0, 0.0, 0.1), 0.2), to = pose(Vec3(0.05, 0.0, 0.1), 0.2);
+    const ToolPose from = tool_motion_pose(Vec3(0.0, 0.0, 0.1), 0.2), to = tool_motion_pose(Vec3(0.05, 0.0, 0.1), 0.2);
     const ShaftAt at = commanded_shaft(from, to, kLength, StepSpan{}, 5.0);
     EXPECT_EQ(at.tip, from.position);
     EXPECT_EQ(at.tip_velocity, Vec3::Zero());
@@ -55,8 +55,8 @@ TEST(ToolMotion, BetweenStepsTheShaftRestsAtTheStartPose) {
 
 TEST(ToolMotion, ItTurnsAlongTheShorterArc) {
     // The same rotation as q and -q: the target written with the opposite sign.
-    const ToolPose from = pose(Vec3::Zero(), 0.2);
-    ToolPose to = pose(Vec3::Zero(), 0.6);
+    const ToolPose from = tool_motion_pose(Vec3::Zero(), 0.2);
+    ToolPose to = tool_motion_pose(Vec3::Zero(), 0.6);
     for (double& c : to.orientation) c = -c;
     const StepSpan step{0.0, 1.0};
     const ShaftAt half = commanded_shaft(from, to, kLength, step, 0.5);
@@ -67,15 +67,15 @@ TEST(ToolMotion, ItTurnsAlongTheShorterArc) {
 }
 
 TEST(ToolMotion, TheTravelIsWhatTheEndsAndTheTurnCover) {
-    const ToolPose from = pose(Vec3(0.0, 0.0, 0.0), 0.0);
+    const ToolPose from = tool_motion_pose(Vec3(0.0, 0.0, 0.0), 0.0);
     // Moved 3 cm along x, no turn: both ends go 3 cm, the turn nothing.
-    ShaftTravel travel = commanded_travel(from, pose(Vec3(0.03, 0.0, 0.0), 0.0), kLength);
+    ShaftTravel travel = commanded_travel(from, tool_motion_pose(Vec3(0.03, 0.0, 0.0), 0.0), kLength);
     EXPECT_NEAR(travel.tip, 0.03, 1e-15);
     EXPECT_NEAR(travel.tail, 0.03, 1e-15);
     EXPECT_NEAR(travel.turn, 0.0, 1e-15);
     // Turned by a about its tip: the tail moves along the chord 2 L sin(a / 2).
     const double a = 0.3;
-    travel = commanded_travel(from, pose(Vec3::Zero(), a), kLength);
+    travel = commanded_travel(from, tool_motion_pose(Vec3::Zero(), a), kLength);
     EXPECT_NEAR(travel.tip, 0.0, 1e-15);
     EXPECT_NEAR(travel.tail, 2.0 * kLength * std::sin(0.5 * a), 1e-12);
     EXPECT_NEAR(travel.turn, travel.tail, 1e-15);

@@ -19,9 +19,9 @@ using enteron::Vec3;
 using enteron::mechanics::State;
 using namespace enteron::collision;
 
-constexpr std::size_t kPoints = 6;
+constexpr std::size_t kToolOutputsPoints = 6;
 
-enteron::spline::SegmentWeights weights() {
+enteron::spline::SegmentWeights tool_outputs_weights() {
     enteron::spline::SegmentWeights w;
     w.first = 1;
     w.w = {-0.0625, 0.5625, 0.5625, -0.0625};
@@ -29,9 +29,9 @@ enteron::spline::SegmentWeights weights() {
 }
 
 // One sphere contact of a tool, pushing the bowel down with 2 N, and its list.
-struct Bench {
-    Bench() : state(std::pmr::new_delete_resource()), force(3 * kPoints, 0.0) {
-        state.resize(kPoints);
+struct ToolOutputsBench {
+    ToolOutputsBench() : state(std::pmr::new_delete_resource()), force(3 * kToolOutputsPoints, 0.0) {
+        state.resize(kToolOutputsPoints);
         contacts.reserve(2);
         contacts.begin(force.data(), nullptr);
         ContactForce law{};
@@ -39,7 +39,7 @@ struct Bench {
         law.normal_force = 2.0;
         law.stiffness = 1000.0;
         law.damping = 0.5;
-        contacts.add_sphere(3, weights(), 0.002, law, -Vec3::UnitZ(), 1.0, Vec3::Zero(), Vec3::Zero(),
+        contacts.add_sphere(3, tool_outputs_weights(), 0.002, law, -Vec3::UnitZ(), 1.0, Vec3::Zero(), Vec3::Zero(),
                             Vec3(0.1, 0.0, 0.0));
         tool.evaluation.first_contact = 0;
         tool.evaluation.contact_count = 1;
@@ -54,7 +54,7 @@ struct Bench {
 };
 
 TEST(ToolOutputs, AnExplicitAttemptSumsWhatTheBowelReceivedTimesItsDuration) {
-    Bench bench;
+    ToolOutputsBench bench;
     add_evaluation_received(bench.tool, 0, bench.contacts, 0.25e-3, nullptr, Vec3::Zero(), bench.log);
     add_evaluation_received(bench.tool, 0, bench.contacts, 0.75e-3, nullptr, Vec3::Zero(), bench.log);
     const AttemptSums& sums = bench.tool.attempt;
@@ -72,12 +72,12 @@ TEST(ToolOutputs, AnExplicitAttemptSumsWhatTheBowelReceivedTimesItsDuration) {
 }
 
 TEST(ToolOutputs, AnImplicitEvaluationCountsTheLinearisedForceAtTheSubstepsEnd) {
-    Bench bench;
+    ToolOutputsBench bench;
     const double h = 1e-3;
     State after = bench.state;
     // Every control point 0.1 mm down and moving at 0.1 m/s down: the spring and the damper
     // of the contact give way by H dq + C dv.
-    for (std::size_t i = 0; i < kPoints; ++i) {
+    for (std::size_t i = 0; i < kToolOutputsPoints; ++i) {
         after.q[3 * i + 2] = -1e-4;
         after.v[3 * i + 2] = -0.1;
     }
@@ -90,7 +90,7 @@ TEST(ToolOutputs, AnImplicitEvaluationCountsTheLinearisedForceAtTheSubstepsEnd) 
 
 TEST(ToolOutputs, TheAcceptedWrenchIsMinusTheMeanForceWithinMaxForce) {
     for (const double max_force : {5.0, 1.5}) {
-        Bench bench;
+        ToolOutputsBench bench;
         bench.tool.settings.max_force = max_force;
         bench.tool.target.position = Vec3(0.0, 0.0, -0.001);  // the tool pressed down 1 mm
         add_evaluation_received(bench.tool, 0, bench.contacts, 1e-3, nullptr, Vec3::Zero(), bench.log);

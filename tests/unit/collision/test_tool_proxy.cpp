@@ -23,7 +23,7 @@ using enteron::collision::ProxyProblem;
 using enteron::collision::ProxyResult;
 using enteron::collision::ToolProxy;
 
-constexpr double kBowelRadius = 0.0125, kToolRadius = 0.005;
+constexpr double kProxyBowelRadius = 0.0125, kProxyToolRadius = 0.005;
 
 // A straight row of spheres along x at height 0 (a bowel's axis), moving at `velocity`.
 std::pmr::vector<ProxyCandidate> row(const Vec3& velocity) {
@@ -35,8 +35,8 @@ std::pmr::vector<ProxyCandidate> row(const Vec3& velocity) {
 ProxyProblem problem(const Vec3& target, double max_force) {
     ProxyProblem p;
     p.shaft = Vec3(0.0, 0.0, 0.3);  // vertical, rising from the tip
-    p.reach = kToolRadius + kBowelRadius;
-    p.contact.stiffness = enteron::collision::proxy_contact_stiffness(p.contact.stiffness, max_force, kBowelRadius);
+    p.reach = kProxyToolRadius + kProxyBowelRadius;
+    p.contact.stiffness = enteron::collision::proxy_contact_stiffness(p.contact.stiffness, max_force, kProxyBowelRadius);
     p.coupling_stiffness = 1000.0;
     p.coupling_damping = 1.0;
     p.max_force = max_force;
@@ -69,12 +69,12 @@ TEST(ToolProxy, PressedFarIntoTheBowelItStopsOnItsSurfaceWithinMaxForce) {
     const std::pmr::vector<ProxyCandidate> spheres = row(Vec3::Zero());
     for (double max_force : {5.0, 50.0}) {
         for (double speed : {0.05, 0.5, 5.0}) {
-            Vec3 start(0.001, 0.002, kToolRadius + kBowelRadius + 0.001);
+            Vec3 start(0.001, 0.002, kProxyToolRadius + kProxyBowelRadius + 0.001);
             double deepest = 0.0, largest = 0.0;
             ProxyResult r;
             for (int tick = 1; tick <= 300; ++tick) {
                 const double travel = speed * 1e-3 * std::min(tick, 200);
-                ProxyProblem p = problem(Vec3(start.x(), start.y(), kToolRadius + kBowelRadius - travel), max_force);
+                ProxyProblem p = problem(Vec3(start.x(), start.y(), kProxyToolRadius + kProxyBowelRadius - travel), max_force);
                 p.start = start;
                 p.target_velocity = Vec3(0.0, 0.0, tick <= 200 ? -speed : 0.0);
                 r = proxy.solve(p, spheres);
@@ -84,7 +84,7 @@ TEST(ToolProxy, PressedFarIntoTheBowelItStopsOnItsSurfaceWithinMaxForce) {
             }
             EXPECT_LE(largest, max_force * (1 + 1e-12));
             // Issue 18's bound: the tool's surface stays 0.8 R from the axis.
-            EXPECT_LT(deepest, 0.2 * kBowelRadius) << max_force << " N, " << speed << " m/s";
+            EXPECT_LT(deepest, 0.2 * kProxyBowelRadius) << max_force << " N, " << speed << " m/s";
             EXPECT_LT(r.residual, 1e-6 * max_force) << "balanced at rest";
         }
     }
@@ -99,7 +99,7 @@ TEST(ToolProxy, FromAColdStartFarInsideTheBowelItComesOutBalanced) {
     // left the proxy (as the tools effect does), finish the job within kTicks.
     constexpr int kTicks = 10;
     ToolProxy proxy(std::pmr::new_delete_resource());
-    const double reach = kToolRadius + kBowelRadius;
+    const double reach = kProxyToolRadius + kProxyBowelRadius;
     int cases = 0, first_solve = 0, most_ticks = 0;
     for (double max_force : {5.0, 50.0}) {
         for (const Vec3& velocity : {Vec3::Zero().eval(), Vec3(0.02, 0.0, -0.01)}) {
@@ -142,7 +142,7 @@ TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
         double max_force;
         Vec3 bowel_velocity;
     };
-    const double reach = kToolRadius + kBowelRadius;
+    const double reach = kProxyToolRadius + kProxyBowelRadius;
     const Case cases[] = {
         {"resting on the bowel", Vec3(0.001, 0.002, reach - 0.002), 50.0, Vec3::Zero()},
         {"between two spheres", Vec3(0.003, 0.001, reach - 0.003), 50.0, Vec3::Zero()},
@@ -183,11 +183,11 @@ TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
 TEST(ToolProxy, ABudgetThatRunsOutLeavesTheProxyOnTheBowelWithinMaxForceAndSaysSo) {
     ToolProxy proxy(std::pmr::new_delete_resource());
     const std::pmr::vector<ProxyCandidate> spheres = row(Vec3::Zero());
-    const double reach = kToolRadius + kBowelRadius;
+    const double reach = kProxyToolRadius + kProxyBowelRadius;
     const auto on_the_bowel = [&](const Vec3& tip) {
         double nearest = 1e9;
         for (const ProxyCandidate& s : spheres) nearest = std::min(nearest, (s.center - tip).norm());
-        return nearest > reach - 0.2 * kBowelRadius;
+        return nearest > reach - 0.2 * kProxyBowelRadius;
     };
     int unbalanced = 0;
     for (const ProxyBudget budget : {ProxyBudget{}, ProxyBudget{1, 10}, ProxyBudget{2, 0}, ProxyBudget{3, 1}}) {

@@ -30,10 +30,10 @@ ToolState vertical_tool(const Vec3& device, double max_force) {
     return tool;
 }
 
-using Bench = ToolLawBench<ProxyContacts>;
+using ToolProxyContactsBench = ToolLawBench<ProxyContacts>;
 
 TEST(ProxyContacts, PushedDeepTheProxyRestsOnTheSurfaceAndTheBowelGetsTheCouplingForce) {
-    Bench bench;
+    ToolProxyContactsBench bench;
     const double max_force = 3.0;
     ToolState tool = vertical_tool(Vec3(0.2, 0.0, -0.05), max_force);  // the device 5 cm into the bowel
     bench.evaluate(tool, nullptr);
@@ -50,7 +50,7 @@ TEST(ProxyContacts, PushedDeepTheProxyRestsOnTheSurfaceAndTheBowelGetsTheCouplin
 }
 
 TEST(ProxyContacts, InAnImplicitEvaluationTheProxyJoinsTheBorder) {
-    Bench bench;
+    ToolProxyContactsBench bench;
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     enteron::mechanics::SystemMatrix system(memory);
     system.resize(bench.axis.state.q.size());
@@ -68,7 +68,7 @@ TEST(ProxyContacts, InAnImplicitEvaluationTheProxyJoinsTheBorder) {
 }
 
 TEST(ProxyContacts, AGraspThatWouldNeedMoreThanMaxForceSlips) {
-    Bench bench;
+    ToolProxyContactsBench bench;
     ToolState tool = vertical_tool(Vec3(0.2, 0.0, 0.5), 1.0);  // the device half a metre up
     tool.proxy.position = {0.2, 0.0, 0.3};
     tool.grasp.holding = true;

@@ -30,18 +30,18 @@ using enteron::collision::ToolOutput;
 using enteron::collision::ToolPose;
 using enteron::collision::ToolsForce;
 
-constexpr double kToolRadius = 0.005;
-constexpr double kStep = 1e-3;  // s
+constexpr double kForceToolRadius = 0.005;
+constexpr double kForceStep = 1e-3;  // s
 
 // A straight bowel along x from 0 to 0.4 m at rest, and a tool lying along it above it.
-struct Bench {
-    Bench() : axis(straight(21, 0.02)), spheres(axis.make_spheres()), channels(memory), tools(spheres, contact, axis.state, channels, memory) {}
+struct ToolsForceBench {
+    ToolsForceBench() : axis(straight(21, 0.02)), spheres(axis.make_spheres()), channels(memory), tools(spheres, contact, axis.state, channels, memory) {}
 
     // A tool along +x from x = -0.1 to 0.5 (the whole bowel under its shaft), its axis
     // `height` above the bowel's.
     static ToolConfig lying_tool(double height, double max_force) {
         ToolConfig tool;
-        tool.settings.radius = kToolRadius;
+        tool.settings.radius = kForceToolRadius;
         tool.settings.length = 0.6;
         tool.settings.max_force = max_force;
         tool.pose.position = {-0.1, 0.0, height};
@@ -55,10 +55,10 @@ struct Bench {
     // the tool's output.
     std::vector<double> step(const enteron::mechanics::State& state, ToolOutput* output) {
         std::vector<double> force(state.q.size(), 0.0);
-        tools.take_commands(axis.state, kStep);
+        tools.take_commands(axis.state, kForceStep);
         tools.begin_attempt();
         tools.evaluate(state, force.data(), nullptr);
-        tools.evaluation_used(kStep, nullptr);  // one explicit evaluation over the whole step
+        tools.evaluation_used(kForceStep, nullptr);  // one explicit evaluation over the whole step
         tools.end_step(true);
         *output = channels.outputs()[0];
         return force;
@@ -83,8 +83,8 @@ Vec3 net_force(const std::vector<double>& force) {
 TEST(ToolsForce, TheWrenchIsMinusTheForceOnTheBowelAndNeverExceedsMaxForce) {
     const double max_force = 2.0;
     for (double depth : {1e-5, 1e-4, 1e-3, 5e-3, 1e-2}) {
-        Bench bench;
-        bench.tools.add_tool(Bench::lying_tool(kRadius + kToolRadius - depth, max_force));
+        ToolsForceBench bench;
+        bench.tools.add_tool(ToolsForceBench::lying_tool(kRadius + kForceToolRadius - depth, max_force));
         ToolOutput output;
         const Vec3 net = net_force(bench.step(bench.axis.state, &output));
         const Vec3 on_tool(output.wrench.force[0], output.wrench.force[1], output.wrench.force[2]);
@@ -109,7 +109,7 @@ TEST(ToolsForce, TheWrenchIsMinusTheForceOnTheBowelAndNeverExceedsMaxForce) {
 }
 
 TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
-    Bench bench;
+    ToolsForceBench bench;
     // A vertical tool (the identity pose) whose tip touches the bowel's middle from above.
     ToolConfig tool;
     tool.settings.max_force = 1.0;
@@ -125,9 +125,9 @@ TEST(ToolsForce, AGraspPulledPastMaxForceSlipsAddingNoForceAndNoEnergy) {
     lifted.position[2] += 0.3;
     bench.channels.mailbox(0)->post_pose(lifted);
     enteron::mechanics::State at_end = bench.axis.state;
-    at_end.time = bench.axis.state.time + kStep;  // where the tool has reached the new pose
+    at_end.time = bench.axis.state.time + kForceStep;  // where the tool has reached the new pose
     std::vector<double> force(at_end.q.size(), 0.0);
-    bench.tools.take_commands(bench.axis.state, kStep);
+    bench.tools.take_commands(bench.axis.state, kForceStep);
     bench.tools.begin_attempt();
     bench.tools.evaluate(at_end, force.data(), nullptr);
     // The grasp slipped: no force on the bowel (the tool is far above it) and no energy
@@ -145,7 +145,7 @@ struct Evaluated {
     enteron::Mat3 stiffness;
 };
 Evaluated evaluate_at(const ToolConfig& tool, const enteron::mechanics::State& state) {
-    Bench bench;
+    ToolsForceBench bench;
     bench.tools.add_tool(tool);
     std::vector<double> force(state.q.size(), 0.0);
     bench.tools.evaluate(state, force.data(), nullptr);
@@ -167,7 +167,7 @@ double stiffness_error(const ToolConfig& tool, const enteron::mechanics::State& 
 }
 
 TEST(ToolsForce, TheStiffnessOfADirectToolIsTheDerivativeOfItsForce) {
-    Bench bench;
+    ToolsForceBench bench;
     enteron::mechanics::State state = bench.axis.state;
     // The bowel bent a little and moving (friction and damping at work), so that normals
     // and slips differ from contact to contact.
@@ -190,7 +190,7 @@ TEST(ToolsForce, TheStiffnessOfADirectToolIsTheDerivativeOfItsForce) {
     slanted.pose.orientation = {std::cos(0.6), std::sin(0.6), 0.0, 0.0};
     slanted.pose.position = {0.21, 0.004, kRadius + vertical.settings.radius - 0.003};
     const Case cases[] = {{"one end", vertical}, {"bounded", bounded}, {"across", slanted},
-                          {"lying", Bench::lying_tool(kRadius + kToolRadius - 0.001, 100.0)}};
+                          {"lying", ToolsForceBench::lying_tool(kRadius + kForceToolRadius - 0.001, 100.0)}};
     for (const Case& c : cases) {
         const Evaluated at = evaluate_at(c.tool, state);
         ASSERT_GT(at.force.norm(), 0.0) << c.name;

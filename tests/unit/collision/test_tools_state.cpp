@@ -20,11 +20,11 @@ using namespace collision_test;
 using enteron::Vec3;
 using namespace enteron::collision;
 
-constexpr double kStep = 1e-3;  // s
+constexpr double kStateStep = 1e-3;  // s
 
 // A proxy tool pressing on a straight bowel and holding it, stepped explicitly.
-struct Bench {
-    explicit Bench(int tools = 1)
+struct ToolsStateBench {
+    explicit ToolsStateBench(int tools = 1)
         : axis(straight(21, 0.02)), spheres(axis.make_spheres()), channels(memory),
           effect(spheres, ContactParameters{}, axis.state, channels, memory) {
         for (int i = 0; i < tools; ++i) {
@@ -38,14 +38,14 @@ struct Bench {
         if (pose != nullptr) channels.mailbox(0)->post_pose(*pose);
         if (grasp) channels.mailbox(0)->post_grasp(ToolMailbox::Grasp::grasp);
         std::vector<double> force(axis.state.q.size(), 0.0);
-        effect.take_commands(axis.state, kStep);
+        effect.take_commands(axis.state, kStateStep);
         effect.begin_attempt();
         enteron::mechanics::State at_end = axis.state;
-        at_end.time += kStep;
+        at_end.time += kStateStep;
         effect.evaluate(at_end, force.data(), nullptr);
-        effect.evaluation_used(kStep, nullptr);
+        effect.evaluation_used(kStateStep, nullptr);
         effect.end_step(true);
-        axis.state.time += kStep;
+        axis.state.time += kStateStep;
         return force;
     }
     std::vector<unsigned char> save() const {
@@ -69,12 +69,12 @@ struct Bench {
     ToolsForce effect;
 };
 
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+bool tools_state_same_bits(const std::vector<double>& a, const std::vector<double>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
 TEST(ToolsState, ARestoredToolsEffectPublishesTheSameAndGoesOnWithTheSameBits) {
-    Bench saved, restored;
+    ToolsStateBench saved, restored;
     ToolPose pose;
     pose.position = {0.1, 0.0, kRadius + 0.002};
     saved.step(&pose, true);
@@ -92,14 +92,14 @@ TEST(ToolsState, ARestoredToolsEffectPublishesTheSameAndGoesOnWithTheSameBits) {
     pose.position[2] += 0.003;  // pulling on the grasp
     for (int k = 0; k < 3; ++k) {
         const std::vector<double> fa = saved.step(&pose, false), fb = restored.step(&pose, false);
-        EXPECT_TRUE(same_bits(fa, fb)) << k;
+        EXPECT_TRUE(tools_state_same_bits(fa, fb)) << k;
     }
     EXPECT_EQ(saved.channels.outputs()[0].wrench.force, restored.channels.outputs()[0].wrench.force);
     EXPECT_TRUE(restored.channels.outputs()[0].grasping) << "still holding";
 }
 
 TEST(ToolsState, AnImageOfAnotherNumberOfToolsIsRefusedWithNothingChanged) {
-    Bench one, two(2);
+    ToolsStateBench one, two(2);
     ToolPose pose;
     pose.position = {0.1, 0.0, kRadius + 0.002};
     one.step(&pose, false);

@@ -14,7 +14,7 @@ using enteron::Vec3;
 using enteron::collision::TubeOcclusion;
 
 // A straight tube along x from -L/2 to L/2 at height h, `samples` samples, radii from r0 to r1.
-TubeOcclusion straight(std::size_t samples, double length, double h, double r0, double r1) {
+TubeOcclusion tube_occlusion_straight(std::size_t samples, double length, double h, double r0, double r1) {
     std::vector<double> radii(samples);
     for (std::size_t i = 0; i < samples; ++i) radii[i] = r0 + (r1 - r0) * double(i) / double(samples - 1);
     TubeOcclusion tubes;
@@ -30,7 +30,7 @@ TubeOcclusion straight(std::size_t samples, double length, double h, double r0, 
 }
 
 TEST(TubeOcclusion, AVerticalSightLineIsHiddenWithinTheRadiusAndSeenBeyondIt) {
-    TubeOcclusion tubes = straight(41, 1.0, 0.05, 0.01, 0.01);
+    TubeOcclusion tubes = tube_occlusion_straight(41, 1.0, 0.05, 0.01, 0.01);
     tubes.reserve_sight_lines(2);
     const Vec3 eye(0.1, 0.00999, 0.3);  // a vertical line 0.00999 from the axis: hidden
     const double targets[6] = {0.1, 0.00999, 0.0, 0.1, 0.01001, 0.0};
@@ -42,7 +42,7 @@ TEST(TubeOcclusion, AVerticalSightLineIsHiddenWithinTheRadiusAndSeenBeyondIt) {
 
 TEST(TubeOcclusion, TheRadiusIsTakenWhereTheSightLinePasses) {
     // Radius 1 cm at x = -0.5 m growing to 3 cm at x = +0.5 m: 2 cm at x = 0.
-    TubeOcclusion tubes = straight(101, 1.0, 0.05, 0.01, 0.03);
+    TubeOcclusion tubes = tube_occlusion_straight(101, 1.0, 0.05, 0.01, 0.03);
     tubes.reserve_sight_lines(1);
     const double weights[1] = {1.0};
     for (double x : {-0.25, 0.0, 0.25}) {
@@ -54,7 +54,7 @@ TEST(TubeOcclusion, TheRadiusIsTakenWhereTheSightLinePasses) {
 }
 
 TEST(TubeOcclusion, RunsLessThanADiameterApartAreOneSpanFartherApartTwo) {
-    TubeOcclusion tubes = straight(201, 2.0, 0.05, 0.01, 0.01);  // chords of 1 cm
+    TubeOcclusion tubes = tube_occlusion_straight(201, 2.0, 0.05, 0.01, 0.01);  // chords of 1 cm
     tubes.reserve_sight_lines(2);
     const double weights[2] = {1.0, 3.0};
     // Two vertical sight lines at x apart; each hides the chords within 1 cm of it.

@@ -22,7 +22,7 @@ namespace {
 
 constexpr std::size_t kPoints = 12;
 
-AxisModel model() {
+AxisModel bdf2_model() {
     AxisModel m;
     m.control_points = kPoints;
     m.rest_segment_length = 0.05;
@@ -33,10 +33,10 @@ AxisModel model() {
 // A horizontal elastic bowel under gravity (it bends and stretches: every term of the
 // method is exercised).
 struct Bowel {
-    explicit Bowel(std::pmr::memory_resource* memory) : dynamics(model(), memory), state(memory) {
-        dynamics.add_effect(make_owned<StretchForce>(memory, model(), 100.0, memory));
-        dynamics.add_effect(make_owned<BendForce>(memory, model(), 2.5e-3, memory));
-        dynamics.add_effect(make_owned<GravityForce>(memory, model(), Vec3(0.0, 0.0, -9.81), memory));
+    explicit Bowel(std::pmr::memory_resource* memory) : dynamics(bdf2_model(), memory), state(memory) {
+        dynamics.add_effect(make_owned<StretchForce>(memory, bdf2_model(), 100.0, memory));
+        dynamics.add_effect(make_owned<BendForce>(memory, bdf2_model(), 2.5e-3, memory));
+        dynamics.add_effect(make_owned<GravityForce>(memory, bdf2_model(), Vec3(0.0, 0.0, -9.81), memory));
         dynamics.finalize();
         state.resize(kPoints);
         for (std::size_t i = 0; i < kPoints; ++i) state.q[3 * i] = 0.05 * static_cast<double>(i);
@@ -62,7 +62,7 @@ public:
 // The bowel, and a second one to take implicit Euler steps from the same state.
 struct Pair {
     explicit Pair(std::pmr::memory_resource* memory)
-        : a(memory), b(memory), method(model(), memory), euler(model(), memory) {}
+        : a(memory), b(memory), method(bdf2_model(), memory), euler(bdf2_model(), memory) {}
     // Both bowels at a's state; then one substep of h each, bdf2 on a, implicit Euler on b.
     void step_both(double h) {
         b.state.assign(a.state);

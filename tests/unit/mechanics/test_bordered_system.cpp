@@ -17,16 +17,16 @@
 namespace enteron::mechanics {
 namespace {
 
-constexpr std::size_t kPoints = 16, kCoordinates = 3 * kPoints;
+constexpr std::size_t kBorderedSystemPoints = 16, kBorderedSystemCoordinates = 3 * kBorderedSystemPoints;
 
 // A random symmetric positive definite band matrix (the bowel's system), as SystemMatrix
 // and dense.
 struct BowelSystem {
-    explicit BowelSystem(uint64_t seed) : dense(Eigen::MatrixXd::Zero(kCoordinates, kCoordinates)) {
+    explicit BowelSystem(uint64_t seed) : dense(Eigen::MatrixXd::Zero(kBorderedSystemCoordinates, kBorderedSystemCoordinates)) {
         std::mt19937_64 random(seed);
         std::uniform_real_distribution<double> u(-1.0, 1.0);
-        banded.resize(kCoordinates);
-        for (std::size_t i = 0; i < kCoordinates; ++i)
+        banded.resize(kBorderedSystemCoordinates);
+        for (std::size_t i = 0; i < kBorderedSystemCoordinates; ++i)
             for (std::size_t j = i >= 11 ? i - 11 : 0; j <= i; ++j) {
                 const double value = i == j ? 30.0 + 5.0 * u(random) : u(random);
                 banded.add(i, j, value);
@@ -56,7 +56,7 @@ struct Body {
     Vec3 rhs;
 };
 
-spline::SegmentWeights weights(std::size_t first, double t) {
+spline::SegmentWeights bordered_system_weights(std::size_t first, double t) {
     spline::SegmentWeights w;
     w.first = first;
     const std::array<double, 4> raw = spline::raw_weights(t, spline::Derivative::value);
@@ -82,13 +82,13 @@ Solutions solve_both(BowelSystem& bowel, const std::vector<Body>& bodies, const 
     for (const Body& b : bodies) bowel.add_spring(b.weights, b.spring);
     const std::size_t m = 3 * bodies.size();
     // Dense: [A -B; -B^T P], B = w (x) K, P = K + D; pinned rows and columns identity.
-    Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(kCoordinates + m, kCoordinates + m);
-    whole.topLeftCorner(kCoordinates, kCoordinates) = bowel.dense;
-    Eigen::VectorXd rhs(kCoordinates + m);
-    rhs.head(kCoordinates) = r;
+    Eigen::MatrixXd whole = Eigen::MatrixXd::Zero(kBorderedSystemCoordinates + m, kBorderedSystemCoordinates + m);
+    whole.topLeftCorner(kBorderedSystemCoordinates, kBorderedSystemCoordinates) = bowel.dense;
+    Eigen::VectorXd rhs(kBorderedSystemCoordinates + m);
+    rhs.head(kBorderedSystemCoordinates) = r;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         const Body& body = bodies[b];
-        const std::size_t at = kCoordinates + 3 * b;
+        const std::size_t at = kBorderedSystemCoordinates + 3 * b;
         whole.block<3, 3>(at, at) = body.spring + body.device;
         for (std::size_t k = 0; k < 4; ++k) {
             const Mat3 coupling = body.weights.w[k] * body.spring;
@@ -107,20 +107,20 @@ Solutions solve_both(BowelSystem& bowel, const std::vector<Body>& bodies, const 
         bowel.banded.make_identity_row(p);
     }
     // The unknowns the dense solve keeps: every bowel coordinate, each body's held directions.
-    Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(kCoordinates + m, kCoordinates + m);
-    basis.topLeftCorner(kCoordinates, kCoordinates).setIdentity();
-    std::size_t columns = kCoordinates;
+    Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(kBorderedSystemCoordinates + m, kBorderedSystemCoordinates + m);
+    basis.topLeftCorner(kBorderedSystemCoordinates, kBorderedSystemCoordinates).setIdentity();
+    std::size_t columns = kBorderedSystemCoordinates;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         const Mat3 held = held_directions.empty() ? Mat3::Identity() : held_directions[b];
         for (int c = 0; c < 3; ++c)
-            if (held.col(c).squaredNorm() > 0.0) basis.block<3, 1>(kCoordinates + 3 * b, columns++) = held.col(c);
+            if (held.col(c).squaredNorm() > 0.0) basis.block<3, 1>(kBorderedSystemCoordinates + 3 * b, columns++) = held.col(c);
     }
     const Eigen::MatrixXd t = basis.leftCols(columns);
     Solutions out;
     out.dense = t * (t.transpose() * whole * t).ldlt().solve(t.transpose() * rhs);
 
     BorderedSystem border(std::pmr::new_delete_resource());
-    border.reserve(bodies.size(), kCoordinates);
+    border.reserve(bodies.size(), kBorderedSystemCoordinates);
     for (const Body& body : bodies) {
         const std::size_t index = border.add_body(body.spring + body.device, body.rhs);
         border.add_coupling(index, body.weights, body.spring);
@@ -130,15 +130,15 @@ Solutions solve_both(BowelSystem& bowel, const std::vector<Body>& bodies, const 
     Eigen::VectorXd dv = r_pinned;
     bowel.banded.solve(dv.data());
     border.solve(bowel.banded, dv.data());
-    out.bordered.resize(kCoordinates + m);
-    out.bordered.head(kCoordinates) = dv;
-    for (std::size_t b = 0; b < bodies.size(); ++b) out.bordered.segment<3>(kCoordinates + 3 * b) = border.solution(b);
+    out.bordered.resize(kBorderedSystemCoordinates + m);
+    out.bordered.head(kBorderedSystemCoordinates) = dv;
+    for (std::size_t b = 0; b < bodies.size(); ++b) out.bordered.segment<3>(kBorderedSystemCoordinates + 3 * b) = border.solution(b);
     return out;
 }
 
 Eigen::VectorXd random_rhs(std::mt19937_64& random) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Eigen::VectorXd r(kCoordinates);
+    Eigen::VectorXd r(kBorderedSystemCoordinates);
     for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = u(random);
     return r;
 }
@@ -147,9 +147,9 @@ TEST(BorderedSystem, MatchesADenseSolveOfTheWholeSystem) {
     std::mt19937_64 random(7);
     BowelSystem bowel(11);
     const std::vector<Body> bodies = {
-        {weights(2, 0.3), spd(random, 40.0), spd(random, 5.0), Vec3(0.2, -0.1, 0.4)},
-        {weights(2, 0.8), spd(random, 20.0), spd(random, 1.0), Vec3(-0.3, 0.0, 0.1)},  // the same points
-        {weights(11, 0.5), spd(random, 60.0), spd(random, 2.0), Vec3(0.0, 0.5, -0.2)},  // far away
+        {bordered_system_weights(2, 0.3), spd(random, 40.0), spd(random, 5.0), Vec3(0.2, -0.1, 0.4)},
+        {bordered_system_weights(2, 0.8), spd(random, 20.0), spd(random, 1.0), Vec3(-0.3, 0.0, 0.1)},  // the same points
+        {bordered_system_weights(11, 0.5), spd(random, 60.0), spd(random, 2.0), Vec3(0.0, 0.5, -0.2)},  // far away
     };
     const Solutions s = solve_both(bowel, bodies, random_rhs(random));
     EXPECT_LT((s.bordered - s.dense).cwiseAbs().maxCoeff(), 1e-10 * s.dense.cwiseAbs().maxCoeff());
@@ -162,12 +162,12 @@ TEST(BorderedSystem, AnUnknownNoContactHoldsIsSetToZero) {
     {
         BowelSystem bowel(5);
         const Vec3 z(0, 0, 1);
-        Body frictionless{weights(6, 0.4), 80.0 * z * z.transpose(), Mat3::Zero(), 0.3 * z};
+        Body frictionless{bordered_system_weights(6, 0.4), 80.0 * z * z.transpose(), Mat3::Zero(), 0.3 * z};
         const Solutions s = solve_both(bowel, {frictionless}, random_rhs(random), {z * z.transpose()});
         EXPECT_LT((s.bordered - s.dense).cwiseAbs().maxCoeff(), 1e-10 * s.dense.cwiseAbs().maxCoeff());
-        EXPECT_EQ(s.bordered[kCoordinates], 0.0);
-        EXPECT_EQ(s.bordered[kCoordinates + 1], 0.0);
-        EXPECT_GT(std::fabs(s.bordered[kCoordinates + 2]), 1e-6);
+        EXPECT_EQ(s.bordered[kBorderedSystemCoordinates], 0.0);
+        EXPECT_EQ(s.bordered[kBorderedSystemCoordinates + 1], 0.0);
+        EXPECT_GT(std::fabs(s.bordered[kBorderedSystemCoordinates + 2]), 1e-6);
     }
     // Along a tilted normal the zero pivots are coordinates, not the directions across the
     // normal: the body's unknowns are a solution, not the smallest one, but what reaches
@@ -175,10 +175,10 @@ TEST(BorderedSystem, AnUnknownNoContactHoldsIsSetToZero) {
     {
         BowelSystem bowel(5);
         const Vec3 normal = Vec3(0.3, -0.2, 1.0).normalized();
-        Body frictionless{weights(6, 0.4), 80.0 * normal * normal.transpose(), Mat3::Zero(), 0.3 * normal};
+        Body frictionless{bordered_system_weights(6, 0.4), 80.0 * normal * normal.transpose(), Mat3::Zero(), 0.3 * normal};
         const Solutions s = solve_both(bowel, {frictionless}, random_rhs(random), {normal * normal.transpose()});
         const double scale = s.dense.cwiseAbs().maxCoeff();
-        EXPECT_LT((s.bordered.head(kCoordinates) - s.dense.head(kCoordinates)).cwiseAbs().maxCoeff(), 1e-10 * scale);
+        EXPECT_LT((s.bordered.head(kBorderedSystemCoordinates) - s.dense.head(kBorderedSystemCoordinates)).cwiseAbs().maxCoeff(), 1e-10 * scale);
         EXPECT_NEAR(s.bordered.tail<3>().dot(normal), s.dense.tail<3>().dot(normal), 1e-10 * scale);
     }
 }
@@ -186,7 +186,7 @@ TEST(BorderedSystem, AnUnknownNoContactHoldsIsSetToZero) {
 TEST(BorderedSystem, ABodyTouchingNothingIsSolvedAlone) {
     std::mt19937_64 random(4);
     BowelSystem bowel(8);
-    Body alone{weights(4, 0.5), Mat3::Zero(), spd(random, 3.0), Vec3(1.0, 2.0, -1.0)};
+    Body alone{bordered_system_weights(4, 0.5), Mat3::Zero(), spd(random, 3.0), Vec3(1.0, 2.0, -1.0)};
     const Eigen::VectorXd r = random_rhs(random);
     const Solutions s = solve_both(bowel, {alone}, r);
     EXPECT_LT((s.bordered - s.dense).cwiseAbs().maxCoeff(), 1e-12 * s.dense.cwiseAbs().maxCoeff());
@@ -196,7 +196,7 @@ TEST(BorderedSystem, ABodyTouchingNothingIsSolvedAlone) {
 TEST(BorderedSystem, APinnedCoordinateIsNotMovedByTheBodies) {
     std::mt19937_64 random(9);
     BowelSystem bowel(2);
-    const std::vector<Body> bodies = {{weights(5, 0.5), spd(random, 50.0), spd(random, 4.0), Vec3(0.5, 0.5, 0.5)}};
+    const std::vector<Body> bodies = {{bordered_system_weights(5, 0.5), spd(random, 50.0), spd(random, 4.0), Vec3(0.5, 0.5, 0.5)}};
     const std::vector<std::size_t> pinned = {3 * 6 + 0, 3 * 6 + 1, 3 * 6 + 2, 3 * 7 + 2};
     const Solutions s = solve_both(bowel, bodies, random_rhs(random), {}, pinned);
     EXPECT_LT((s.bordered - s.dense).cwiseAbs().maxCoeff(), 1e-10 * s.dense.cwiseAbs().maxCoeff());
@@ -206,10 +206,10 @@ TEST(BorderedSystem, APinnedCoordinateIsNotMovedByTheBodies) {
 TEST(BorderedSystem, ClearForgetsTheBodiesAndTheirCouplings) {
     std::mt19937_64 random(12);
     BorderedSystem border(std::pmr::new_delete_resource());
-    border.reserve(2, kCoordinates);
+    border.reserve(2, kBorderedSystemCoordinates);
     EXPECT_EQ(border.capacity(), 2u);
     const std::size_t a = border.add_body(spd(random, 1.0), Vec3(1, 0, 0));
-    border.add_coupling(a, weights(3, 0.5), spd(random, 10.0));
+    border.add_coupling(a, bordered_system_weights(3, 0.5), spd(random, 10.0));
     EXPECT_EQ(border.size(), 1u);
     border.clear();  // never solved: its coupling must go too
     EXPECT_EQ(border.size(), 0u);
@@ -218,7 +218,7 @@ TEST(BorderedSystem, ClearForgetsTheBodiesAndTheirCouplings) {
     ASSERT_TRUE(bowel.banded.factor());
     const Mat3 device = spd(random, 2.0);
     border.add_body(device, Vec3(0, 1, 0));
-    std::vector<double> dv(kCoordinates, 0.0);
+    std::vector<double> dv(kBorderedSystemCoordinates, 0.0);
     border.solve(bowel.banded, dv.data());
     EXPECT_LT((border.solution(0) - device.inverse() * Vec3(0, 1, 0)).norm(), 1e-12);
     for (double x : dv) EXPECT_EQ(x, 0.0);

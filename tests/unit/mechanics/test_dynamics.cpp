@@ -16,11 +16,11 @@
 namespace enteron::mechanics {
 namespace {
 
-constexpr std::size_t kPoints = 5;
+constexpr std::size_t kDynamicsPoints = 5;
 
-AxisModel model() {
+AxisModel dynamics_model() {
     AxisModel m;
-    m.control_points = kPoints;
+    m.control_points = kDynamicsPoints;
     m.rest_segment_length = 0.1;
     m.linear_density = 0.3;
     return m;
@@ -36,11 +36,11 @@ public:
     EffectId id() const override { return id_; }
     void evaluate(const State&, double* force, const Linearization*) override { force[3 * point_] += force_; }
     double potential_energy(const State& state) const override { return energy_per_m_ * state.q[3 * point_]; }
-    void begin_step(double dt) override { log_.push_back(name() + " begin_step " + std::to_string(dt)); }
-    void begin_attempt() override { log_.push_back(name() + " begin_attempt"); }
+    void begin_step(double dt) override { log_.push_back(dynamics_name() + " begin_step " + std::to_string(dt)); }
+    void begin_attempt() override { log_.push_back(dynamics_name() + " begin_attempt"); }
 
 protected:
-    std::string name() const { return effect_name(id_); }
+    std::string dynamics_name() const { return effect_name(id_); }
     EffectId id_;
     std::vector<std::string>& log_;
     std::size_t point_;
@@ -60,17 +60,17 @@ public:
     void begin_step(double dt) override { recorder_.begin_step(dt); }
     void begin_attempt() override { recorder_.begin_attempt(); }
     bool take_commands(const State&, double dt) override {
-        log_.push_back(name() + " take_commands " + std::to_string(dt));
+        log_.push_back(dynamics_name() + " take_commands " + std::to_string(dt));
         return changes_energy_;
     }
     void evaluation_used(double duration, const State* after) override {
-        log_.push_back(name() + " used " + std::to_string(duration) + (after != nullptr ? " implicit" : " explicit"));
+        log_.push_back(dynamics_name() + " used " + std::to_string(duration) + (after != nullptr ? " implicit" : " explicit"));
     }
     std::size_t border_bodies() const override { return bodies_; }
-    void end_step(bool accepted) override { log_.push_back(name() + (accepted ? " accepted" : " aborted")); }
+    void end_step(bool accepted) override { log_.push_back(dynamics_name() + (accepted ? " accepted" : " aborted")); }
 
 private:
-    std::string name() const { return effect_name(recorder_.id()); }
+    std::string dynamics_name() const { return effect_name(recorder_.id()); }
     Recorder recorder_;
     std::vector<std::string>& log_;
     bool changes_energy_;
@@ -80,14 +80,14 @@ private:
 TEST(Dynamics, StepHooksRunForEveryEffectInOrderAndTheDrivenOnesOnlyForTheDrivenEffects) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
-    Dynamics dynamics(model(), memory);
+    Dynamics dynamics(dynamics_model(), memory);
     DrivenRecorder& tools = dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::tools, log, false));
     Recorder& environment = dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log));
     EXPECT_EQ(tools.id(), EffectId::tools) << "add_effect hands back the effect added, typed";
     EXPECT_EQ(environment.id(), EffectId::environment);
     dynamics.finalize();
     State state;
-    state.resize(kPoints);
+    state.resize(kDynamicsPoints);
 
     EXPECT_FALSE(dynamics.take_commands(state, 0.5)) << "no effect changed its energy";
     dynamics.begin_step(0.5);
@@ -108,12 +108,12 @@ TEST(Dynamics, StepHooksRunForEveryEffectInOrderAndTheDrivenOnesOnlyForTheDriven
 TEST(Dynamics, TakeCommandsReportsADrivenEffectThatChangedItsEnergy) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
-    Dynamics dynamics(model(), memory);
+    Dynamics dynamics(dynamics_model(), memory);
     dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::tools, log, true));
     dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::stretch, log, false));
     dynamics.finalize();
     State state;
-    state.resize(kPoints);
+    state.resize(kDynamicsPoints);
     EXPECT_TRUE(dynamics.take_commands(state, 1e-3));
     EXPECT_EQ(log.size(), 2u) << "every driven effect's hook runs, also after one reported a change";
 }
@@ -121,7 +121,7 @@ TEST(Dynamics, TakeCommandsReportsADrivenEffectThatChangedItsEnergy) {
 TEST(Dynamics, TheBorderHoldsTheBodiesOfEveryDrivenEffect) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
-    Dynamics dynamics(model(), memory);
+    Dynamics dynamics(dynamics_model(), memory);
     dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::tools, log, false, 2));
     dynamics.add_effect(make_owned<DrivenRecorder>(memory, EffectId::environment, log, false, 1));
     dynamics.finalize();
@@ -132,15 +132,15 @@ TEST(Dynamics, TheBorderHoldsTheBodiesOfEveryDrivenEffect) {
 TEST(Dynamics, TheStrongestForceOnAPointAndTheLargestEnergyGainNameTheirEffects) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     std::vector<std::string> log;
-    Dynamics dynamics(model(), memory);
-    dynamics.add_effect(make_owned<GravityForce>(memory, model(), enteron::Vec3(0.0, 0.0, -9.81), memory));
+    Dynamics dynamics(dynamics_model(), memory);
+    dynamics.add_effect(make_owned<GravityForce>(memory, dynamics_model(), enteron::Vec3(0.0, 0.0, -9.81), memory));
     // Pushes point 3 with 100 N, far more than its weight (about 0.3 N); stores 5 J/m.
     dynamics.add_effect(make_owned<Recorder>(memory, EffectId::environment, log, 3, 100.0, 5.0));
     // Pushes point 1 with 0.01 N; stores 1 J/m of point 1's x.
     dynamics.add_effect(make_owned<Recorder>(memory, EffectId::mesentery, log, 1, 0.01, 1.0));
     dynamics.finalize();
     State before;
-    before.resize(kPoints);
+    before.resize(kDynamicsPoints);
 
     const Dynamics::Culprit at_3 = dynamics.strongest_force_at(before, 3);
     ASSERT_TRUE(at_3.found);

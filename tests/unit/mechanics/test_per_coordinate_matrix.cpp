@@ -26,7 +26,7 @@ ScalarBandMatrix random_band(std::size_t n, std::mt19937_64& rng) {
     return b;
 }
 
-std::vector<double> random_vector(std::size_t size, std::mt19937_64& rng) {
+std::vector<double> per_coordinate_matrix_random_vector(std::size_t size, std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<double> v(size);
     for (double& x : v) x = u(rng);
@@ -40,7 +40,7 @@ TEST(PerCoordinateMatrix, ProductsAreTheBandsOwnBitForBit) {
         PerCoordinateMatrix m(std::pmr::new_delete_resource());
         m.assign(b);
         ASSERT_EQ(m.coordinates(), 3 * n);
-        const std::vector<double> x = random_vector(3 * n, rng), v = random_vector(3 * n, rng);
+        const std::vector<double> x = per_coordinate_matrix_random_vector(3 * n, rng), v = per_coordinate_matrix_random_vector(3 * n, rng);
         // The reference: (B (x) I3) x by the band's multiply on the interleaved x y z.
         std::vector<double> bx(3 * n), bv(3 * n);
         b.multiply(x.data(), bx.data(), 3, 3);
@@ -50,7 +50,7 @@ TEST(PerCoordinateMatrix, ProductsAreTheBandsOwnBitForBit) {
         m.multiply(x.data(), y.data());
         for (std::size_t k = 0; k < 3 * n; ++k) EXPECT_EQ(y[k], bx[k]) << "n " << n << ", k " << k;
 
-        const std::vector<double> start0 = random_vector(3 * n, rng), start1 = random_vector(3 * n, rng);
+        const std::vector<double> start0 = per_coordinate_matrix_random_vector(3 * n, rng), start1 = per_coordinate_matrix_random_vector(3 * n, rng);
         std::vector<double> y0 = start0, y1 = start1;
         m.multiply_add(x.data(), -0.7, y0.data());
         for (std::size_t k = 0; k < 3 * n; ++k) EXPECT_EQ(y0[k], start0[k] + -0.7 * bx[k]) << "n " << n << ", k " << k;

@@ -20,12 +20,12 @@
 namespace enteron::mechanics {
 namespace {
 
-constexpr std::size_t kPoints = 8;
+constexpr std::size_t kPinnedBowelPoints = 8;
 std::pmr::memory_resource* const kMemory = std::pmr::new_delete_resource();
 
 State moving_state() {
     State s;
-    s.resize(kPoints);
+    s.resize(kPinnedBowelPoints);
     for (std::size_t k = 0; k < s.q.size(); ++k) {
         s.q[k] = 0.1 * double(k);
         s.v[k] = 0.01 * double(k + 1);
@@ -40,32 +40,32 @@ TEST(PinnedPoints, PinnedRowsBecomeConstraints) {
     EXPECT_TRUE(pins.pinned(2));
     EXPECT_FALSE(pins.pinned(3));
     const State state = moving_state();
-    std::vector<double> force(3 * kPoints, 1.0), hv(3 * kPoints, 2.0);
+    std::vector<double> force(3 * kPinnedBowelPoints, 1.0), hv(3 * kPinnedBowelPoints, 2.0);
     SystemMatrix system;
-    system.resize(3 * kPoints);
-    for (std::size_t i = 0; i < 3 * kPoints; ++i)
+    system.resize(3 * kPinnedBowelPoints);
+    for (std::size_t i = 0; i < 3 * kPinnedBowelPoints; ++i)
         for (std::size_t j = i >= 11 ? i - 11 : 0; j <= i; ++j) system.add(i, j, i == j ? 10.0 : 0.5);
     BorderedSystem border(kMemory);
-    border.reserve(1, 3 * kPoints);
+    border.reserve(1, 3 * kPinnedBowelPoints);
     const std::size_t body = border.add_body(Mat3::Identity(), Vec3::Zero());
-    border.add_coupling(body, spline::segment_weights(kPoints, 2, 0.5, spline::Derivative::value), Mat3::Identity());
+    border.add_coupling(body, spline::segment_weights(kPinnedBowelPoints, 2, 0.5, spline::Derivative::value), Mat3::Identity());
     const Linearization lin{&system, 1e-3, hv.data(), nullptr, &border};
     pins.evaluate(state, force.data(), &lin);
-    for (std::size_t i = 0; i < 3 * kPoints; ++i) {
+    for (std::size_t i = 0; i < 3 * kPinnedBowelPoints; ++i) {
         const bool pinned = i / 3 == 2 || i / 3 == 5;
         EXPECT_EQ(force[i], pinned ? 0.0 : 1.0) << i;
         EXPECT_EQ(hv[i], pinned ? 0.0 : 2.0) << i;
-        for (std::size_t j = 0; j < 3 * kPoints && pinned; ++j)
+        for (std::size_t j = 0; j < 3 * kPinnedBowelPoints && pinned; ++j)
             EXPECT_EQ(system.at(i, j), i == j ? 1.0 : 0.0) << i << ", " << j;
     }
     // The border no longer couples the body to point 2: its solve moves no pinned row.
     ASSERT_TRUE(system.factor());
-    std::vector<double> dv(3 * kPoints, 0.0);
+    std::vector<double> dv(3 * kPinnedBowelPoints, 0.0);
     border.solve(system, dv.data());
     for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(dv[6 + c], 0.0);
     numerics::ScalarBandMatrix mass;
-    mass.resize(kPoints);
-    for (std::size_t i = 0; i < kPoints; ++i) mass.add(i, i, 3.0);
+    mass.resize(kPinnedBowelPoints);
+    for (std::size_t i = 0; i < kPinnedBowelPoints; ++i) mass.add(i, i, 3.0);
     pins.constrain(mass);
     EXPECT_EQ(mass.at(5, 5), 1.0);
     EXPECT_EQ(mass.at(4, 4), 3.0);
@@ -116,7 +116,7 @@ TEST(PinnedPoints, AnAttachedPointFollowsItsFrameAtBoundedSpeed) {
     // The work bound: twice the largest power of the pinned rows' forces, times the step.
     pins.begin_step(dt);
     pins.begin_attempt();
-    std::vector<double> force(3 * kPoints, 0.0);
+    std::vector<double> force(3 * kPinnedBowelPoints, 0.0);
     point_at(force.data(), 1) = Vec3(0.0, 0.0, 4.0);  // 4 N on the attached point
     pins.evaluate(state, force.data(), nullptr);
     EXPECT_NEAR(pins.external_work_bound(), 2.0 * 4.0 * velocity.norm() * dt, 1e-12);
@@ -134,10 +134,10 @@ TEST(PinnedPoints, ASavedStateRestoresThePinsAndADamagedOneIsRefused) {
     const std::vector<unsigned char> bytes = image(saved);
     PinnedPoints restored({1}, frames, 1.0, kMemory);
     StateReader in(bytes.data(), bytes.size());
-    restored.restore_state(in, kPoints);
+    restored.restore_state(in, kPinnedBowelPoints);
     EXPECT_TRUE(restored.pinned(1)) << "the first pass only checks";
     in.start_applying();
-    restored.restore_state(in, kPoints);
+    restored.restore_state(in, kPinnedBowelPoints);
     EXPECT_FALSE(restored.pinned(1));
     EXPECT_TRUE(restored.pinned(0) && restored.pinned(4) && restored.pinned(6));
     EXPECT_EQ(image(restored), bytes);
@@ -155,7 +155,7 @@ TEST(PinnedPoints, ASavedStateRestoresThePinsAndADamagedOneIsRefused) {
     };
     EXPECT_EQ(refusal(5, frames), "state: section 'pins': pinned point is 6, not below 5");
     RigidFrames none(kMemory);
-    EXPECT_EQ(refusal(kPoints, none), "state: section 'pins': frame of an attached point is 0, not below 0");
+    EXPECT_EQ(refusal(kPinnedBowelPoints, none), "state: section 'pins': frame of an attached point is 0, not below 0");
 }
 
 }  // namespace

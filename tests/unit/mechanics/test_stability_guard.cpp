@@ -17,15 +17,15 @@
 namespace enteron::mechanics {
 namespace {
 
-constexpr std::size_t kPoints = 6;
+constexpr std::size_t kStabilityGuardPoints = 6;
 constexpr double kMass = 2.0;  // kg: the floor of the allowance is 0.5 * 2 * 0.1^2 = 0.01 J
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
 State at_rest() {
     State state;
-    state.resize(kPoints);
-    for (std::size_t i = 0; i < kPoints; ++i) state.q[3 * i] = 0.1 * double(i);
+    state.resize(kStabilityGuardPoints);
+    for (std::size_t i = 0; i < kStabilityGuardPoints; ++i) state.q[3 * i] = 0.1 * double(i);
     return state;
 }
 
@@ -131,9 +131,9 @@ TEST(StabilityGuard, AnAcceptedStepBecomesTheReference) {
     // A falling bowel: gravity only. The step passes; the reference is then its energies.
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     AxisModel model;
-    model.control_points = kPoints;
+    model.control_points = kStabilityGuardPoints;
     model.rest_segment_length = 0.1;
-    model.linear_density = kMass / (0.1 * double(kPoints - 1));
+    model.linear_density = kMass / (0.1 * double(kStabilityGuardPoints - 1));
     Dynamics dynamics(model, memory);
     dynamics.add_effect(make_owned<GravityForce>(memory, model, enteron::Vec3(0.0, 0.0, -9.81), memory));
     dynamics.finalize();
@@ -142,7 +142,7 @@ TEST(StabilityGuard, AnAcceptedStepBecomesTheReference) {
     StabilityGuard guard(50.0, kMass);
     guard.set_reference(dynamics.energies(state));
     for (double& v : state.v) v = 0.0;
-    for (std::size_t i = 0; i < kPoints; ++i) {
+    for (std::size_t i = 0; i < kStabilityGuardPoints; ++i) {
         state.v[3 * i + 2] = -0.1;   // after a fall of 0.5 mm from rest: energy is conserved
         state.q[3 * i + 2] = -0.1 * 0.1 / (2 * 9.81);
     }
@@ -153,7 +153,7 @@ TEST(StabilityGuard, AnAcceptedStepBecomesTheReference) {
 
     // Twice as fast from the same height: energy from nothing, rejected; the fastest point named.
     State faster = state;
-    for (std::size_t i = 0; i < kPoints; ++i) faster.v[3 * i + 2] = -0.5;
+    for (std::size_t i = 0; i < kStabilityGuardPoints; ++i) faster.v[3 * i + 2] = -0.5;
     faster.v[3 * 4 + 2] = -0.6;
     EXPECT_FALSE(guard.step_passes(faster, dynamics));
     EXPECT_EQ(guard.last_finding().check, GuardCheck::energy);

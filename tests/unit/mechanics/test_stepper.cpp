@@ -26,14 +26,14 @@
 namespace enteron::mechanics {
 namespace {
 
-constexpr std::size_t kPoints = 8;
+constexpr std::size_t kStepperPoints = 8;
 constexpr double kLength = 0.4;  // m
 constexpr double kDt = 1e-3;     // s
 
-AxisModel model() {
+AxisModel stepper_model() {
     AxisModel m;
-    m.control_points = kPoints;
-    m.rest_segment_length = kLength / double(kPoints - 1);
+    m.control_points = kStepperPoints;
+    m.rest_segment_length = kLength / double(kStepperPoints - 1);
     m.linear_density = 0.3;
     return m;
 }
@@ -74,13 +74,13 @@ private:
 // An axis hanging from nothing, stretched along x, falling: every integrator has work to do.
 struct Bench {
     Bench(IntegratorKind integrator, double timestep = kDt)
-        : memory(std::pmr::new_delete_resource()), frames(memory), dynamics(model(), memory),
+        : memory(std::pmr::new_delete_resource()), frames(memory), dynamics(stepper_model(), memory),
           stepper(dynamics, frames, settings(integrator, timestep), Logger(), memory) {
-        dynamics.add_effect(make_owned<StretchForce>(memory, model(), 100.0, memory));
-        dynamics.add_effect(make_owned<GravityForce>(memory, model(), Vec3(0.0, 0.0, -9.81), memory));
+        dynamics.add_effect(make_owned<StretchForce>(memory, stepper_model(), 100.0, memory));
+        dynamics.add_effect(make_owned<GravityForce>(memory, stepper_model(), Vec3(0.0, 0.0, -9.81), memory));
         kicker = &dynamics.add_effect(make_owned<Kicker>(memory, log));
         State& state = stepper.state();
-        for (std::size_t i = 0; i < kPoints; ++i) state.q[3 * i] = 1.05 * model().rest_segment_length * double(i);
+        for (std::size_t i = 0; i < kStepperPoints; ++i) state.q[3 * i] = 1.05 * stepper_model().rest_segment_length * double(i);
         frame = frames.add(RigidPose{});
         stepper.effects_changed();
     }
@@ -102,7 +102,7 @@ struct Bench {
     std::size_t frame = 0;
 };
 
-bool same_bits(const State& a, const State& b) {
+bool stepper_same_bits(const State& a, const State& b) {
     return a.time == b.time && std::memcmp(a.q.data(), b.q.data(), a.q.size() * sizeof(double)) == 0 &&
            std::memcmp(a.v.data(), b.v.data(), a.v.size() * sizeof(double)) == 0;
 }
@@ -110,7 +110,7 @@ bool same_bits(const State& a, const State& b) {
 const IntegratorKind kIntegrators[] = {IntegratorKind::rk4, IntegratorKind::symplectic_euler,
                                        IntegratorKind::implicit_euler, IntegratorKind::bdf2};
 
-const char* name(IntegratorKind kind) {
+const char* stepper_name(IntegratorKind kind) {
     switch (kind) {
         case IntegratorKind::rk4: return "rk4";
         case IntegratorKind::symplectic_euler: return "symplectic_euler";
@@ -144,11 +144,11 @@ TEST(Stepper, ARejectedAttemptIsRetriedFromTheStepsStartWithTwiceTheSubsteps) {
     for (IntegratorKind kind : kIntegrators) {
         Bench rolled(kind);
         rolled.kicker->kicks = 1;
-        ASSERT_TRUE(rolled.stepper.step(kDt)) << name(kind);
+        ASSERT_TRUE(rolled.stepper.step(kDt)) << stepper_name(kind);
         Bench twin(kind == IntegratorKind::bdf2 ? IntegratorKind::implicit_euler : kind, kDt / 2);
-        ASSERT_TRUE(twin.stepper.step(kDt)) << name(kind);
-        EXPECT_TRUE(same_bits(rolled.stepper.state(), twin.stepper.state())) << name(kind);
-        EXPECT_EQ(rolled.stepper.guard().rollbacks(), 1u) << name(kind);
+        ASSERT_TRUE(twin.stepper.step(kDt)) << stepper_name(kind);
+        EXPECT_TRUE(stepper_same_bits(rolled.stepper.state(), twin.stepper.state())) << stepper_name(kind);
+        EXPECT_EQ(rolled.stepper.guard().rollbacks(), 1u) << stepper_name(kind);
     }
 }
 
@@ -159,8 +159,8 @@ TEST(Stepper, AStepThatStaysUnstableLeavesEverythingAsItWasForTheNextStep) {
     for (IntegratorKind kind : kIntegrators) {
         Bench failed(kind), twin(kind);
         for (int k = 0; k < 3; ++k) {
-            ASSERT_TRUE(failed.stepper.step(kDt)) << name(kind);
-            ASSERT_TRUE(twin.stepper.step(kDt)) << name(kind);
+            ASSERT_TRUE(failed.stepper.step(kDt)) << stepper_name(kind);
+            ASSERT_TRUE(twin.stepper.step(kDt)) << stepper_name(kind);
         }
         const State before = failed.stepper.state();
         const StepCounters counters = failed.stepper.counters();
@@ -170,24 +170,24 @@ TEST(Stepper, AStepThatStaysUnstableLeavesEverythingAsItWasForTheNextStep) {
         twin.frames.set_target(twin.frame, moved);
         failed.log.clear();
         failed.kicker->kicks = 100;  // more than the attempts
-        EXPECT_FALSE(failed.stepper.step(kDt)) << name(kind);
-        EXPECT_TRUE(same_bits(failed.stepper.state(), before)) << name(kind);
+        EXPECT_FALSE(failed.stepper.step(kDt)) << stepper_name(kind);
+        EXPECT_TRUE(stepper_same_bits(failed.stepper.state(), before)) << stepper_name(kind);
         EXPECT_NE(failed.stepper.failure().find("stayed unstable after 4 subdivisions"), std::string::npos)
             << failed.stepper.failure();
-        EXPECT_EQ(failed.stepper.counters().steps, counters.steps) << name(kind);
-        EXPECT_EQ(failed.stepper.counters().substeps, counters.substeps + 1 + 2 + 4 + 8 + 16) << name(kind);
-        EXPECT_EQ(failed.stepper.guard().rollbacks(), 5u) << name(kind);
+        EXPECT_EQ(failed.stepper.counters().steps, counters.steps) << stepper_name(kind);
+        EXPECT_EQ(failed.stepper.counters().substeps, counters.substeps + 1 + 2 + 4 + 8 + 16) << stepper_name(kind);
+        EXPECT_EQ(failed.stepper.guard().rollbacks(), 5u) << stepper_name(kind);
         // The subdivision budget ran out: every attempt made, and counted as such.
-        EXPECT_EQ(failed.stepper.counters().last_step_attempts, 5u) << name(kind);
-        EXPECT_EQ(failed.stepper.counters().last_step_substeps, 1u + 2 + 4 + 8 + 16) << name(kind);
-        EXPECT_EQ(failed.stepper.counters().subdivided_steps, counters.subdivided_steps) << name(kind);
+        EXPECT_EQ(failed.stepper.counters().last_step_attempts, 5u) << stepper_name(kind);
+        EXPECT_EQ(failed.stepper.counters().last_step_substeps, 1u + 2 + 4 + 8 + 16) << stepper_name(kind);
+        EXPECT_EQ(failed.stepper.counters().subdivided_steps, counters.subdivided_steps) << stepper_name(kind);
         EXPECT_EQ(failed.log.back(), "failed");
         EXPECT_EQ(failed.frames.pose(failed.frame).position, Vec3::Zero()) << "the frame stays where it was";
         failed.kicker->kicks = 0;
         for (int k = 0; k < 3; ++k) {
-            ASSERT_TRUE(failed.stepper.step(kDt)) << name(kind);
-            ASSERT_TRUE(twin.stepper.step(kDt)) << name(kind);
-            EXPECT_TRUE(same_bits(failed.stepper.state(), twin.stepper.state())) << name(kind) << " step " << k;
+            ASSERT_TRUE(failed.stepper.step(kDt)) << stepper_name(kind);
+            ASSERT_TRUE(twin.stepper.step(kDt)) << stepper_name(kind);
+            EXPECT_TRUE(stepper_same_bits(failed.stepper.state(), twin.stepper.state())) << stepper_name(kind) << " step " << k;
         }
         EXPECT_EQ(failed.frames.pose(failed.frame).position, moved.position) << "its target kept for the next step";
     }
@@ -208,7 +208,7 @@ TEST(Stepper, ABadDtIsRefusedWithNothingChanged) {
             EXPECT_NE(std::string(e.what()).find("dt_s"), std::string::npos) << e.what();
         }
     }
-    EXPECT_TRUE(same_bits(bench.stepper.state(), before));
+    EXPECT_TRUE(stepper_same_bits(bench.stepper.state(), before));
     EXPECT_TRUE(bench.log.empty()) << "no hook ran";
     EXPECT_EQ(bench.stepper.counters().steps, 1u);
     EXPECT_EQ(bench.stepper.counters().substeps, 1u);
@@ -227,8 +227,8 @@ TEST(Stepper, AStateSetFromOutsideRestartsAMultistepIntegrator) {
     ASSERT_TRUE(restarted.stepper.step(kDt));
     ASSERT_TRUE(going_on.stepper.step(kDt));
     ASSERT_TRUE(euler.stepper.step(kDt));
-    EXPECT_TRUE(same_bits(restarted.stepper.state(), euler.stepper.state()));
-    EXPECT_FALSE(same_bits(going_on.stepper.state(), euler.stepper.state())) << "bdf2 goes on at second order";
+    EXPECT_TRUE(stepper_same_bits(restarted.stepper.state(), euler.stepper.state()));
+    EXPECT_FALSE(stepper_same_bits(going_on.stepper.state(), euler.stepper.state())) << "bdf2 goes on at second order";
 }
 
 // What the next step reads, saved and restored into a stepper of the same scene: both go on
@@ -236,7 +236,7 @@ TEST(Stepper, AStateSetFromOutsideRestartsAMultistepIntegrator) {
 TEST(Stepper, ARestoredStepperContinuesToTheBit) {
     for (IntegratorKind kind : kIntegrators) {
         Bench saved(kind), restored(kind);
-        for (int k = 0; k < 5; ++k) ASSERT_TRUE(saved.stepper.step(kDt)) << name(kind);
+        for (int k = 0; k < 5; ++k) ASSERT_TRUE(saved.stepper.step(kDt)) << stepper_name(kind);
         std::vector<unsigned char> image(1 << 16);
         StateWriter out(image.data(), image.size(), 42);
         saved.stepper.save_state(out);
@@ -252,10 +252,10 @@ TEST(Stepper, ARestoredStepperContinuesToTheBit) {
         EXPECT_EQ(restored.stepper.counters().steps, 5u);
         EXPECT_EQ(restored.stepper.guard().reference().kinetic, saved.stepper.guard().reference().kinetic);
         for (int k = 0; k < 5; ++k) {
-            ASSERT_TRUE(saved.stepper.step(kDt)) << name(kind);
-            ASSERT_TRUE(restored.stepper.step(kDt)) << name(kind);
+            ASSERT_TRUE(saved.stepper.step(kDt)) << stepper_name(kind);
+            ASSERT_TRUE(restored.stepper.step(kDt)) << stepper_name(kind);
         }
-        EXPECT_TRUE(same_bits(saved.stepper.state(), restored.stepper.state())) << name(kind);
+        EXPECT_TRUE(stepper_same_bits(saved.stepper.state(), restored.stepper.state())) << stepper_name(kind);
     }
 }
 

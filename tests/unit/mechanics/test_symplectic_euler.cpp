@@ -17,13 +17,13 @@ namespace {
 
 using mechanics_test::Oscillator;
 
-SymplecticEuler make_method() {
+SymplecticEuler symplectic_euler_make_method() {
     return SymplecticEuler(3 * mechanics_test::kOscillatorPoints, std::pmr::new_delete_resource());
 }
 
 TEST(SymplecticEuler, EachSubstepIsTheSymplecticEulerMap) {
     Oscillator o(10.0);
-    SymplecticEuler method = make_method();
+    SymplecticEuler method = symplectic_euler_make_method();
     const double h = 0.01, w2 = o.omega * o.omega;
     State expected = o.state;
     for (int step = 0; step < 50; ++step) {
@@ -39,7 +39,7 @@ TEST(SymplecticEuler, EachSubstepIsTheSymplecticEulerMap) {
 
 TEST(SymplecticEuler, TheEnergyStaysNearItsStartWithoutDrifting) {
     Oscillator o(2.0 * kPi);  // a period of 1 s
-    SymplecticEuler method = make_method();
+    SymplecticEuler method = symplectic_euler_make_method();
     const double h = 0.01;  // h omega = 0.063
     const double start = o.energy();
     const auto deviation_over_a_period = [&] {
@@ -58,7 +58,7 @@ TEST(SymplecticEuler, TheEnergyStaysNearItsStartWithoutDrifting) {
 }
 
 TEST(SymplecticEuler, BeyondItsStabilityIntervalItGrows) {
-    SymplecticEuler method = make_method();
+    SymplecticEuler method = symplectic_euler_make_method();
     EXPECT_EQ(method.stability_interval(), 2.0);
     for (const double h_omega : {1.9, 2.1}) {
         Oscillator o(10.0);

@@ -15,30 +15,30 @@
 namespace enteron::mechanics {
 namespace {
 
-constexpr std::size_t kPoints = 9, kCoordinates = 3 * kPoints;
+constexpr std::size_t kSystemMatrixPoints = 9, kSystemMatrixCoordinates = 3 * kSystemMatrixPoints;
 
 Eigen::MatrixXd dense(const SystemMatrix& m) {
-    Eigen::MatrixXd out(kCoordinates, kCoordinates);
-    for (std::size_t i = 0; i < kCoordinates; ++i)
-        for (std::size_t j = 0; j < kCoordinates; ++j) out(i, j) = m.at(i, j);
+    Eigen::MatrixXd out(kSystemMatrixCoordinates, kSystemMatrixCoordinates);
+    for (std::size_t i = 0; i < kSystemMatrixCoordinates; ++i)
+        for (std::size_t j = 0; j < kSystemMatrixCoordinates; ++j) out(i, j) = m.at(i, j);
     return out;
 }
 
 // (w w^T) (x) S on points first .. first+3, dense.
 Eigen::MatrixXd kron(const spline::SegmentWeights& w, const Mat3& s) {
-    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(kCoordinates, kCoordinates);
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(kSystemMatrixCoordinates, kSystemMatrixCoordinates);
     for (std::size_t a = 0; a < 4; ++a)
         for (std::size_t b = 0; b < 4; ++b) out.block<3, 3>(3 * (w.first + a), 3 * (w.first + b)) = w.w[a] * w.w[b] * s;
     return out;
 }
 
-spline::SegmentWeights weights(std::size_t segment, double t) {
-    return spline::segment_weights(kPoints, segment, t, spline::Derivative::first);
+spline::SegmentWeights system_matrix_weights(std::size_t segment, double t) {
+    return spline::segment_weights(kSystemMatrixPoints, segment, t, spline::Derivative::first);
 }
 
 SystemMatrix zero_system() {
     SystemMatrix m;
-    m.resize(kCoordinates);
+    m.resize(kSystemMatrixCoordinates);
     return m;
 }
 
@@ -46,7 +46,7 @@ TEST(SystemMatrix, AnAxialBlockIsTheKroneckerProductOfItsLaw) {
     const Vec3 u = Vec3(0.2, -0.6, 0.7).normalized();
     for (std::size_t segment : {0u, 3u, 7u}) {
         SystemMatrix m = zero_system();
-        const spline::SegmentWeights w = weights(segment, 0.3);
+        const spline::SegmentWeights w = system_matrix_weights(segment, 0.3);
         add_axial_block(m, w, u, 50.0, 2.0, 0.01);
         const Mat3 law = 50.0 * u * u.transpose() + 2.0 * Mat3::Identity();
         EXPECT_LT((dense(m) - 0.01 * kron(w, law)).cwiseAbs().maxCoeff(), 1e-14) << "segment " << segment;
@@ -56,7 +56,7 @@ TEST(SystemMatrix, AnAxialBlockIsTheKroneckerProductOfItsLaw) {
 }
 
 TEST(SystemMatrix, APairOfAxialBlocksIsTheSumOfTwo) {
-    const spline::SegmentWeights w0 = weights(4, 0.21), w1 = weights(4, 0.79);
+    const spline::SegmentWeights w0 = system_matrix_weights(4, 0.21), w1 = system_matrix_weights(4, 0.79);
     const Vec3 u0 = Vec3(1, 2, 3).normalized(), d1(0.5, -1.0, 0.25);  // d1 need not be a unit vector when b = 0
     SystemMatrix pair = zero_system(), single = zero_system();
     add_axial_block_pair(pair, w0, u0, 3.0, 0.5, w1, d1, 7.0 / d1.squaredNorm(), 0.0);
@@ -71,9 +71,9 @@ TEST(SystemMatrix, ASegmentBlockAddsItsSumOnce) {
     SegmentBlock block;
     block.reset(2);
     EXPECT_EQ(block.first(), 2u);
-    Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(kCoordinates, kCoordinates);
+    Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(kSystemMatrixCoordinates, kSystemMatrixCoordinates);
     for (const double t : {0.1, 0.5, 0.9}) {
-        spline::SegmentWeights w = spline::segment_weights(kPoints, 3, t, spline::Derivative::value);
+        spline::SegmentWeights w = spline::segment_weights(kSystemMatrixPoints, 3, t, spline::Derivative::value);
         Mat3 a;
         for (int i = 0; i < 9; ++i) a(i / 3, i % 3) = uniform(random);
         const Mat3 s = a + a.transpose();
@@ -88,33 +88,33 @@ TEST(SystemMatrix, ASegmentBlockAddsItsSumOnce) {
 
 TEST(SystemMatrix, APerCoordinateMatrixIsAddedToXYAndZ) {
     numerics::ScalarBandMatrix b;
-    b.resize(kPoints);
-    for (std::size_t i = 0; i < kPoints; ++i)
+    b.resize(kSystemMatrixPoints);
+    for (std::size_t i = 0; i < kSystemMatrixPoints; ++i)
         for (std::size_t j = i >= 3 ? i - 3 : 0; j <= i; ++j) b.add(i, j, 1.0 + double(i) + 0.1 * double(j));
     SystemMatrix m = zero_system();
     add_per_coordinate(b, 2.0, m);
-    for (std::size_t i = 0; i < kCoordinates; ++i)
-        for (std::size_t j = 0; j < kCoordinates; ++j)
+    for (std::size_t i = 0; i < kSystemMatrixCoordinates; ++i)
+        for (std::size_t j = 0; j < kSystemMatrixCoordinates; ++j)
             EXPECT_EQ(m.at(i, j), i % 3 == j % 3 ? 2.0 * b.at(i / 3, j / 3) : 0.0) << i << ", " << j;
 }
 
 TEST(SystemMatrix, APointForceReachesItsFourControlPoints) {
-    const spline::SegmentWeights w0 = spline::segment_weights(kPoints, 5, 0.3, spline::Derivative::value);
-    const spline::SegmentWeights w1 = spline::segment_weights(kPoints, 5, 0.8, spline::Derivative::value);
+    const spline::SegmentWeights w0 = spline::segment_weights(kSystemMatrixPoints, 5, 0.3, spline::Derivative::value);
+    const spline::SegmentWeights w1 = spline::segment_weights(kSystemMatrixPoints, 5, 0.8, spline::Derivative::value);
     const Vec3 f0(1.0, -2.0, 0.5), f1(0.0, 3.0, -1.0);
-    std::vector<double> single(kCoordinates, 0.0), pair(kCoordinates, 0.0), expected(kCoordinates, 0.0);
+    std::vector<double> single(kSystemMatrixCoordinates, 0.0), pair(kSystemMatrixCoordinates, 0.0), expected(kSystemMatrixCoordinates, 0.0);
     add_point_force(w0, f0, single.data());
     add_point_force(w1, f1, single.data());
     add_point_force_pair(w0, f0, w1, f1, pair.data());
     for (std::size_t k = 0; k < 4; ++k)
         for (int c = 0; c < 3; ++c) expected[3 * (w0.first + k) + c] = w0.w[k] * f0[c] + w1.w[k] * f1[c];
-    for (std::size_t i = 0; i < kCoordinates; ++i) {
+    for (std::size_t i = 0; i < kSystemMatrixCoordinates; ++i) {
         EXPECT_NEAR(single[i], expected[i], 1e-15);
         EXPECT_NEAR(pair[i], expected[i], 1e-15);
     }
     // The total force is kept (the value weights sum to one).
     Vec3 total = Vec3::Zero();
-    for (std::size_t i = 0; i < kPoints; ++i) total += point_at(pair.data(), i);
+    for (std::size_t i = 0; i < kSystemMatrixPoints; ++i) total += point_at(pair.data(), i);
     EXPECT_LT((total - f0 - f1).norm(), 1e-14);
 }
 

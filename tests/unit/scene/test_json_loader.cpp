@@ -239,8 +239,9 @@ TEST(JsonLoader, UnknownKeysAtEveryLevel) {
     EXPECT_TRUE(starts_with(top, "unknown key \"foo\" at the top level (expected one of: version, intestine,"))
         << top;
     expect_scene_error(R"({"intestine": {"lenght": 2}})",
-                       "unknown key \"lenght\" in intestine (expected one of: length, radius, control_points, "
-                       "linear_density, stretch_stiffness, bend_stiffness, shape)");
+                       "unknown key \"lenght\" in intestine (expected one of: length, radius, radius_profile, "
+                       "control_points, linear_density, linear_density_profile, stretch_stiffness, "
+                       "stretch_stiffness_profile, bend_stiffness, bend_stiffness_profile, shape)");
     const char* const nested[][2] = {
         {R"({"intestine": {"shape": {"foo": 1}}})", "unknown key \"foo\" in intestine.shape "},
         {R"({"solver": {"foo": 1}})", "unknown key \"foo\" in solver "},

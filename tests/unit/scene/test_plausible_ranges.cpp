@@ -12,11 +12,12 @@
 #include "scene/scene_config.h"
 #include "scene/scene_table.h"
 #include "scene/validate.h"
+#include "test_helpers.h"
 
 namespace enteron::scene {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using enteron_test::contains;
 
 std::vector<std::string> warnings_of(const SceneConfig& config, const FieldNames& names) {
     std::vector<std::string> lines;

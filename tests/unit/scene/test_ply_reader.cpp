@@ -23,7 +23,7 @@ const double kVertices[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5
 const std::vector<std::vector<int>> kFaces = {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
 
 template <class T>
-void put(std::string& out, T value, bool big_endian) {
+void ply_reader_put(std::string& out, T value, bool big_endian) {
     char raw[sizeof(T)];
     std::memcpy(raw, &value, sizeof(T));
     if (big_endian)
@@ -48,11 +48,11 @@ std::string pyramid(const std::string& format, const std::string& real, bool fac
         if (!binary) {
             vertices += std::to_string(v[0]) + " " + std::to_string(v[1]) + " 255 " + std::to_string(v[2]) + "\n";
         } else if (real == "float") {
-            put<float>(vertices, float(v[0]), big), put<float>(vertices, float(v[1]), big);
-            put<uint8_t>(vertices, 255, big), put<float>(vertices, float(v[2]), big);
+            ply_reader_put<float>(vertices, float(v[0]), big), ply_reader_put<float>(vertices, float(v[1]), big);
+            ply_reader_put<uint8_t>(vertices, 255, big), ply_reader_put<float>(vertices, float(v[2]), big);
         } else {
-            put<double>(vertices, v[0], big), put<double>(vertices, v[1], big);
-            put<uint8_t>(vertices, 255, big), put<double>(vertices, v[2], big);
+            ply_reader_put<double>(vertices, v[0], big), ply_reader_put<double>(vertices, v[1], big);
+            ply_reader_put<uint8_t>(vertices, 255, big), ply_reader_put<double>(vertices, v[2], big);
         }
     }
     for (const auto& f : kFaces) {
@@ -61,13 +61,13 @@ std::string pyramid(const std::string& format, const std::string& real, bool fac
             for (int i : f) faces += " " + std::to_string(i);
             faces += " 0.5\n";
         } else {
-            put<uint8_t>(faces, uint8_t(f.size()), big);
-            for (int i : f) put<int32_t>(faces, i, big);
-            put<float>(faces, 0.5f, big);
+            ply_reader_put<uint8_t>(faces, uint8_t(f.size()), big);
+            for (int i : f) ply_reader_put<int32_t>(faces, i, big);
+            ply_reader_put<float>(faces, 0.5f, big);
         }
     }
     if (!binary) edges = "0 2 1 2\n";
-    else put<int32_t>(edges, 0, big), put<uint8_t>(edges, 2, big), put<int32_t>(edges, 1, big), put<int32_t>(edges, 2, big);
+    else ply_reader_put<int32_t>(edges, 0, big), ply_reader_put<uint8_t>(edges, 2, big), ply_reader_put<int32_t>(edges, 1, big), ply_reader_put<int32_t>(edges, 2, big);
     return out + (faces_first ? faces + edges + vertices : vertices + edges + faces);
 }
 

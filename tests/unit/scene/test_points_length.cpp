@@ -35,7 +35,7 @@ std::vector<double> arc_points(std::size_t n, double r, double angle) {
     return points;
 }
 
-std::vector<std::string> warnings_of(const SceneConfig& config) {
+std::vector<std::string> points_length_warnings_of(const SceneConfig& config) {
     std::vector<std::string> lines;
     const Logger logger(
         [](void* user, int32_t, const char* message) { static_cast<std::vector<std::string>*>(user)->push_back(message); },
@@ -66,16 +66,16 @@ TEST(PointsLength, ALengthGivenThatDisagreesBeyondOnePercentIsWarnedAbout) {
     SceneConfig config = points_scene(arc_points(13, 0.1, M_PI));
     const double spline = points_spline_length(config);
     config.intestine.length = spline;
-    EXPECT_TRUE(warnings_of(config).empty());
+    EXPECT_TRUE(points_length_warnings_of(config).empty());
     config.intestine.length = spline * (1.0 + 0.5 * kPointsLengthTolerance);
-    EXPECT_TRUE(warnings_of(config).empty()) << "within the tolerance";
+    EXPECT_TRUE(points_length_warnings_of(config).empty()) << "within the tolerance";
     config.intestine.length = spline / 1.05;  // the spline is 5 % longer than its rest length
-    const std::vector<std::string> stretched = warnings_of(config);
+    const std::vector<std::string> stretched = points_length_warnings_of(config);
     ASSERT_EQ(stretched.size(), 1u);
     EXPECT_NE(stretched[0].find("intestine.length"), std::string::npos) << stretched[0];
     EXPECT_NE(stretched[0].find("stretched by 5"), std::string::npos) << stretched[0];
     config.intestine.length = spline * 1.05;
-    const std::vector<std::string> compressed = warnings_of(config);
+    const std::vector<std::string> compressed = points_length_warnings_of(config);
     ASSERT_EQ(compressed.size(), 1u);
     EXPECT_NE(compressed[0].find("compressed"), std::string::npos) << compressed[0];
 }
@@ -90,7 +90,7 @@ TEST(PointsLength, PointsSpacedUnevenlyAreWarnedAboutWhereTheyAre) {
     }
     SceneConfig config = points_scene(points);
     config.intestine.length = points_spline_length(config);
-    const std::vector<std::string> lines = warnings_of(config);
+    const std::vector<std::string> lines = points_length_warnings_of(config);
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_NE(lines[0].find("spaced unevenly"), std::string::npos) << lines[0];
     EXPECT_NE(lines[0].find("points 4 and 5"), std::string::npos) << lines[0];

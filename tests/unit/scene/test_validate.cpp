@@ -13,9 +13,12 @@
 #include "scene/json_loader.h"
 #include "scene/shape_builder.h"
 #include "scene/validate.h"
+#include "test_helpers.h"
 
 namespace enteron::scene {
 namespace {
+
+using enteron_test::contains;
 
 Error validate_error(const SceneConfig& config, const FieldNames& names) {
     try {
@@ -27,7 +30,6 @@ Error validate_error(const SceneConfig& config, const FieldNames& names) {
     return Error(ErrorCode::internal, "");
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 std::string json_error(const std::string& text) {
     try {

@@ -16,7 +16,7 @@ namespace enteron::skinning {
 namespace {
 
 // Control points on a circle of radius r in the x-y plane, `count` of them over `angle` rad.
-std::vector<double> arc_points(double r, double angle, std::size_t count) {
+std::vector<double> axis_samples_arc_points(double r, double angle, std::size_t count) {
     std::vector<double> q;
     for (std::size_t i = 0; i < count; ++i) {
         const double a = angle * double(i) / double(count - 1);
@@ -26,7 +26,7 @@ std::vector<double> arc_points(double r, double angle, std::size_t count) {
 }
 
 TEST(AxisSamples, SamplesAreOnTheSplineEvenlyInArcLength) {
-    const std::vector<double> q = arc_points(0.1, 2.0, 30);
+    const std::vector<double> q = axis_samples_arc_points(0.1, 2.0, 30);
     spline::ArcLengthTable table;
     table.build(q.data(), 30);
     AxisSamples samples;
@@ -70,7 +70,7 @@ TEST(AxisSamples, PhantomsContinueAStraightEndStraightAndABentOneOnItsCircle) {
         EXPECT_LT(samples.arc_length(i), 0.0);
     }
     // A bent end: the phantoms stay on the circle the end osculates (radius 0.1 m here).
-    const std::vector<double> bent = arc_points(0.1, 1.5, 20);
+    const std::vector<double> bent = axis_samples_arc_points(0.1, 1.5, 20);
     table.build(bent.data(), 20);
     samples.build(table, bent.data(), 20, 30, 0.04, AxisSamples::Curvature::compute);
     const std::size_t last = samples.size() - 1;
@@ -82,7 +82,7 @@ TEST(AxisSamples, PhantomsContinueAStraightEndStraightAndABentOneOnItsCircle) {
 }
 
 TEST(AxisSamples, SamplesAtGivenArcLengthsLandThere) {
-    const std::vector<double> q = arc_points(0.2, 1.0, 12);
+    const std::vector<double> q = axis_samples_arc_points(0.2, 1.0, 12);
     spline::ArcLengthTable table;
     table.build(q.data(), 12);
     const double total = table.total_length();

@@ -21,7 +21,7 @@ using skin_test::kPi;
 
 const SkinMethod kMethods[] = {SkinMethod::tube, SkinMethod::point_skeleton, SkinMethod::convolution};
 
-const char* name(SkinMethod m) {
+const char* skin_name(SkinMethod m) {
     return m == SkinMethod::tube ? "tube" : m == SkinMethod::point_skeleton ? "point_skeleton" : "convolution";
 }
 
@@ -30,16 +30,16 @@ TEST(Skins, StraightTubeRadiusErrorBelowHalfAPercentAtDefaultResolution) {
     for (SkinMethod method : kMethods) {
         auto skin = make_skin(defaults(method));
         const SkinMetrics m = skin_and_measure(*skin, q);
-        EXPECT_LT(m.radius_error_rms, 0.005) << name(method);
-        EXPECT_TRUE(m.watertight) << name(method);
-        EXPECT_EQ(m.blended_vertices, 0u) << name(method);
-        EXPECT_EQ(m.inverted_triangles, 0u) << name(method);
+        EXPECT_LT(m.radius_error_rms, 0.005) << skin_name(method);
+        EXPECT_TRUE(m.watertight) << skin_name(method);
+        EXPECT_EQ(m.blended_vertices, 0u) << skin_name(method);
+        EXPECT_EQ(m.inverted_triangles, 0u) << skin_name(method);
         // Volume: the ideal tube plus the rounded ends (4 R / 3 L), less what a 16-gon
         // section misses of the circle (2.5 %) for the ring methods.
         const double section = method == SkinMethod::point_skeleton ? 0.0 : 16 / (2 * kPi) * std::sin(2 * kPi / 16) - 1;
         // Marching-cubes facets of a third of R cut inside the surface by about 2 %.
         EXPECT_NEAR(m.volume_error, 4.0 * R / 3.0 + section, method == SkinMethod::point_skeleton ? 0.03 : 0.005)
-            << name(method);
+            << skin_name(method);
         EXPECT_NEAR(m.axis_length, 1.0, 1e-9);
         for (float u : skin->mesh().u) {
             ASSERT_GE(u, 0.0f);
@@ -66,9 +66,9 @@ TEST(Skins, TightUTurnNeverBlendsTheLegs) {
     for (SkinMethod method : {SkinMethod::point_skeleton, SkinMethod::convolution}) {
         auto skin = make_skin(defaults(method));
         const SkinMetrics m = skin_and_measure(*skin, q);
-        EXPECT_EQ(m.blended_vertices, 0u) << name(method);
-        EXPECT_TRUE(m.watertight) << name(method);
-        EXPECT_LT(m.radius_error_rms, 0.05) << name(method);
+        EXPECT_EQ(m.blended_vertices, 0u) << skin_name(method);
+        EXPECT_TRUE(m.watertight) << skin_name(method);
+        EXPECT_LT(m.radius_error_rms, 0.05) << skin_name(method);
     }
     // The same document with the window made global (every point sums the whole axis):
     // the metric sees the legs blend. This is what local convolution prevents.
@@ -99,7 +99,7 @@ TEST(Skins, RingsStopShortOfEachOtherAtABendTighterThanR) {
                 s.segments = spacing < 0.5 ? 32 : spacing > 0.5 ? 8 : 16;
                 auto skin = make_skin(s);
                 const SkinMetrics m = skin_and_measure(*skin, q);
-                EXPECT_EQ(m.inverted_triangles, 0u) << name(method) << " gap " << gap << " R, rings " << spacing << " R";
+                EXPECT_EQ(m.inverted_triangles, 0u) << skin_name(method) << " gap " << gap << " R, rings " << spacing << " R";
                 EXPECT_TRUE(m.watertight);
                 if (method == SkinMethod::tube) {
                     EXPECT_GT(m.blended_vertices, 0u);
@@ -119,10 +119,10 @@ TEST(Skins, ImplicitMethodsAreWatertightOnBentAndCoiledAxes) {
         auto skin = make_skin(defaults(method));
         for (const auto& q : axes) {
             const SkinMetrics m = skin_and_measure(*skin, q);
-            EXPECT_TRUE(m.watertight) << name(method) << ": " << m.open_edges << " open, " << m.nonmanifold_edges
+            EXPECT_TRUE(m.watertight) << skin_name(method) << ": " << m.open_edges << " open, " << m.nonmanifold_edges
                                       << " non-manifold edges";
-            EXPECT_GT(m.volume, 0.0) << name(method);  // wound outwards
-            EXPECT_EQ(m.blended_vertices, 0u) << name(method);
+            EXPECT_GT(m.volume, 0.0) << skin_name(method);  // wound outwards
+            EXPECT_EQ(m.blended_vertices, 0u) << skin_name(method);
         }
     }
 }

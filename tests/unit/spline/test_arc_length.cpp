@@ -14,13 +14,13 @@ namespace {
 
 using enteron::spline::ArcLengthTable;
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kArcLengthPi = 3.14159265358979323846;
 
 std::vector<double> circle_points(std::size_t n, double radius) {
     // A closed circle: the first and the last control point coincide.
     std::vector<double> q(3 * n);
     for (std::size_t i = 0; i < n; ++i) {
-        const double a = 2 * kPi * double(i) / double(n - 1);
+        const double a = 2 * kArcLengthPi * double(i) / double(n - 1);
         q[3 * i] = radius * std::cos(a);
         q[3 * i + 1] = radius * std::sin(a);
         q[3 * i + 2] = 0.1;
@@ -32,7 +32,7 @@ double circle_length_error(std::size_t n, double radius) {
     const auto q = circle_points(n, radius);
     ArcLengthTable table;
     table.build(q.data(), n);
-    return std::fabs(table.total_length() - 2 * kPi * radius) / (2 * kPi * radius);
+    return std::fabs(table.total_length() - 2 * kArcLengthPi * radius) / (2 * kArcLengthPi * radius);
 }
 
 TEST(ArcLength, CircleLengthApproachesTwoPiR) {
