@@ -45,7 +45,7 @@
 #include <thread>
 #include <vector>
 
-#include "wakeup.h"
+#include "lcm/wakeup.h"
 
 namespace {
 
@@ -141,7 +141,7 @@ void run_timer(const Options& o) {
 // ---- handoff: physics thread -> publishing thread ------------------------------------------------
 void run_handoff(const Options& o) {
     const std::size_t ticks = static_cast<std::size_t>(o.seconds * 1000.0);
-    enteron::bridge::Wakeup wakeup;
+    enteron::lcm::Wakeup wakeup;
     std::atomic<int64_t> notified_ns{0};
     std::atomic<bool> stop{false};
     std::vector<double> delay_us;

@@ -66,7 +66,7 @@ edit include/enteron/enteron.h \
     '^(    double length_m; +/\*\*< rest length of the axis.*?\*/\n)' \
     '\1#if ENTERON_ABI_VARIANT == 2 /* inserted_field */\n    double inserted_by_abi_test;\n#endif\n'
 edit include/enteron/enteron.h \
-    '^(    uint64_t last_step_ns; [^\n]*\n)' \
+    '^(    uint64_t full_contact_searches; [^\n]*\n)' \
     '\1#if ENTERON_ABI_VARIANT == 3 /* appended_field */\n    double appended_by_abi_test;\n#endif\n'
 edit lib/CMakeLists.txt \
     '^(target_compile_definitions\(enteron PRIVATE ENTERON_BUILDING_LIBRARY)\)' \
