@@ -108,10 +108,9 @@ int main(int argc, char** argv) {
             if (arg == "--script") script_name = value;
             if (arg == "--skin") {
                 ent_skin_desc_default(&settings.session.skin);
-                if (value == "tube") settings.session.skin.method = ENT_SKIN_TUBE;
-                else if (value == "point_skeleton") settings.session.skin.method = ENT_SKIN_POINT_SKELETON;
-                else if (value == "convolution") settings.session.skin.method = ENT_SKIN_CONVOLUTION;
-                else return usage_error("--skin wants tube, point_skeleton or convolution, got " + value);
+                settings.session.skin.method = skin_method_named(value);
+                if (settings.session.skin.method < 0)
+                    return usage_error("--skin wants tube, point_skeleton or convolution, got " + value);
             }
             if (arg == "--ui") {
                 ui_given = true;

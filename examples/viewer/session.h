@@ -20,10 +20,19 @@
 
 namespace viewer {
 
-// An ent_skin_desc.method's name, as the command line spells it ("?" for none of them).
+// The ENT_SKIN_* methods' names, as the command line spells them (--skin), by their value.
+inline constexpr const char* kSkinMethodNames[] = {"tube", "point_skeleton", "convolution"};
+
+// An ent_skin_desc.method's name ("?" for none of them).
 inline const char* skin_method_name(std::int32_t method) {
-    static const char* const names[] = {"tube", "point_skeleton", "convolution"};
-    return method >= 0 && method < 3 ? names[method] : "?";
+    return method >= 0 && method < 3 ? kSkinMethodNames[method] : "?";
+}
+
+// The ENT_SKIN_* value a name stands for, or -1.
+inline std::int32_t skin_method_named(const std::string& name) {
+    for (std::int32_t method = 0; method < 3; ++method)
+        if (name == kSkinMethodNames[method]) return method;
+    return -1;
 }
 
 // The ENT_ERROR_* name of a status, as enteron.h spells it.

@@ -4,6 +4,7 @@
 // and sizes no release has are refused with ENT_ERROR_VERSION and nothing written.
 // (tests/abi/old_caller.c does the same from a program built against an older header.)
 #include "capi_test_support.h"
+#include "test_helpers.h"
 
 #include <cstddef>
 
@@ -18,7 +19,7 @@ constexpr uint32_t kOldStatsSize = offsetof(ent_stats, last_step_ns);
 // 0.1: ent_stats up to last_step_ns, before what a slow step did.
 constexpr uint32_t kStatsSize01 = offsetof(ent_stats, last_step_attempts);
 
-bool contains_text(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using enteron_test::contains;
 
 bool all_bytes(const void* memory, std::size_t from, std::size_t to, unsigned char value) {
     const auto* bytes = static_cast<const unsigned char*>(memory);
@@ -52,7 +53,7 @@ TEST(StructSize, UnknownSizesAreRefusedAndNothingIsWritten) {
         ent_scene_desc desc;
         std::memset(&desc, 0xcd, sizeof desc);
         EXPECT_EQ(ent_scene_desc_init(&desc, size), ENT_ERROR_VERSION);
-        EXPECT_TRUE(contains_text(ent_last_error(), "ent_scene_desc.struct_size is " + std::to_string(size)))
+        EXPECT_TRUE(contains(ent_last_error(), "ent_scene_desc.struct_size is " + std::to_string(size)))
             << ent_last_error();
         EXPECT_TRUE(all_bytes(&desc, 0, sizeof desc, 0xcd));
     }
@@ -61,7 +62,7 @@ TEST(StructSize, UnknownSizesAreRefusedAndNothingIsWritten) {
         ent_callbacks callbacks;
         std::memset(&callbacks, 0xcd, sizeof callbacks);
         EXPECT_EQ(ent_callbacks_init(&callbacks, size), ENT_ERROR_VERSION);
-        EXPECT_TRUE(contains_text(ent_last_error(), "ent_callbacks.struct_size")) << ent_last_error();
+        EXPECT_TRUE(contains(ent_last_error(), "ent_callbacks.struct_size")) << ent_last_error();
         EXPECT_TRUE(all_bytes(&callbacks, 0, sizeof callbacks, 0xcd));
     }
     EXPECT_EQ(ent_scene_desc_init(nullptr, sizeof(ent_scene_desc)), ENT_ERROR_INVALID_ARGUMENT);
@@ -139,7 +140,7 @@ TEST(StructSize, OldSkinDescriptionsAreServedWithEvenRings) {
     // The current size refuses that value by name.
     full.ring_chord_error_radii = -1.0;
     EXPECT_EQ(ent_skin_create(scene.get(), &full, &skin), ENT_ERROR_INVALID_ARGUMENT);
-    EXPECT_TRUE(contains_text(ent_last_error(), "ring_chord_error_radii")) << ent_last_error();
+    EXPECT_TRUE(contains(ent_last_error(), "ring_chord_error_radii")) << ent_last_error();
 }
 
 // ent_skin_desc before contact surfaces and the curvature-following skeleton, and
@@ -194,7 +195,7 @@ TEST(StructSize, ToolFeedbackBeforeSaturatedIsServed) {
     std::memset(&between, 0xcd, sizeof between);
     between.struct_size = kBeforeSaturated + 2;
     EXPECT_EQ(ent_tool_read_feedback(scene.get(), 0, &between), ENT_ERROR_VERSION);
-    EXPECT_TRUE(contains_text(ent_last_error(), "ent_tool_feedback.struct_size")) << ent_last_error();
+    EXPECT_TRUE(contains(ent_last_error(), "ent_tool_feedback.struct_size")) << ent_last_error();
 }
 
 }  // namespace
