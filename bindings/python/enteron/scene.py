@@ -156,16 +156,27 @@ class SceneDesc:
       bend_stiffness_profile_N_m2
                           an (n, 2) array-like of pairs (s m, value): a property along the
                           length in place of its constant (sets its _count)
+      mesentery_root_points_m
+                          an (n, 3) array-like: the mesentery's root as a polyline of n >= 2
+                          points (sets mesentery_root_point_count)
+      mesentery_root_mapping, pinned_spans_m
+                          an (n, 2) array-like of pairs: (s m, t) where along the root the
+                          bowel at s is tied; (from m, to m) spans of the bowel held in place
     The arrays are copied and kept with the description until the scene is created. The
     count of an array always comes from the array; an integer field that its C type cannot
     hold (control_points=2**32 + 10) raises OverflowError naming the field, never wraps."""
 
-    # The profiles (ent_scene_desc: a pointer to pairs, and their count), by pointer field.
+    # Arrays of pairs (ent_scene_desc: a pointer to pairs, and their count), by pointer field:
+    # the profiles, the mesentery's root mapping and the pinned spans.
     _PROFILES = {"radius_profile_m": "radius_profile_count",
                  "linear_density_profile_kg_per_m": "linear_density_profile_count",
                  "stretch_stiffness_profile_N": "stretch_stiffness_profile_count",
-                 "bend_stiffness_profile_N_m2": "bend_stiffness_profile_count"}
-    _ARRAYS = ("shape_points_xyz_m", "pinned_points") + tuple(_PROFILES)
+                 "bend_stiffness_profile_N_m2": "bend_stiffness_profile_count",
+                 "mesentery_root_mapping": "mesentery_root_mapping_count",
+                 "pinned_spans_m": "pinned_span_count"}
+    # Arrays of points (x y z, m), by pointer field: the mesentery's root.
+    _POINTS = {"mesentery_root_points_m": "mesentery_root_point_count"}
+    _ARRAYS = ("shape_points_xyz_m", "pinned_points") + tuple(_PROFILES) + tuple(_POINTS)
 
     def __init__(self, **fields):
         self.struct = s.ent_scene_desc()
@@ -181,7 +192,7 @@ class SceneDesc:
             object.__setattr__(self, name, value)
             return
         known = ({field[0] for field in s.ent_scene_desc._fields_} - {"struct_size", "callbacks", "pinned_point_count"}
-                 - set(self._PROFILES.values()))
+                 - set(self._PROFILES.values()) - set(self._POINTS.values()))
         if name not in known:
             raise AttributeError("ent_scene_desc has no settable field %r" % name)
         if name == "effects" and not isinstance(value, int):
@@ -205,6 +216,16 @@ class SceneDesc:
             self.struct.control_points = count
             if "length_m" not in self._given:
                 self.struct.length_m = 0.0  # the length of the spline through them: it starts at rest
+            return
+        if name in self._POINTS:
+            points = np.ascontiguousarray(value, dtype=np.float64)
+            if points.ndim != 2 or points.shape[1] != 3:
+                raise ValueError("SceneDesc.%s must be an (n, 3) array of x y z in m, got shape %s"
+                                 % (name, points.shape))
+            count = _fields.checked_integer(ctypes.c_uint32, len(points), "the point count of " + name)
+            self._keep[name] = points
+            setattr(self.struct, name, points.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
+            setattr(self.struct, self._POINTS[name], count)
             return
         if name in self._PROFILES:
             pairs = np.ascontiguousarray(value, dtype=np.float64)
