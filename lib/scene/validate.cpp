@@ -628,6 +628,7 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
              {&placeholder.intestine.radius_profile, &placeholder.intestine.linear_density_profile,
               &placeholder.intestine.stretch_stiffness_profile, &placeholder.intestine.bend_stiffness_profile})
             profile->clear();
+        if (placeholder.pinned) placeholder.pinned->spans.clear();  // checked against the length
         validator.walk(Scope{nullptr, scene_block(), &placeholder, "", ""}, Validator::Pass::values);
         config.intestine.length = points_spline_length(config);
         if (!(config.intestine.length > config.intestine.radius))

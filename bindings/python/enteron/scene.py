@@ -217,25 +217,17 @@ class SceneDesc:
             if "length_m" not in self._given:
                 self.struct.length_m = 0.0  # the length of the spline through them: it starts at rest
             return
-        if name in self._POINTS:
-            points = np.ascontiguousarray(value, dtype=np.float64)
-            if points.ndim != 2 or points.shape[1] != 3:
-                raise ValueError("SceneDesc.%s must be an (n, 3) array of x y z in m, got shape %s"
-                                 % (name, points.shape))
-            count = _fields.checked_integer(ctypes.c_uint32, len(points), "the point count of " + name)
-            self._keep[name] = points
-            setattr(self.struct, name, points.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
-            setattr(self.struct, self._POINTS[name], count)
-            return
-        if name in self._PROFILES:
-            pairs = np.ascontiguousarray(value, dtype=np.float64)
-            if pairs.ndim != 2 or pairs.shape[1] != 2:
-                raise ValueError("SceneDesc.%s must be an (n, 2) array of pairs (s in m, value), got shape %s"
-                                 % (name, pairs.shape))
-            count = _fields.checked_integer(ctypes.c_uint32, len(pairs), "the pair count of " + name)
-            self._keep[name] = pairs
-            setattr(self.struct, name, pairs.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
-            setattr(self.struct, self._PROFILES[name], count)
+        if name in self._PROFILES or name in self._POINTS:
+            width, looks = (3, "x y z in m") if name in self._POINTS else (2, "pairs (s in m, value)")
+            rows = np.ascontiguousarray(value, dtype=np.float64)
+            if rows.ndim != 2 or rows.shape[1] != width:
+                raise ValueError("SceneDesc.%s must be an (n, %d) array of %s, got shape %s"
+                                 % (name, width, looks, rows.shape))
+            count = _fields.checked_integer(ctypes.c_uint32, len(rows), "the %s count of %s"
+                                            % ("point" if width == 3 else "pair", name))
+            self._keep[name] = rows
+            setattr(self.struct, name, rows.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
+            setattr(self.struct, {**self._PROFILES, **self._POINTS}[name], count)
             return
         if name == "pinned_points":
             indices = np.array([_fields.checked_integer(ctypes.c_uint32, index, "SceneDesc.pinned_points[%d]" % n)
@@ -277,12 +269,13 @@ class SceneDesc:
         if self.struct.pinned_point_count != len(indices) or (len(indices) and pointer != indices.ctypes.data):
             raise ValueError("SceneDesc.pinned_point_count is %d but pinned_points holds %d indices: set "
                              "pinned_points instead" % (self.struct.pinned_point_count, len(indices)))
-        for name, count_name in self._PROFILES.items():
-            pairs = self._keep.get(name, np.zeros((0, 2)))
+        for name, count_name in {**self._PROFILES, **self._POINTS}.items():
+            rows = self._keep.get(name, np.zeros((0, 2)))
             pointer = ctypes.cast(getattr(self.struct, name), ctypes.c_void_p).value
-            if getattr(self.struct, count_name) != len(pairs) or (len(pairs) and pointer != pairs.ctypes.data):
-                raise ValueError("SceneDesc.%s is %d but %s holds %d pairs: set %s instead"
-                                 % (count_name, getattr(self.struct, count_name), name, len(pairs), name))
+            if getattr(self.struct, count_name) != len(rows) or (len(rows) and pointer != rows.ctypes.data):
+                raise ValueError("SceneDesc.%s is %d but %s holds %d %s: set %s instead"
+                                 % (count_name, getattr(self.struct, count_name), name, len(rows),
+                                    "points" if name in self._POINTS else "pairs", name))
         return self.struct
 
     def __getattr__(self, name):
