@@ -87,6 +87,31 @@ TEST(JsonLoader, FullDocumentGivesEveryValue) {
     EXPECT_EQ(c.pinned->points, (std::vector<uint32_t>{3, 40}));
 }
 
+// The root as a polyline: its points kept, the segment read as its ends; two points are the
+// segment itself, as are root_start and root_end; the mapping and the spans as written.
+TEST(JsonLoader, TheFanMesenterysRootMappingAndSpans) {
+    const SceneConfig fan = load(R"({"intestine": {"length": 1},
+        "mesentery": {"root": [[-0.07, 0, 0], [0, 0.02, 0], [0.07, 0, 0.01]], "root_mapping": [[0, 0], [1, 1]]},
+        "environment": [{"type": "plane"}],
+        "pinned": {"spans": [{"from": 0.2, "to": 0.4}, {"from": 0.5, "to": 0.6, "obstacle": 0}]}})");
+    EXPECT_EQ(fan.mesentery->root_points, (std::vector<double>{-0.07, 0, 0, 0, 0.02, 0, 0.07, 0, 0.01}));
+    EXPECT_EQ(fan.mesentery->root_start, (Vec3{-0.07, 0.0, 0.0}));
+    EXPECT_EQ(fan.mesentery->root_end, (Vec3{0.07, 0.0, 0.01}));
+    EXPECT_EQ(fan.mesentery->root_mapping, (std::vector<double>{0, 0, 1, 1}));
+    ASSERT_EQ(fan.pinned->spans.size(), 2u);
+    EXPECT_EQ(fan.pinned->spans[0].from, 0.2);
+    EXPECT_EQ(fan.pinned->spans[0].to, 0.4);
+    EXPECT_FALSE(fan.pinned->spans[0].obstacle.has_value());
+    EXPECT_EQ(fan.pinned->spans[1].obstacle, std::optional<std::size_t>(0));
+    for (const char* segment : {R"({"mesentery": {"root": [[-0.1, 0, 0], [0.1, 0, 0.05]]}})",
+                                R"({"mesentery": {"root_start": [-0.1, 0, 0], "root_end": [0.1, 0, 0.05]}})"}) {
+        const SceneConfig c = load(segment);
+        EXPECT_TRUE(c.mesentery->root_points.empty()) << segment;
+        EXPECT_EQ(c.mesentery->root_start, (Vec3{-0.1, 0.0, 0.0})) << segment;
+        EXPECT_EQ(c.mesentery->root_end, (Vec3{0.1, 0.0, 0.05})) << segment;
+    }
+}
+
 TEST(JsonLoader, EmptyDocumentIsTheDefaultElasticBowelWithNoOtherEffect) {
     const SceneConfig c = load("{}");
     const SceneConfig defaults;
