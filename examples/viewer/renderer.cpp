@@ -490,11 +490,11 @@ void Renderer::draw_overlays(const SceneView& view) {
         const double n = static_cast<double>(frame.control_points_xyz_m.size() / 3);
         for (std::uint32_t k = 0; k < layout.attachments; ++k) {
             // Attachment k: spline parameter (k + 1/2) / K (n - 1), pulled toward the root
-            // point at the same fraction along the root (lib/mechanics/mesentery_force.h).
+            // point at the same fraction along the root, or where the mapping says
+            // (lib/mechanics/mesentery_force.h).
             const double fraction = (k + 0.5) / layout.attachments;
             const Eigen::Vector3d on_axis = axis_point(frame.control_points_xyz_m, fraction * (n - 1.0));
-            const Eigen::Vector3d root =
-                point(layout.root_start_m) + fraction * (point(layout.root_end_m) - point(layout.root_start_m));
+            const Eigen::Vector3d root = point(mesentery_root_point(layout, fraction).data());
             scratch_.insert(scratch_.end(), {static_cast<float>(on_axis.x()), static_cast<float>(on_axis.y()),
                                              static_cast<float>(on_axis.z()), static_cast<float>(root.x()),
                                              static_cast<float>(root.y()), static_cast<float>(root.z())});
@@ -525,8 +525,9 @@ void Renderer::draw_overlays(const SceneView& view) {
     surface_.use();
     glDepthMask(GL_FALSE);
     if (view.toggles.mesentery && layout.mesentery)
-        draw_capsule(point(layout.root_start_m), point(layout.root_end_m), 0.25 * layout.radius_m,
-                     make(linear(0.98f, 0.88f, 0.55f), 0.2f, 30.0f, 0.3f));
+        for (std::size_t i = 3; i + 2 < layout.root_m.size(); i += 3)
+            draw_capsule(point(&layout.root_m[i - 3]), point(&layout.root_m[i]), 0.25 * layout.radius_m,
+                         make(linear(0.98f, 0.88f, 0.55f), 0.2f, 30.0f, 0.3f));
     if (view.toggles.spheres && !frame.spheres_xyz_m.empty()) {
         scratch_.clear();
         for (std::size_t i = 0; i + 2 < frame.spheres_xyz_m.size(); i += 3)

@@ -86,6 +86,38 @@ ToolShape read_tool(const json& item) {
 
 }  // namespace
 
+std::array<double, 3> mesentery_root_point(const SceneLayout& layout, double f) {
+    const std::vector<double>& m = layout.root_mapping;
+    double t = f;
+    if (m.size() >= 4) {
+        const double s = f * layout.length_m;
+        const std::size_t pairs = m.size() / 2;
+        std::size_t k = 0;
+        while (k + 2 < pairs && s > m[2 * (k + 1)]) ++k;
+        const double u = std::clamp((s - m[2 * k]) / (m[2 * k + 2] - m[2 * k]), 0.0, 1.0);
+        t = (1.0 - u) * m[2 * k + 1] + u * m[2 * k + 3];
+    }
+    const std::vector<double>& r = layout.root_m;
+    const std::size_t points = r.size() / 3;
+    auto at = [&](std::size_t i, double w, std::size_t j) {
+        return std::array<double, 3>{r[3 * i] + w * (r[3 * j] - r[3 * i]), r[3 * i + 1] + w * (r[3 * j + 1] - r[3 * i + 1]),
+                                     r[3 * i + 2] + w * (r[3 * j + 2] - r[3 * i + 2])};
+    };
+    if (points == 2) return at(0, t, 1);
+    std::vector<double> lengths;
+    double total = 0.0;
+    for (std::size_t i = 1; i < points; ++i) {
+        lengths.push_back(std::hypot(r[3 * i] - r[3 * i - 3], r[3 * i + 1] - r[3 * i - 2], r[3 * i + 2] - r[3 * i - 1]));
+        total += lengths.back();
+    }
+    double remaining = std::clamp(t, 0.0, 1.0) * total;
+    for (std::size_t i = 1; i < points; ++i) {
+        if (remaining <= lengths[i - 1] && lengths[i - 1] > 0.0) return at(i - 1, remaining / lengths[i - 1], i);
+        remaining -= lengths[i - 1];
+    }
+    return at(points - 1, 0.0, points - 1);
+}
+
 bool read_scene_layout(const std::string& text, SceneLayout& layout, std::string& error) {
     const json document = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (document.is_discarded() || !document.is_object()) {
@@ -99,8 +131,8 @@ bool read_scene_layout(const std::string& text, SceneLayout& layout, std::string
     layout.radius_m = desc.radius_m;
     layout.control_points = desc.control_points;
     layout.timestep_s = desc.timestep_s;
-    std::copy(desc.mesentery_root_start_m, desc.mesentery_root_start_m + 3, layout.root_start_m);
-    std::copy(desc.mesentery_root_end_m, desc.mesentery_root_end_m + 3, layout.root_end_m);
+    layout.root_m.assign(desc.mesentery_root_start_m, desc.mesentery_root_start_m + 3);
+    layout.root_m.insert(layout.root_m.end(), desc.mesentery_root_end_m, desc.mesentery_root_end_m + 3);
     layout.attachments = desc.mesentery_attachments;
 
     const json empty = json::object();
@@ -120,12 +152,17 @@ bool read_scene_layout(const std::string& text, SceneLayout& layout, std::string
     if (document.contains("mesentery")) {
         const json& mesentery = document["mesentery"];
         layout.mesentery = true;
-        if (mesentery.contains("root") && mesentery["root"].size() == 2) {
-            for (int c = 0; c < 3; ++c) {
-                layout.root_start_m[c] = mesentery["root"][0][c].get<double>();
-                layout.root_end_m[c] = mesentery["root"][1][c].get<double>();
-            }
+        if (mesentery.contains("root")) {
+            layout.root_m.clear();
+            for (const json& p : mesentery["root"])
+                for (int c = 0; c < 3; ++c) layout.root_m.push_back(p[c].get<double>());
         }
+        for (const auto& [key, at] : {std::pair{"root_start", 0}, std::pair{"root_end", 3}})
+            if (mesentery.contains(key))
+                for (int c = 0; c < 3; ++c) layout.root_m[at + c] = mesentery[key][c].get<double>();
+        if (mesentery.contains("root_mapping"))
+            for (const json& pair : mesentery["root_mapping"])
+                for (int c = 0; c < 2; ++c) layout.root_mapping.push_back(pair[c].get<double>());
         if (mesentery.contains("attachments")) layout.attachments = mesentery["attachments"].get<std::uint32_t>();
     }
     if (document.contains("environment"))

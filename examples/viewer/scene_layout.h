@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -56,7 +57,8 @@ struct SceneLayout {
     std::uint32_t collision_spheres = 0;  // round(length / spacing) + 1
     double timestep_s = 0.0;          // the solver's largest substep
     bool mesentery = false;
-    double root_start_m[3] = {}, root_end_m[3] = {};
+    std::vector<double> root_m;          // the root polyline, x y z per point (two: the segment)
+    std::vector<double> root_mapping;    // pairs (s m, t): where along the root the bowel at s is tied
     std::uint32_t attachments = 0;
     std::vector<ObstacleShape> obstacles;
     std::vector<ToolShape> tools;
@@ -65,6 +67,11 @@ struct SceneLayout {
     double port_m[3] = {};            // the umbilical port: the cavity's top above its centre
     bool port_known = false;          // false: no cavity
 };
+
+// The root's point tied to the bowel at fraction f of its length, as the library ties it
+// (lib/mechanics/mesentery_force.h): at the fraction t = f of the root's length, or t(s)
+// from the mapping, walked along the polyline.
+std::array<double, 3> mesentery_root_point(const SceneLayout& layout, double f);
 
 // Reads the layout of a JSON description that ent_scene_create_json accepted. False (with
 // a message) only if the text is not JSON after all.

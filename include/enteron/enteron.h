@@ -341,6 +341,33 @@ typedef struct ent_scene_desc {
     uint32_t stretch_stiffness_profile_count;       /**< pairs in stretch_stiffness_profile_N. */
     const double* bend_stiffness_profile_N_m2;      /**< pairs (s m, EI N m^2); ENT_EFFECT_BEND. */
     uint32_t bend_stiffness_profile_count;          /**< pairs in bend_stiffness_profile_N_m2. */
+
+    /* The fan mesentery and pinned spans (docs/scene-json.md, mesentery and pinned.spans;
+       docs/anatomy.md). Arrays read at ent_scene_create, not kept; NULL and 0: not given.
+       Added in 0.1 with the fan mesentery: an older, smaller ent_scene_desc has none. */
+    /** ENT_EFFECT_MESENTERY: the root as a polyline of mesentery_root_point_count >= 2 points
+     *  (3 finite doubles each, m; consecutive points apart when more than 2), in place of
+     *  mesentery_root_start_m and mesentery_root_end_m, which must then keep their defaults
+     *  (they read back, ent_scene_read_desc, as the polyline's ends, and this as NULL, 0). The
+     *  attachment at fraction f of the bowel's rest length is tied to the point at fraction f
+     *  of the polyline's length (or as mesentery_root_mapping says). */
+    const double* mesentery_root_points_m;
+    uint32_t mesentery_root_point_count;  /**< points in mesentery_root_points_m. */
+    /** ENT_EFFECT_MESENTERY: where along the root each attachment is tied: count pairs
+     *  (s, t) in 2 x count doubles, s the arc length along the bowel from its first end at
+     *  rest (m, strictly increasing), t the fraction of the root's length (0..1, never
+     *  decreasing), piecewise linear between pairs and held past the first and last. NULL
+     *  and 0: t = s / length_m. */
+    const double* mesentery_root_mapping;
+    uint32_t mesentery_root_mapping_count;  /**< pairs in mesentery_root_mapping. */
+    /** ENT_EFFECT_PINNED: spans of the bowel held in the world where they start: count pairs
+     *  (from, to) in 2 x count doubles, m of arc length from the first end at rest,
+     *  0 <= from <= to <= length_m; every control point whose rest arc length lies in a span
+     *  is pinned (at least one per span; none a control point a clamped end moves). A span on
+     *  an obstacle: the JSON pinned.spans, or ent_scene_pin_point per point after
+     *  ent_scene_add_obstacle. */
+    const double* pinned_spans_m;
+    uint32_t pinned_span_count;  /**< pairs in pinned_spans_m. */
 } ent_scene_desc;
 
 /**
@@ -417,9 +444,10 @@ ENT_API ent_status ent_scene_create_json_file(const char* path, const ent_callba
  * The description the scene was created from, as an ent_scene_desc, whether it came from C
  * or from JSON (docs/scene-json.md gives each key's C field): its values, in `effects` the
  * effects it turned on (a stiffness of 0 reads back with its bit clear), and for an effect
- * it left off the defaults. The arrays are not kept: shape_points_xyz_m and pinned_points
- * are NULL and pinned_point_count 0 (ent_scene_control_points gives the points), callbacks
- * NULL. What changed since (ent_scene_set_gravity, obstacles, tools, pins, a mesentery or a
+ * it left off the defaults. The arrays are not kept: shape_points_xyz_m, pinned_points,
+ * mesentery_root_points_m (the root's ends read back in mesentery_root_start_m and
+ * mesentery_root_end_m), mesentery_root_mapping and pinned_spans_m are NULL and their counts
+ * 0 (ent_scene_control_points gives the points), callbacks NULL. What changed since (ent_scene_set_gravity, obstacles, tools, pins, a mesentery or a
  * clamped end attached) and what only JSON describes (its obstacles, tools, attached pins)
  * are not in it. So for a scene without arrays, ent_scene_create of what this gives makes
  * the same scene. Set out->struct_size first (ent_scene_desc_default does); fields beyond

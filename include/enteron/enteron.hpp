@@ -163,6 +163,30 @@ struct SceneDesc : ent_scene_desc {
         return profile(pairs, bend_stiffness_profile_N_m2, bend_stiffness_profile_count, "bend_stiffness_profile_N_m2");
     }
 
+    /** The mesentery's root as a polyline through `xyz` (x y z per point, m: doubles):
+     *  mesentery_root_points_m and mesentery_root_point_count. Throws Error when its size is
+     *  not a multiple of 3. */
+    template <class Container>
+    SceneDesc& mesentery_root(const Container& xyz) {
+        mesentery_root_point_count = detail::item_count(std::size(xyz), 3, "mesentery_root_points_m");
+        mesentery_root_points_m = detail::data_of<double>(xyz);
+        return *this;
+    }
+    /** Where along the root the bowel is tied, from `pairs` (s m, t: doubles, 2 per pair):
+     *  mesentery_root_mapping and its count. Throws Error when its size is odd. */
+    template <class Container>
+    SceneDesc& mesentery_root_mapping_pairs(const Container& pairs) {
+        return profile(pairs, mesentery_root_mapping, mesentery_root_mapping_count, "mesentery_root_mapping");
+    }
+    /** Spans of the bowel held in the world, from `pairs` (from m, to m: doubles, 2 per
+     *  pair): pinned_spans_m and pinned_span_count, and the pinned effect's bit. Throws Error
+     *  when its size is odd. */
+    template <class Container>
+    SceneDesc& pinned_spans(const Container& pairs) {
+        effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+        return profile(pairs, pinned_spans_m, pinned_span_count, "pinned_spans_m");
+    }
+
 private:
     template <class Container>
     SceneDesc& profile(const Container& pairs, const double*& field, uint32_t& count, const char* name) {

@@ -19,14 +19,28 @@ namespace {
 constexpr uint32_t kMaxControlPoints = 100000;
 constexpr uint32_t kMaxProfilePairs = 100000;
 
-// A profile's pairs (ent_scene_desc: pointer and count) into `pairs`.
-void read_profile(const double* given, uint32_t count, const char* name, std::vector<double>& pairs) {
+// An array of `count` tuples of `width` doubles (ent_scene_desc: pointer and count, named
+// `count_name`) into `values`.
+void read_tuples(const double* given, uint32_t count, std::size_t width, const char* name, const char* count_name,
+                 std::vector<double>& values) {
     if (count == 0) return;
     if (count > kMaxProfilePairs)
-        throw Error(ErrorCode::invalid_argument, std::string(name) + "_count must be <= " +
+        throw Error(ErrorCode::invalid_argument, std::string(count_name) + " must be <= " +
                                                      std::to_string(kMaxProfilePairs) + ", got " + std::to_string(count));
-    require(given, (std::string(name) + " (with " + name + "_count > 0)").c_str());
-    pairs.assign(given, given + 2 * std::size_t{count});
+    require(given, (std::string(name) + " (with " + count_name + " > 0)").c_str());
+    values.assign(given, given + width * std::size_t{count});
+}
+
+// A profile's pairs (ent_scene_desc: pointer and count) into `pairs`.
+void read_profile(const double* given, uint32_t count, const char* name, std::vector<double>& pairs) {
+    read_tuples(given, count, 2, name, (std::string(name) + "_count").c_str(), pairs);
+}
+
+// An array given for an effect whose bit is clear is a mistake, not a wish.
+void require_effect(bool on, uint32_t count, const char* name, const char* effect) {
+    if (count > 0 && !on)
+        throw Error(ErrorCode::invalid_argument,
+                    std::string(name) + " is given, but effects leaves " + effect + " off: set its bit or leave it NULL");
 }
 
 // The fields of ent_scene_desc that are values of the scene's table, each the row of its
@@ -108,11 +122,13 @@ ent_scene_desc default_desc() {
 //                callers are served (tests/abi/old_caller.c).
 //   0.1 first    without `clamped_ends`.
 //   0.1 second   without the profiles (radius_profile_m ...).
+//   0.1 third    without the fan mesentery and the pinned spans (mesentery_root_points_m ...).
 //   0.1          the current header.
 void check_scene_desc_size(uint32_t struct_size) {
     check_struct_size(struct_size,
                       {offsetof(ent_scene_desc, callbacks), offsetof(ent_scene_desc, clamped_ends),
-                       offsetof(ent_scene_desc, radius_profile_m), sizeof(ent_scene_desc)},
+                       offsetof(ent_scene_desc, radius_profile_m), offsetof(ent_scene_desc, mesentery_root_points_m),
+                       sizeof(ent_scene_desc)},
                       "ent_scene_desc");
 }
 
@@ -172,6 +188,23 @@ scene::SceneConfig config_from_desc(const ent_scene_desc& desc) {
                  "stretch_stiffness_profile_N", intestine.stretch_stiffness_profile);
     read_profile(desc.bend_stiffness_profile_N_m2, desc.bend_stiffness_profile_count, "bend_stiffness_profile_N_m2",
                  intestine.bend_stiffness_profile);
+    require_effect(config.mesentery.has_value(), desc.mesentery_root_point_count, "mesentery_root_points_m",
+                   "ENT_EFFECT_MESENTERY");
+    require_effect(config.mesentery.has_value(), desc.mesentery_root_mapping_count, "mesentery_root_mapping",
+                   "ENT_EFFECT_MESENTERY");
+    require_effect(config.pinned.has_value(), desc.pinned_span_count, "pinned_spans_m", "ENT_EFFECT_PINNED");
+    if (config.mesentery) {
+        read_tuples(desc.mesentery_root_points_m, desc.mesentery_root_point_count, 3, "mesentery_root_points_m",
+                    "mesentery_root_point_count", config.mesentery->root_points);
+        read_profile(desc.mesentery_root_mapping, desc.mesentery_root_mapping_count, "mesentery_root_mapping",
+                     config.mesentery->root_mapping);
+    }
+    if (config.pinned) {
+        std::vector<double> spans;
+        read_tuples(desc.pinned_spans_m, desc.pinned_span_count, 2, "pinned_spans_m", "pinned_span_count", spans);
+        for (std::size_t k = 0; k < spans.size() / 2; ++k)
+            config.pinned->spans.push_back({spans[2 * k], spans[2 * k + 1], std::nullopt});
+    }
     const scene::FieldSet given = scene::fields_apart_from_defaults(config);
     return scene::validate(std::move(config), scene::c_field_names(), given);
 }

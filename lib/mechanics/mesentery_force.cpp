@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "base/state_io.h"
+#include "mechanics/mesentery_root.h"
+#include "spline/length_profile.h"
 
 namespace enteron::mechanics {
 
@@ -13,13 +15,19 @@ MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters
     : stiffness_(parameters.stiffness), springs_(memory) {
     const std::size_t n = model.control_points;
     const std::size_t count = parameters.attachments;
+    std::pmr::vector<Vec3> root(memory);
+    for (std::size_t k = 0; k < parameters.root_points.size() / 3; ++k)
+        root.push_back(point_at(parameters.root_points.data(), k));
+    if (root.empty()) root.assign({parameters.root_start, parameters.root_end});
+    const spline::LengthProfile mapping(parameters.root_mapping, memory);
     springs_.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
         const double fraction = (static_cast<double>(k) + 0.5) / static_cast<double>(count);
         Spring spring;
         spring.weights = spline::weights_at(n, fraction * static_cast<double>(n - 1),
                                             spline::Derivative::value, model.ends);
-        spring.root = parameters.root_start + fraction * (parameters.root_end - parameters.root_start);
+        const double t = mapping.empty() ? fraction : mapping.at(fraction * parameters.bowel_length);
+        spring.root = point_along_root(root, t);
         spring.rest_length = parameters.rest_length > 0.0 ? parameters.rest_length
                                                           : stretch_vector(initial, spring, spring.root).norm();
         springs_.push_back(spring);

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // The mesentery: tension-only springs that tie points of the axis to the mesenteric root,
-// a short line segment at the back of the abdomen. Attachment k sits at the spline
-// parameter s_k = (k + 1/2) / K * (n - 1), evenly spread along the axis, and pulls toward
-// the root point at the same fraction along the root line. A spring is slack below its
-// rest length (the fold hangs freely) and pulls with k (d - L0) beyond it.
+// a short line (a segment, or a polyline: mechanics/mesentery_root.h) at the back of the
+// abdomen, from which the mesentery fans out. Attachment k sits at the fraction
+// f_k = (k + 1/2) / K of the axis (spline parameter f_k (n - 1), arc length s_k = f_k L at
+// rest), evenly spread along it, and pulls toward the root point at the fraction t of the
+// root's length: t = f_k, or t(s_k) from a mapping the scene gives (pairs (s, t), piecewise
+// linear). A spring is slack below its rest length (the fold hangs freely) and pulls with
+// k (d - L0) beyond it.
 //
 // Linearisation of a stretched spring (d > L0): H = k [u u^T + (1 - L0/d) (I - u u^T)],
 // positive semi-definite; a slack spring adds nothing.
@@ -24,12 +27,20 @@
 
 namespace enteron::mechanics {
 
+// One mesentery's settings (each tube may have its own).
 struct MesenteryParameters {
-    Vec3 root_start = Vec3::Zero();  // m
+    Vec3 root_start = Vec3::Zero();  // m: the root segment, when root_points is empty
     Vec3 root_end = Vec3::Zero();    // m
     std::size_t attachments = 0;
     double stiffness = 0.0;    // N/m per spring
     double rest_length = 0.0;  // m; 0: each spring's length in `initial`
+    // The root as a polyline of two or more points (x, y, z each, m); empty: the segment.
+    std::vector<double> root_points;
+    // Pairs s_0, t_0, s_1, t_1, ...: the bowel at arc length s (m at rest, from its first
+    // end) is tied to the root at fraction t, linear between pairs, held past the first and
+    // last (spline/length_profile.h). Empty: t is the bowel's fraction f_k.
+    std::vector<double> root_mapping;
+    double bowel_length = 0.0;  // m at rest: s_k = f_k x bowel_length, for the mapping
 };
 
 class MesenteryForce final : public Effect {
@@ -55,6 +66,10 @@ public:
     // (to any frame) as well: frames_ is set by attach.
     void save_state(StateWriter& out) const override;
     void restore_state(StateReader& in) override;
+
+    // Spring k's root point (k < springs()), in the world at time t.
+    std::size_t springs() const { return springs_.size(); }
+    Vec3 root_point(std::size_t k, double t) const { return placement(t).to_world(springs_[k].root); }
 
 private:
     struct Spring {

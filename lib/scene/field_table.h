@@ -112,10 +112,13 @@ enum class Special : uint8_t {
     mesh_triangles,
     mesh_scale,      // the mesh's unit, applied once every key is read
     length_profile,  // intestine.radius_profile, ...: [[s, value], ...] into pairs (Custom::profile)
+    root_polyline,   // mesentery.root: [[x, y, z], ...], two or more, into coordinates (Custom::profile)
+    root_mapping,    // mesentery.root_mapping: [[s, t], ...] into pairs (Custom::profile)
 };
 struct Custom {
     Special special;
-    // length_profile: its pairs in the part, and the key of the constant it replaces.
+    // length_profile, root_polyline, root_mapping: its numbers in the part; length_profile:
+    // the key of the constant it replaces.
     std::vector<double>& (*profile)(void* part) = nullptr;
     const char* replaces = nullptr;
 };
@@ -133,10 +136,6 @@ struct Field {
     const PlausibleRange* plausible = nullptr;  // a value outside is likely a unit mistake (plausible_ranges.h)
     bool zero_is_off = false;                   // 0 turns the effect off: not a mistake to warn about
     bool plausible_magnitude = false;           // the range is of a point's length (gravity's), not of each coordinate
-    // Element `element` of an array of `elements` under the key, each element a field of its
-    // own ("root": [start, end]); 0 elements: the key holds the value itself.
-    uint8_t element = 0;
-    uint8_t elements = 0;
     uint32_t kinds = ~0u;                       // the kinds of its block it belongs to (Block::kind)
     bool obstacle_index = false;                // an obstacle's index: checked once the environment is
     bool (*present)(const void* part) = nullptr;  // an optional value: whether the part has it
@@ -167,12 +166,6 @@ struct Field {
     Field plausible_length_in(const PlausibleRange& range) const {
         Field f = plausible_in(range, true);
         f.plausible_magnitude = true;
-        return f;
-    }
-    Field element_of(uint8_t index, uint8_t count) const {
-        Field f = *this;
-        f.element = index;
-        f.elements = count;
         return f;
     }
     Field for_kinds(uint32_t bits) const {
@@ -221,9 +214,9 @@ struct Block {
     // What a JSON object of this block looks like, for a message: "{"first": k, "last": k}
     // naming obstacles" ("must be an object {...}"); null: "an object".
     const char* looks_like = nullptr;
-    bool every_key_required = false;  // JSON: an object without one of the keys is refused
+    bool every_key_required = false;  // JSON: an object without one of its keys (not optional ones) is refused
     // Rules between the block's fields beyond their rows', in validate.cpp, run after them.
-    enum class Check : uint8_t { none, pinned, attached_pin, clamped_attached, obstacle } check = Check::none;
+    enum class Check : uint8_t { none, pinned, attached_pin, clamped_attached, pin_span, obstacle } check = Check::none;
 
     const Field* begin() const { return fields; }
     const Field* end() const { return fields + count; }
@@ -462,6 +455,15 @@ Field length_profile(const char* key, const char* c_name, const char* replaces) 
     f.c_name = c_name;
     f.value = Custom{Special::length_profile,
                      [](void* part) -> std::vector<double>& { return access::member<Member>(part); }, replaces};
+    return f;
+}
+// Numbers of a special shape kept in a vector of the part (Special::root_polyline, root_mapping).
+template <auto Member>
+Field numbers(const char* key, const char* c_name, Special special) {
+    Field f;
+    f.key = key;
+    f.c_name = c_name;
+    f.value = Custom{special, [](void* part) -> std::vector<double>& { return access::member<Member>(part); }};
     return f;
 }
 inline Field custom(const char* key, Special special, const char* c_name = nullptr) {

@@ -135,7 +135,6 @@ public:
 
 private:
     void read_field(const Field& field, const json& value, const std::string& path, void* part);
-    void read_elements(const Block& block, const Field& first, const json& value, const std::string& path, void* part);
     void read_custom(const Custom& custom, const json& value, const std::string& path, void* part);
     // An obstacle's own rules: a mesh from a file or inline, its scale, a friction >= 0.
     void check_mesh_keys(const json& value, const std::string& path) const;
@@ -152,7 +151,6 @@ std::string expected_keys(const Block& block, const void* part) {
     std::string keys;
     for (const Field& field : block) {
         if (block.typed && (&field == block.kind || !block.applies(field, part))) continue;
-        if (field.elements > 0 && field.element > 0) continue;
         keys += (keys.empty() ? "" : ", ") + std::string(field.key);
     }
     return keys;
@@ -164,6 +162,7 @@ void Reader::read_block(const json& value, const std::string& path, const Block&
         bool complete = value.is_object();
         std::string keys;
         for (const Field& field : block) {
+            if (field.present != nullptr) continue;  // an optional key
             complete = complete && value.contains(field.key);
             keys += (keys.empty() ? "\"" : "\" and \"") + std::string(field.key);
         }
@@ -192,11 +191,7 @@ void Reader::read_block(const json& value, const std::string& path, const Block&
             fail("unknown key " + quote(key) + " " + place(path) + " (expected one of: " +
                  expected_keys(block, part) + ")");
         given_.add(join_path(path, key));
-        if (field->elements > 0) {
-            read_elements(block, *field, item, join_path(path, key), part);
-        } else {
-            read_field(*field, item, join_path(path, key), part);
-        }
+        read_field(*field, item, join_path(path, key), part);
     }
     // A key of another kind is a mistake worth reporting (typed blocks refused it as unknown).
     if (block.kind != nullptr && !block.typed) {
@@ -209,20 +204,6 @@ void Reader::read_block(const json& value, const std::string& path, const Block&
         }
     }
     if (obstacle) finish_obstacle(value, path, *static_cast<collision::Obstacle*>(part));
-}
-
-// A key whose value is an array of points, each one field ("root": [start, end]).
-void Reader::read_elements(const Block& block, const Field& first, const json& value, const std::string& path,
-                           void* part) {
-    if (!value.is_array() || value.size() != first.elements) {
-        std::string points;
-        for (std::size_t i = 0; i < first.elements; ++i) points += (i == 0 ? "[x, y, z]" : ", [x, y, z]");
-        fail(path + " must be an array of " + std::to_string(first.elements) + " points [" + points + "], got " +
-             describe(value));
-    }
-    for (const Field& field : block)
-        if (std::strcmp(field.key, first.key) == 0)
-            read_field(field, value[field.element], index_path(path, field.element), part);
 }
 
 void Reader::read_field(const Field& field, const json& value, const std::string& path, void* part) {
@@ -258,37 +239,49 @@ collision::TriangleMesh& inline_mesh(collision::Obstacle& o) {
     return const_cast<collision::TriangleMesh&>(*o.mesh);
 }
 
+// [[x, y, z], ...] into x, y, z of each point (a vector of doubles of any allocator).
+template <class Numbers>
+void read_json_points(const json& value, const std::string& path, Numbers& points) {
+    if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
+    points.clear();
+    points.reserve(3 * value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const Vec3 point = read_vec3(value[i], index_path(path, i));
+        points.insert(points.end(), point.begin(), point.end());
+    }
+}
+
+// [[a, b], ...] into a, b of each pair; `pair` is how one looks ("[s, t]"), `meaning` what
+// its numbers are.
+void read_json_pairs(const json& value, const std::string& path, const char* pair, const char* meaning,
+                std::vector<double>& pairs) {
+    if (!value.is_array())
+        fail(path + " must be an array of " + pair + " pairs (" + meaning + "), got " + describe(value));
+    pairs.clear();
+    pairs.reserve(2 * value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string at = index_path(path, i);
+        if (!value[i].is_array() || value[i].size() != 2) fail(at + " must be a pair " + pair + ", got " + describe(value[i]));
+        pairs.push_back(read_number(value[i][0], index_path(at, 0)));
+        pairs.push_back(read_number(value[i][1], index_path(at, 1)));
+    }
+}
+
 void Reader::read_custom(const Custom& custom, const json& value, const std::string& path, void* part) {
     switch (custom.special) {
         case Special::version:
             if (!value.is_number() || value.get<double>() != 1.0) fail(path + " must be 1, got " + describe(value));
             break;
-        case Special::shape_points: {
-            if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
-            std::vector<double>& points = static_cast<ShapeConfig*>(part)->points;
-            points.clear();
-            points.reserve(3 * value.size());
-            for (std::size_t i = 0; i < value.size(); ++i) {
-                const Vec3 point = read_vec3(value[i], index_path(path, i));
-                points.insert(points.end(), point.begin(), point.end());
-            }
+        case Special::shape_points: read_json_points(value, path, static_cast<ShapeConfig*>(part)->points); break;
+        case Special::root_polyline: read_json_points(value, path, custom.profile(part)); break;
+        case Special::length_profile:
+            read_json_pairs(value, path, "[s, value]", "s the arc length from the first end, m", custom.profile(part));
             break;
-        }
-        case Special::length_profile: {
-            const char* looks = " must be an array of [s, value] pairs (s the arc length from the first end, m), got ";
-            if (!value.is_array()) fail(path + looks + describe(value));
-            std::vector<double>& pairs = custom.profile(part);
-            pairs.clear();
-            pairs.reserve(2 * value.size());
-            for (std::size_t i = 0; i < value.size(); ++i) {
-                const std::string at = index_path(path, i);
-                if (!value[i].is_array() || value[i].size() != 2)
-                    fail(at + " must be a pair [s, value], got " + describe(value[i]));
-                pairs.push_back(read_number(value[i][0], index_path(at, 0)));
-                pairs.push_back(read_number(value[i][1], index_path(at, 1)));
-            }
+        case Special::root_mapping:
+            read_json_pairs(value, path, "[s, t]",
+                       "s the arc length along the bowel from its first end, m; t the fraction of the root's length",
+                       custom.profile(part));
             break;
-        }
         case Special::pinned_points: {
             if (!value.is_array()) fail(path + " must be an array of control point indices, got " + describe(value));
             std::vector<uint32_t>& points = static_cast<PinnedConfig*>(part)->points;
@@ -308,16 +301,9 @@ void Reader::read_custom(const Custom& custom, const json& value, const std::str
                 read_mesh_file(file, 1.0, path, ErrorCode::invalid_scene));
             break;
         }
-        case Special::mesh_vertices: {
-            if (!value.is_array()) fail(path + " must be an array of [x, y, z] points, got " + describe(value));
-            collision::TriangleMesh& mesh = inline_mesh(*static_cast<collision::Obstacle*>(part));
-            mesh.vertices.clear();
-            for (std::size_t i = 0; i < value.size(); ++i) {
-                const Vec3 point = read_vec3(value[i], index_path(path, i));
-                mesh.vertices.insert(mesh.vertices.end(), point.begin(), point.end());
-            }
+        case Special::mesh_vertices:
+            read_json_points(value, path, inline_mesh(*static_cast<collision::Obstacle*>(part)).vertices);
             break;
-        }
         case Special::mesh_triangles: {
             if (!value.is_array())
                 fail(path + " must be an array of [a, b, c] vertex indices, got " + describe(value));

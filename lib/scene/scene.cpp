@@ -15,6 +15,7 @@
 #include "mechanics/mesentery_force.h"
 #include "mechanics/pinned_points.h"
 #include "mechanics/stretch_force.h"
+#include "scene/pin_spans.h"
 #include "scene/scene_fingerprint.h"
 
 namespace enteron::scene {
@@ -45,11 +46,16 @@ AxisModel make_model(const SceneConfig& config, const Profiles& profiles) {
 }
 
 // The point pins, a clamped end's end point among them.
-std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t count) {
+std::vector<uint32_t> pinned_indices(const PinnedConfig& pinned, std::size_t count, double length) {
     std::vector<uint32_t> points = pinned.points;
     const int32_t ends = pinned.ends | pinned.clamped;
     if (ends & pin_first) points.push_back(0);
     if (ends & pin_last) points.push_back(static_cast<uint32_t>(count - 1));
+    for (const PinSpan& span : pinned.spans) {
+        if (span.obstacle) continue;  // pinned on its obstacle once the environment is made
+        const ControlPointRange range = control_points_in(span, count, length);
+        for (uint32_t i = range.first; i <= range.last; ++i) points.push_back(i);
+    }
     std::sort(points.begin(), points.end());
     points.erase(std::unique(points.begin(), points.end()), points.end());
     return points;
@@ -135,12 +141,19 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     if (config.gravity) gravity_ = &dynamics_.add_effect(make_owned<GravityForce>(memory, model_, *config.gravity, memory));
     if (config.mesentery) {
         const MesenteryConfig& m = *config.mesentery;
-        const MesenteryParameters parameters{m.root_start, m.root_end, m.attachments, m.stiffness,
-                                             m.rest_length};
+        MesenteryParameters parameters;
+        parameters.root_start = m.root_start;
+        parameters.root_end = m.root_end;
+        parameters.attachments = m.attachments;
+        parameters.stiffness = m.stiffness;
+        parameters.rest_length = m.rest_length;
+        parameters.root_points = m.root_points;
+        parameters.root_mapping = m.root_mapping;
+        parameters.bowel_length = intestine.length;
         mesentery_ = &dynamics_.add_effect(make_owned<MesenteryForce>(memory, model_, parameters, state, memory));
     }
     if (config.pinned)
-        dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n), frames_,
+        dynamics_.add_pins(make_owned<PinnedPoints>(memory, pinned_indices(*config.pinned, n, intestine.length), frames_,
                                                     config.solver.max_speed, memory));
     if (const int32_t clamped = clamped_ends(config))
         dynamics_.add_clamps(make_owned<ClampedEnds>(memory, (clamped & pin_first) != 0, (clamped & pin_last) != 0,
@@ -161,6 +174,12 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     }
     if (config.pinned)
         for (const PinAttachment& pin : config.pinned->attached) pin_point_only(pin.point, pin.obstacle);
+    if (config.pinned)
+        for (const PinSpan& span : config.pinned->spans) {
+            if (!span.obstacle) continue;
+            const ControlPointRange range = control_points_in(span, n, intestine.length);
+            for (uint32_t i = range.first; i <= range.last; ++i) pin_point_only(i, span.obstacle);
+        }
     if (config.mesentery && config.mesentery->obstacle) attach_mesentery_only(config.mesentery->obstacle);
     if (config.pinned)
         for (const auto& [end, obstacle] : {std::pair{pin_first, config.pinned->clamped_obstacle[0]},

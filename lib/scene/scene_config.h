@@ -74,6 +74,15 @@ struct MesenteryConfig {
     double stiffness = 5.0;             // N/m per spring
     double rest_length = 0.0;           // m; 0: each spring's initial length
     std::optional<std::size_t> obstacle;  // the root follows this obstacle's frame
+    // The root as a polyline (JSON root, C mesentery_root_points_m): x, y, z of two or more
+    // points, m, in place of root_start and root_end. validate() makes one of two points the
+    // segment root_start, root_end (and empties this), and sets those two to the ends of a
+    // longer one, so that a reader of the segment sees where the root starts and ends.
+    std::vector<double> root_points;
+    // Where along the root each point of the bowel is tied: pairs s_0, t_0, s_1, t_1, ...
+    // (s on the bowel, m at rest from its first end, increasing; t the fraction of the root's
+    // length, 0..1, not decreasing); empty: the same fraction of the lengths.
+    std::vector<double> root_mapping;
 };
 
 enum PinnedEnds : int32_t { pin_none = 0, pin_first = 1, pin_last = 2, pin_both = 3 };
@@ -84,6 +93,15 @@ struct PinAttachment {
     std::size_t obstacle = 0;
 };
 
+// A span of the bowel held in place: every control point whose rest arc length (from the
+// first end) lies in [from, to] is pinned, in the world or on an obstacle's frame (the
+// retroperitoneal colon on the posterior wall). scene/pin_spans.h finds them.
+struct PinSpan {
+    double from = 0.0;  // m
+    double to = 0.0;    // m
+    std::optional<std::size_t> obstacle;
+};
+
 struct PinnedConfig {
     int32_t ends = pin_none;
     std::vector<uint32_t> points;  // further control point indices
@@ -91,6 +109,7 @@ struct PinnedConfig {
     int32_t clamped = pin_none;    // ends held in place and in direction (mechanics/clamped_ends.h)
     // The obstacle the first / last clamped end follows (JSON pinned.clamped_attached).
     std::optional<std::size_t> clamped_obstacle[2] = {};
+    std::vector<PinSpan> spans = {};  // spans of the bowel pinned (JSON pinned.spans)
 };
 
 // Settings shared by every contact of the bowel: the environment, the self-contact and

@@ -15,6 +15,15 @@ void add(Fingerprint& f, const Vec3& v) {
 
 void add(Fingerprint& f, std::size_t value) { f.add(static_cast<uint64_t>(value)); }
 
+// Numbers a newer description may give, only when given (tagged), so that a scene without
+// them keeps its fingerprint (and the states saved from it).
+void add_if_given(Fingerprint& f, std::size_t tag, const std::vector<double>& values) {
+    if (values.empty()) return;
+    add(f, tag);
+    add(f, values.size());
+    f.add_bytes(values.data(), values.size() * sizeof(double));
+}
+
 // An optional part: whether it is there, then its values.
 template <class T, class AddValues>
 void add_optional(Fingerprint& f, const std::optional<T>& part, AddValues add_values) {
@@ -36,13 +45,7 @@ void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
     // the states saved from it).
     const std::vector<double>* profiles[] = {&intestine.radius_profile, &intestine.linear_density_profile,
                                              &intestine.stretch_stiffness_profile, &intestine.bend_stiffness_profile};
-    for (std::size_t k = 0; k < std::size(profiles); ++k) {
-        const std::vector<double>* profile = profiles[k];
-        if (profile->empty()) continue;
-        add(f, k);
-        add(f, profile->size());
-        f.add_bytes(profile->data(), profile->size() * sizeof(double));
-    }
+    for (std::size_t k = 0; k < std::size(profiles); ++k) add_if_given(f, k, *profiles[k]);
     // The start shape as its points: the mesentery's springs take their lengths there.
     add(f, config.start_points.size());
     f.add_bytes(config.start_points.data(), config.start_points.size() * sizeof(double));
@@ -67,6 +70,8 @@ void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
         f.add(m.stiffness);
         f.add(m.rest_length);
         add(f, m.obstacle ? *m.obstacle + 1 : 0);
+        add_if_given(f, 10, m.root_points);
+        add_if_given(f, 11, m.root_mapping);
     });
     add_optional(f, config.pinned, [&](const PinnedConfig& p) {
         add(f, static_cast<std::size_t>(p.ends));
@@ -78,6 +83,10 @@ void add_to_fingerprint(Fingerprint& f, const SceneConfig& config) {
             add(f, a.point);
             add(f, a.obstacle);
         }
+        std::vector<double> spans;
+        for (const PinSpan& span : p.spans)
+            spans.insert(spans.end(), {span.from, span.to, span.obstacle ? double(*span.obstacle) + 1.0 : 0.0});
+        add_if_given(f, 12, spans);
     });
 
     const collision::ContactParameters& contact = config.collision.contact;

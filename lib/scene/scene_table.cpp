@@ -183,9 +183,12 @@ const Field kDampingFields[] = {
 };
 const Block kDamping = block_of(kDampingFields);
 
+// The root: a polyline (root), or the segment of its two ends (root_start, root_end).
 const Field kMesenteryFields[] = {
-    point<&MesenteryConfig::root_start>("root", "mesentery_root_start_m").element_of(0, 2),
-    point<&MesenteryConfig::root_end>("root", "mesentery_root_end_m").element_of(1, 2),
+    numbers<&MesenteryConfig::root_points>("root", "mesentery_root_points_m", Special::root_polyline),
+    point<&MesenteryConfig::root_start>("root_start", "mesentery_root_start_m"),
+    point<&MesenteryConfig::root_end>("root_end", "mesentery_root_end_m"),
+    numbers<&MesenteryConfig::root_mapping>("root_mapping", "mesentery_root_mapping", Special::root_mapping),
     count<&MesenteryConfig::obstacle>("obstacle").indexing_obstacles(),
     number<&MesenteryConfig::stiffness>("stiffness", "mesentery_stiffness_N_per_m")
         .at_least(0.0)
@@ -204,6 +207,15 @@ const Field kAttachedPinFields[] = {
 };
 const Block kAttachedPin{kAttachedPinFields, std::size(kAttachedPinFields), nullptr, false, nullptr, nullptr, true,
                          Block::Check::attached_pin};
+
+// pinned.spans: a span of the bowel held, in the world or on an obstacle's frame.
+const Field kPinSpanFields[] = {
+    number<&PinSpan::from>("from").at_least(0.0),
+    number<&PinSpan::to>("to").at_least(0.0),
+    count<&PinSpan::obstacle>("obstacle").indexing_obstacles(),
+};
+const Block kPinSpan{kPinSpanFields, std::size(kPinSpanFields), nullptr, false, nullptr, nullptr, true,
+                     Block::Check::pin_span};
 
 // pinned.clamped_attached: the obstacle each clamped end follows.
 std::optional<std::size_t>& first_clamp_obstacle(PinnedConfig& pinned) { return pinned.clamped_obstacle[0]; }
@@ -227,6 +239,8 @@ const Field kPinnedFields[] = {
     list<&PinnedConfig::attached>("attached", kAttachedPin, "{\"control_point\": i, \"obstacle\": k}"),
     choice<&PinnedConfig::clamped>("clamped", "clamped_ends", kPinnedEnds),
     object_here("clamped_attached", kClampedAttached),
+    list<&PinnedConfig::spans>("spans", kPinSpan, "spans {\"from\": s0, \"to\": s1, \"obstacle\": k}",
+                               "pinned_spans_m"),
 };
 const Block kPinned{kPinnedFields, std::size(kPinnedFields), nullptr, false, nullptr, nullptr, false,
                     Block::Check::pinned};

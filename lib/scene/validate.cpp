@@ -10,6 +10,7 @@
 
 #include "mechanics/clamped_ends.h"
 #include "scene/checked_value.h"
+#include "scene/pin_spans.h"
 #include "scene/plausible_ranges.h"
 #include "scene/points_length.h"
 #include "scene/scene_table.h"
@@ -136,6 +137,20 @@ private:
     void shape_points(const Field& field, const Scope& scope) const;
     void pinned_points(const Field& field, const Scope& scope) const;
     void length_profile(const Custom& profile, const Field& field, const Scope& scope) const;
+    void root_polyline(const Custom& polyline, const Field& field, const Scope& scope) const;
+    void root_mapping(const Custom& mapping, const Field& field, const Scope& scope) const;
+    // Pairs (s, value) of a profile or a mapping: at least 2, finite, s increasing along `what`.
+    void check_pairs(const std::vector<double>& pairs, const std::string& own, const char* pair_looks,
+                     const char* what) const;
+    // Entry `part` (0: s, 1: the value) of pair k: JSON own[k][part], C own[2 k + part].
+    std::string pair_entry(const std::string& own, std::size_t k, std::size_t part) const {
+        return !names_.c_names ? index_path(index_path(own, k), part) : index_path(own, 2 * k + part);
+    }
+    // The name of a list's element (pinned.spans[0], C pinned_spans_m[0]).
+    std::string element_name(const Scope& scope) const {
+        return names_.c_names ? scope.prefix.substr(0, scope.prefix.size() - 1) : scope.path;
+    }
+    void pin_span(const Scope& scope) const;
     void mesh(const collision::TriangleMesh& mesh, const Scope& scope) const;
     std::string virtual_name(const Scope& scope, const char* key) const {
         return names_.c_names ? scope.prefix + key : join_path(scope.path, key);
@@ -274,6 +289,8 @@ void Validator::custom(const Custom& special, const Field& field, const Scope& s
         case Special::shape_points: shape_points(field, scope); break;
         case Special::length_profile: length_profile(special, field, scope); break;
         case Special::pinned_points: pinned_points(field, scope); break;
+        case Special::root_polyline: root_polyline(special, field, scope); break;
+        case Special::root_mapping: root_mapping(special, field, scope); break;
         // Checked when read (the version), or as the obstacle's mesh (block_rules).
         default: break;
     }
@@ -322,25 +339,15 @@ void Validator::length_profile(const Custom& profile, const Field& field, const 
     const std::string own = name(field, scope);
     const Located constant = locate(scope, profile.replaces);
     const Located length = locate(scope, "length");
-    const bool nested = !names_.c_names;
-    // JSON: radius_profile[k][0]; C: radius_profile_m[2 k] (the flat array of pairs).
-    const auto entry = [&](std::size_t k, std::size_t part) {
-        return nested ? index_path(index_path(own, k), part) : index_path(own, 2 * k + part);
-    };
+    const auto entry = [&](std::size_t k, std::size_t part) { return pair_entry(own, k, part); };
     if (!(value_of(*constant.field, constant.part) != 0.0))
         fail(own, "is given, but " + name(constant) + " is 0, which turns its effect off: give one of them");
     if (given_.has(join_path(constant.path, constant.field->key)))
         fail(own, "and " + name(constant) + " are both given: a profile replaces the constant, give one of them");
+    check_pairs(pairs, own, "[s, value] (from s = 0 to the length)", "the profile");
     const std::size_t count = pairs.size() / 2;
-    if (count < 2) fail(own, "must have at least 2 pairs [s, value] (from s = 0 to the length), got " + std::to_string(count));
-    for (std::size_t i = 0; i < pairs.size(); ++i) Checked<double>(pairs[i], entry(i / 2, i % 2), names_.code);
-    for (std::size_t k = 0; k < count; ++k) {
-        const double s = pairs[2 * k], value = pairs[2 * k + 1];
-        if (!(value > 0.0)) fail(entry(k, 1), "must be > 0, got " + format_number(value));
-        if (k > 0 && !(s > pairs[2 * k - 2]))
-            fail(entry(k, 0), "must be greater than the s before it (" + format_number(pairs[2 * k - 2]) +
-                                  "): s must increase along the profile, got " + format_number(s));
-    }
+    for (std::size_t k = 0; k < count; ++k)
+        if (!(pairs[2 * k + 1] > 0.0)) fail(entry(k, 1), "must be > 0, got " + format_number(pairs[2 * k + 1]));
     const double total = value_of(*length.field, length.part);
     if (!(pairs[0] <= 0.0))
         fail(entry(0, 0), "must be <= 0: the profile must cover the bowel from its first end (s = 0), got " +
@@ -354,6 +361,103 @@ void Validator::length_profile(const Custom& profile, const Field& field, const 
     for (std::size_t k = 0; k < count; ++k) largest = std::max(largest, pairs[2 * k + 1]);
     std::get<Number>(constant.field->value).set(const_cast<void*>(constant.part), largest);
     this->field(*constant.field, scope, Pass::values);  // its rules, for the largest value
+}
+
+void Validator::check_pairs(const std::vector<double>& pairs, const std::string& own, const char* pair_looks,
+                            const char* what) const {
+    const std::size_t count = pairs.size() / 2;
+    if (count < 2) fail(own, std::string("must have at least 2 pairs ") + pair_looks + ", got " + std::to_string(count));
+    for (std::size_t i = 0; i < pairs.size(); ++i) Checked<double>(pairs[i], pair_entry(own, i / 2, i % 2), names_.code);
+    for (std::size_t k = 1; k < count; ++k)
+        if (!(pairs[2 * k] > pairs[2 * k - 2]))
+            fail(pair_entry(own, k, 0), "must be greater than the s before it (" + format_number(pairs[2 * k - 2]) +
+                                            "): s must increase along " + what + ", got " + format_number(pairs[2 * k]));
+}
+
+// The root as a polyline of two or more finite points, in place of the segment root_start,
+// root_end; consecutive points apart (each segment has a direction) when there are more
+// than two. The segment then reads as the polyline's ends (two points: it is the segment).
+void Validator::root_polyline(const Custom& polyline, const Field& field, const Scope& scope) const {
+    std::vector<double>& xyz = polyline.profile(scope.part);
+    if (xyz.empty()) return;
+    const std::string own = name(field, scope);
+    for (const char* end : {"root_start", "root_end"})
+        if (given_.has(join_path(scope.path, end)))
+            fail(own, "and " + name(*scope.block.find(end), scope) +
+                          " are both given: the root is a polyline or the segment from its start to its end, give "
+                          "one of them");
+    const bool nested = !names_.c_names;
+    const std::size_t count = xyz.size() / 3;
+    if (count < 2) fail(own, "must have at least 2 points (the root's ends), got " + std::to_string(count));
+    for (std::size_t i = 0; i < xyz.size(); ++i)
+        Checked<double>(xyz[i], nested ? index_path(index_path(own, i / 3), i % 3) : index_path(own, i), names_.code);
+    const auto point = [&](std::size_t k) { return Vec3(point_at(xyz.data(), k)); };
+    for (std::size_t k = 1; k < count && count > 2; ++k)
+        if (point(k) == point(k - 1))
+            fail(nested ? index_path(own, k) : index_path(own, 3 * k),
+                 "is the point before it again, " + format(point(k)) +
+                     ": each segment of a root of more than 2 points needs a length");
+    MesenteryConfig& mesentery = *static_cast<MesenteryConfig*>(scope.part);
+    mesentery.root_start = point(0);
+    mesentery.root_end = point(count - 1);
+    if (count == 2) xyz.clear();
+}
+
+// Pairs (s, t): s along the bowel, increasing; t a fraction of the root's length, in [0, 1]
+// and never decreasing (the bowel's order along the root does not turn back).
+void Validator::root_mapping(const Custom& mapping, const Field& field, const Scope& scope) const {
+    const std::vector<double>& pairs = mapping.profile(scope.part);
+    if (pairs.empty()) return;
+    const std::string own = name(field, scope);
+    check_pairs(pairs, own, "[s, t] (s along the bowel in m, t the fraction of the root's length)", "the mapping");
+    for (std::size_t k = 0; k < pairs.size() / 2; ++k) {
+        const double t = pairs[2 * k + 1];
+        if (!(t >= 0.0 && t <= 1.0))
+            fail(pair_entry(own, k, 1), "must be in [0, 1], a fraction of the root's length, got " + format_number(t));
+        if (k > 0 && !(t >= pairs[2 * k - 1]))
+            fail(pair_entry(own, k, 1), "must be >= the t before it (" + format_number(pairs[2 * k - 1]) +
+                                            "): the bowel's order along the root must not turn back, got " +
+                                            format_number(t));
+    }
+}
+
+// A pinned span: from <= to <= the length, holding at least one control point, none of them
+// a point a clamped end constrains (the clamp's own end point only when pinned in the world).
+void Validator::pin_span(const Scope& scope) const {
+    const PinSpan& span = *static_cast<const PinSpan*>(scope.part);
+    const std::string from = name(*scope.block.find("from"), scope), to = name(*scope.block.find("to"), scope);
+    const Located length = locate(scope, "intestine.length");
+    const Located control_points = locate(scope, "intestine.control_points");
+    const double total = value_of(*length.field, length.part);
+    const auto n = static_cast<std::size_t>(value_of(*control_points.field, control_points.part));
+    if (!(span.to >= span.from))
+        fail(to, "must be >= " + from + " (" + format_number(span.from) + "), got " + format_number(span.to));
+    // A hair of rounding spared: a points shape's length is the spline's, computed.
+    if (!(span.to <= total * (1.0 + 1e-9)))
+        fail(to, "must be <= " + name(length) + " (" + format_number(total) + "): a span lies along the bowel, got " +
+                     format_number(span.to));
+    const std::string own = element_name(scope);
+    const ControlPointRange points = control_points_in(span, n, total);
+    if (points.empty())
+        fail(own, "holds no control point: they lie every " + format_rounded(total / double(n - 1)) +
+                      " m along the bowel at rest, and none in [" + format_number(span.from) + ", " +
+                      format_number(span.to) + "]; widen the span");
+    const PinnedConfig& pinned = *static_cast<const PinnedConfig*>(scope.outer->part);
+    const bool first = (pinned.clamped & pin_first) != 0, last = (pinned.clamped & pin_last) != 0;
+    const std::string clamped = name(*scope.outer->block.find("clamped"), *scope.outer);
+    for (uint32_t i = points.first; i <= points.last; ++i) {
+        const mechanics::ClampedEnd neighbour = mechanics::clamped_end_neighbour(i, n, first, last);
+        const mechanics::ClampedEnd end = mechanics::clamped_end_point(i, n, first, last);
+        const mechanics::ClampedEnd conflict = neighbour != mechanics::ClampedEnd::none ? neighbour
+                                               : span.obstacle ? end
+                                                               : mechanics::ClampedEnd::none;
+        if (conflict == mechanics::ClampedEnd::none) continue;
+        fail(own, "holds control point " + std::to_string(i) + ", which the clamped " +
+                      (conflict == mechanics::ClampedEnd::first ? "first" : "last") + " end (" + clamped +
+                      ") already moves: a pin there would fight the clamp; end the span before it" +
+                      (neighbour == mechanics::ClampedEnd::none ? " (or attach the clamped end with clamped_attached)"
+                                                                : ""));
+    }
 }
 
 // The rules between the fields of a block, beyond each field's own.
@@ -392,6 +496,7 @@ void Validator::block_rules(const Scope& scope) const {
             }
             break;
         }
+        case Block::Check::pin_span: pin_span(scope); break;
         case Block::Check::clamped_attached: {
             // Its keys are fields of the pinned part (object_here), around it.
             const PinnedConfig& pinned = *static_cast<const PinnedConfig*>(scope.part);
@@ -485,9 +590,7 @@ void mark_apart(const Block& block, const void* part, const void* defaults, cons
 
 std::string FieldNames::of(const Field& field, const std::string& path, const std::string& prefix) const {
     if (c_names && field.c_name != nullptr) return prefix + field.c_name;
-    std::string name = c_names ? prefix + field.key : join_path(path, field.key);
-    if (field.elements > 0) name = index_path(name, field.element);
-    return name;
+    return c_names ? prefix + field.key : join_path(path, field.key);
 }
 
 std::string FieldNames::element_prefix(const Field& field, const std::string& prefix, std::size_t index) const {
@@ -525,6 +628,7 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
              {&placeholder.intestine.radius_profile, &placeholder.intestine.linear_density_profile,
               &placeholder.intestine.stretch_stiffness_profile, &placeholder.intestine.bend_stiffness_profile})
             profile->clear();
+        if (placeholder.pinned) placeholder.pinned->spans.clear();  // checked against the length
         validator.walk(Scope{nullptr, scene_block(), &placeholder, "", ""}, Validator::Pass::values);
         config.intestine.length = points_spline_length(config);
         if (!(config.intestine.length > config.intestine.radius))

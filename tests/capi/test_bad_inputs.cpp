@@ -291,6 +291,17 @@ const double kProfileBackwards[6] = {0.0, 0.01, 0.6, 0.012, 0.5, 0.01};
 const double kProfileShort[4] = {0.0, 0.01, 0.8, 0.012};
 const double kProfileZero[4] = {0.0, 0.01, 1.0, 0.0};
 const double kProfileFine[4] = {0.0, 0.012, 1.0, 0.008};
+// The fan mesentery's root and mapping and the pinned spans, over small_desc's 1 m: a root
+// of one point, a root point that is not a number, a mapping going back in s, a t past the
+// root's end, spans backwards, past the length and before the first end.
+const double kRootOnePoint[3] = {0.0, 0.0, 0.0};
+const double kRootNaN[9] = {0.0, 0.0, 0.0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.1, 0.0, 0.0};
+const double kRootFine[9] = {-0.072, 0.0, 0.0, 0.0, 0.021, 0.0, 0.072, 0.0, 0.0};
+const double kMappingBackwards[4] = {0.5, 0.0, 0.4, 1.0};
+const double kMappingPastTheRoot[4] = {0.0, 0.0, 1.0, 1.5};
+const double kSpanBackwards[2] = {0.5, 0.2};
+const double kSpanPastTheLength[2] = {0.5, 1.5};
+const double kSpanBeforeTheStart[2] = {-0.1, 0.5};
 const uint32_t kSizes[] = {0u, 3u, 0xdeadbeefu};
 
 ent_callbacks callbacks_with(bool allocate_only, uint32_t size) {
@@ -504,6 +515,88 @@ std::vector<BadInput> table() {
              d.effects &= ~ENT_EFFECT_BIT(ENT_EFFECT_STRETCH);
          }),
          kArg, "stretch_stiffness_profile_N"},
+        {"ent_scene_create", "mesentery_root_points_m of one point",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_root_points_m = kRootOnePoint;
+             d.mesentery_root_point_count = 1;
+         }),
+         kArg, "mesentery_root_points_m must have at least 2 points"},
+        {"ent_scene_create", "mesentery_root_points_m NaN",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_root_points_m = kRootNaN;
+             d.mesentery_root_point_count = 3;
+         }),
+         kArg, "mesentery_root_points_m[3]"},
+        {"ent_scene_create", "mesentery_root_points_m NULL with a count",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_root_point_count = 3;
+         }),
+         kArg, "mesentery_root_points_m"},
+        {"ent_scene_create", "mesentery_root_points_m with mesentery_root_end_m given too",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_root_points_m = kRootFine;
+             d.mesentery_root_point_count = 3;
+             d.mesentery_root_end_m[2] = 0.01;
+         }),
+         kArg, "mesentery_root_end_m are both given"},
+        {"ent_scene_create", "mesentery_root_points_m with the mesentery off",
+         create_with([](ent_scene_desc& d) {
+             d.mesentery_root_points_m = kRootFine;
+             d.mesentery_root_point_count = 3;
+         }),
+         kArg, "mesentery_root_points_m is given, but effects leaves ENT_EFFECT_MESENTERY off"},
+        {"ent_scene_create", "mesentery_root_mapping not increasing in s",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_root_mapping = kMappingBackwards;
+             d.mesentery_root_mapping_count = 2;
+         }),
+         kArg, "mesentery_root_mapping[2]"},
+        {"ent_scene_create", "mesentery_root_mapping with t past the root",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_MESENTERY);
+             d.mesentery_root_mapping = kMappingPastTheRoot;
+             d.mesentery_root_mapping_count = 2;
+         }),
+         kArg, "mesentery_root_mapping[3] must be in [0, 1]"},
+        {"ent_scene_create", "pinned_spans_m from > to",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_spans_m = kSpanBackwards;
+             d.pinned_span_count = 1;
+         }),
+         kArg, "pinned_spans_m[0].to must be >= pinned_spans_m[0].from"},
+        {"ent_scene_create", "pinned_spans_m past the length",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_spans_m = kSpanPastTheLength;
+             d.pinned_span_count = 1;
+         }),
+         kArg, "pinned_spans_m[0].to must be <= length_m"},
+        {"ent_scene_create", "pinned_spans_m before the first end",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_spans_m = kSpanBeforeTheStart;
+             d.pinned_span_count = 1;
+         }),
+         kArg, "pinned_spans_m[0].from must be >= 0"},
+        {"ent_scene_create", "pinned_spans_m with the pinned effect off",
+         create_with([](ent_scene_desc& d) {
+             d.pinned_spans_m = kSpanBackwards;
+             d.pinned_span_count = 1;
+         }),
+         kArg, "pinned_spans_m is given, but effects leaves ENT_EFFECT_PINNED off"},
+        {"ent_scene_create", "pinned_span_count UINT32_MAX (huge)",
+         create_with([](ent_scene_desc& d) {
+             d.effects |= ENT_EFFECT_BIT(ENT_EFFECT_PINNED);
+             d.pinned_spans_m = kSpanBackwards;
+             d.pinned_span_count = 0xffffffffu;
+         }),
+         kArg, "pinned_span_count must be <="},
         {"ent_scene_create", "linear_density_profile_count UINT32_MAX (huge)",
          create_with([](ent_scene_desc& d) {
              d.linear_density_profile_kg_per_m = kProfileFine;
@@ -585,6 +678,26 @@ std::vector<BadInput> table() {
         {"ent_scene_create_json", "bend_stiffness_profile not of pairs",
          json(R"({"intestine": {"length": 1, "bend_stiffness_profile": [[0, 0.01, 3]]}})"), kScene,
          "intestine.bend_stiffness_profile[0]"},
+        {"ent_scene_create_json", "mesentery root of one point", json(R"({"mesentery": {"root": [[0, 0, 0]]}})"),
+         kScene, "mesentery.root must have at least 2 points"},
+        {"ent_scene_create_json", "mesentery root and root_start both given",
+         json(R"({"mesentery": {"root": [[0, 0, 0], [0.1, 0, 0]], "root_start": [0, 0, 0]}})"), kScene,
+         "both given"},
+        {"ent_scene_create_json", "mesentery root_mapping not increasing in s",
+         json(R"({"intestine": {"length": 1}, "mesentery": {"root_mapping": [[0.5, 0], [0.4, 1]]}})"), kScene,
+         "mesentery.root_mapping[1][0]"},
+        {"ent_scene_create_json", "mesentery root_mapping with t past the root",
+         json(R"({"intestine": {"length": 1}, "mesentery": {"root_mapping": [[0, 0], [1, 1.5]]}})"), kScene,
+         "mesentery.root_mapping[1][1]"},
+        {"ent_scene_create_json", "pinned span from > to",
+         json(R"({"intestine": {"length": 1}, "pinned": {"spans": [{"from": 0.5, "to": 0.2}]}})"), kScene,
+         "pinned.spans[0].to"},
+        {"ent_scene_create_json", "pinned span past the length",
+         json(R"({"intestine": {"length": 1}, "pinned": {"spans": [{"from": 0.5, "to": 1.5}]}})"), kScene,
+         "pinned.spans[0].to must be <= intestine.length"},
+        {"ent_scene_create_json", "pinned span on an obstacle that does not exist",
+         json(R"({"intestine": {"length": 1}, "pinned": {"spans": [{"from": 0.2, "to": 0.5, "obstacle": 3}]}})"),
+         kScene, "pinned.spans[0].obstacle"},
         {"ent_scene_create_json", "wrong type (string for a number)", json(R"({"intestine": {"radius": "big"}})"),
          kScene, "intestine.radius"},
         {"ent_scene_create_json", "wrong type (number for an object)", json(R"({"solver": 3})"), kScene, "solver"},

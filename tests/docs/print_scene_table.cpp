@@ -25,7 +25,6 @@ void print_block(const Block& block, const std::string& path, json& out) {
     entry["keys"] = json::array();
     entry["choices"] = json::object();
     for (const Field& field : block) {
-        if (field.elements > 0 && field.element > 0) continue;  // one key, several fields
         entry["keys"].push_back(field.key);
         const std::string inner = path.empty() ? field.key : path + "." + field.key;
         if (const Choice* choice = std::get_if<Choice>(&field.value)) {

@@ -111,6 +111,15 @@ namespace Enteron
         internal IntPtr bend_stiffness_profile_N_m2;
         internal uint bend_stiffness_profile_count;
 
+        // The fan mesentery's root and mapping and the pinned spans (the C fields of the same
+        // names): mirrored for the layout; from C# a scene gives them in its JSON.
+        internal IntPtr mesentery_root_points_m;
+        internal uint mesentery_root_point_count;
+        internal IntPtr mesentery_root_mapping;
+        internal uint mesentery_root_mapping_count;
+        internal IntPtr pinned_spans_m;
+        internal uint pinned_span_count;
+
         /// <summary>The library's defaults (ent_scene_desc_init), struct_size set.</summary>
         public static SceneDesc Default()
         {

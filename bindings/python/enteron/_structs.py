@@ -74,6 +74,12 @@ class ent_scene_desc(ctypes.Structure):
         ("stretch_stiffness_profile_count", ctypes.c_uint32),
         ("bend_stiffness_profile_N_m2", ctypes.POINTER(ctypes.c_double)),
         ("bend_stiffness_profile_count", ctypes.c_uint32),
+        ("mesentery_root_points_m", ctypes.POINTER(ctypes.c_double)),
+        ("mesentery_root_point_count", ctypes.c_uint32),
+        ("mesentery_root_mapping", ctypes.POINTER(ctypes.c_double)),
+        ("mesentery_root_mapping_count", ctypes.c_uint32),
+        ("pinned_spans_m", ctypes.POINTER(ctypes.c_double)),
+        ("pinned_span_count", ctypes.c_uint32),
     ]
 
 

@@ -156,16 +156,27 @@ class SceneDesc:
       bend_stiffness_profile_N_m2
                           an (n, 2) array-like of pairs (s m, value): a property along the
                           length in place of its constant (sets its _count)
+      mesentery_root_points_m
+                          an (n, 3) array-like: the mesentery's root as a polyline of n >= 2
+                          points (sets mesentery_root_point_count)
+      mesentery_root_mapping, pinned_spans_m
+                          an (n, 2) array-like of pairs: (s m, t) where along the root the
+                          bowel at s is tied; (from m, to m) spans of the bowel held in place
     The arrays are copied and kept with the description until the scene is created. The
     count of an array always comes from the array; an integer field that its C type cannot
     hold (control_points=2**32 + 10) raises OverflowError naming the field, never wraps."""
 
-    # The profiles (ent_scene_desc: a pointer to pairs, and their count), by pointer field.
+    # Arrays of pairs (ent_scene_desc: a pointer to pairs, and their count), by pointer field:
+    # the profiles, the mesentery's root mapping and the pinned spans.
     _PROFILES = {"radius_profile_m": "radius_profile_count",
                  "linear_density_profile_kg_per_m": "linear_density_profile_count",
                  "stretch_stiffness_profile_N": "stretch_stiffness_profile_count",
-                 "bend_stiffness_profile_N_m2": "bend_stiffness_profile_count"}
-    _ARRAYS = ("shape_points_xyz_m", "pinned_points") + tuple(_PROFILES)
+                 "bend_stiffness_profile_N_m2": "bend_stiffness_profile_count",
+                 "mesentery_root_mapping": "mesentery_root_mapping_count",
+                 "pinned_spans_m": "pinned_span_count"}
+    # Arrays of points (x y z, m), by pointer field: the mesentery's root.
+    _POINTS = {"mesentery_root_points_m": "mesentery_root_point_count"}
+    _ARRAYS = ("shape_points_xyz_m", "pinned_points") + tuple(_PROFILES) + tuple(_POINTS)
 
     def __init__(self, **fields):
         self.struct = s.ent_scene_desc()
@@ -181,7 +192,7 @@ class SceneDesc:
             object.__setattr__(self, name, value)
             return
         known = ({field[0] for field in s.ent_scene_desc._fields_} - {"struct_size", "callbacks", "pinned_point_count"}
-                 - set(self._PROFILES.values()))
+                 - set(self._PROFILES.values()) - set(self._POINTS.values()))
         if name not in known:
             raise AttributeError("ent_scene_desc has no settable field %r" % name)
         if name == "effects" and not isinstance(value, int):
@@ -206,15 +217,17 @@ class SceneDesc:
             if "length_m" not in self._given:
                 self.struct.length_m = 0.0  # the length of the spline through them: it starts at rest
             return
-        if name in self._PROFILES:
-            pairs = np.ascontiguousarray(value, dtype=np.float64)
-            if pairs.ndim != 2 or pairs.shape[1] != 2:
-                raise ValueError("SceneDesc.%s must be an (n, 2) array of pairs (s in m, value), got shape %s"
-                                 % (name, pairs.shape))
-            count = _fields.checked_integer(ctypes.c_uint32, len(pairs), "the pair count of " + name)
-            self._keep[name] = pairs
-            setattr(self.struct, name, pairs.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
-            setattr(self.struct, self._PROFILES[name], count)
+        if name in self._PROFILES or name in self._POINTS:
+            width, looks = (3, "x y z in m") if name in self._POINTS else (2, "pairs (s in m, value)")
+            rows = np.ascontiguousarray(value, dtype=np.float64)
+            if rows.ndim != 2 or rows.shape[1] != width:
+                raise ValueError("SceneDesc.%s must be an (n, %d) array of %s, got shape %s"
+                                 % (name, width, looks, rows.shape))
+            count = _fields.checked_integer(ctypes.c_uint32, len(rows), "the %s count of %s"
+                                            % ("point" if width == 3 else "pair", name))
+            self._keep[name] = rows
+            setattr(self.struct, name, rows.ctypes.data_as(ctypes.POINTER(ctypes.c_double)))
+            setattr(self.struct, {**self._PROFILES, **self._POINTS}[name], count)
             return
         if name == "pinned_points":
             indices = np.array([_fields.checked_integer(ctypes.c_uint32, index, "SceneDesc.pinned_points[%d]" % n)
@@ -256,12 +269,13 @@ class SceneDesc:
         if self.struct.pinned_point_count != len(indices) or (len(indices) and pointer != indices.ctypes.data):
             raise ValueError("SceneDesc.pinned_point_count is %d but pinned_points holds %d indices: set "
                              "pinned_points instead" % (self.struct.pinned_point_count, len(indices)))
-        for name, count_name in self._PROFILES.items():
-            pairs = self._keep.get(name, np.zeros((0, 2)))
+        for name, count_name in {**self._PROFILES, **self._POINTS}.items():
+            rows = self._keep.get(name, np.zeros((0, 2)))
             pointer = ctypes.cast(getattr(self.struct, name), ctypes.c_void_p).value
-            if getattr(self.struct, count_name) != len(pairs) or (len(pairs) and pointer != pairs.ctypes.data):
-                raise ValueError("SceneDesc.%s is %d but %s holds %d pairs: set %s instead"
-                                 % (count_name, getattr(self.struct, count_name), name, len(pairs), name))
+            if getattr(self.struct, count_name) != len(rows) or (len(rows) and pointer != rows.ctypes.data):
+                raise ValueError("SceneDesc.%s is %d but %s holds %d %s: set %s instead"
+                                 % (count_name, getattr(self.struct, count_name), name, len(rows),
+                                    "points" if name in self._POINTS else "pairs", name))
         return self.struct
 
     def __getattr__(self, name):

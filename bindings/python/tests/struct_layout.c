@@ -45,6 +45,8 @@ int main(void) {
     FIELD(radius_profile_m) FIELD(radius_profile_count) FIELD(linear_density_profile_kg_per_m)
     FIELD(linear_density_profile_count) FIELD(stretch_stiffness_profile_N) FIELD(stretch_stiffness_profile_count)
     FIELD(bend_stiffness_profile_N_m2) FIELD(bend_stiffness_profile_count)
+    FIELD(mesentery_root_points_m) FIELD(mesentery_root_point_count) FIELD(mesentery_root_mapping)
+    FIELD(mesentery_root_mapping_count) FIELD(pinned_spans_m) FIELD(pinned_span_count)
     END()
     BEGIN(ent_stats)
     FIELD(struct_size) FIELD(control_points) FIELD(time_s) FIELD(steps) FIELD(substeps) FIELD(rollbacks)

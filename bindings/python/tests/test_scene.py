@@ -171,6 +171,37 @@ class SameAsTheCApi(unittest.TestCase):
         self.assertEqual(caught.exception.status, enteron.ERROR_INVALID_ARGUMENT)
         self.assertIn("radius_profile_m[2] must be >= length_m", caught.exception.message)
 
+    def test_fan_mesentery_and_spans_from_c_and_json_make_the_same_scene(self):
+        # A root polyline, a mapping and a pinned span: the same trajectory whether they come
+        # through ent_scene_desc or JSON; the span's points stay where they started.
+        root = [[-0.072, 0.0, -0.1], [0.0, 0.021, -0.1], [0.072, 0.0, -0.1]]
+        mapping = [[0.0, 0.0], [0.4, 0.3], [1.0, 1.0]]
+        desc = enteron.SceneDesc(length_m=1.0, control_points=21, shape=enteron.SHAPE_LINE,
+                                 shape_center_m=(-0.5, 0, 0), mesentery_attachments=10,
+                                 mesentery_root_points_m=root, mesentery_root_mapping=mapping,
+                                 pinned_spans_m=[[0.45, 0.55]],
+                                 effects={"gravity", "stretch", "bend", "damping", "mesentery", "pinned"})
+        text = {"intestine": {"length": 1.0, "control_points": 21,
+                              "shape": {"kind": "line", "center": [-0.5, 0, 0]}},
+                "gravity": [0, 0, -9.81], "damping": {},
+                "mesentery": {"root": root, "root_mapping": mapping, "attachments": 10},
+                "pinned": {"spans": [{"from": 0.45, "to": 0.55}]}}
+        trajectories = []
+        for scene in (enteron.Scene(desc=desc), enteron.Scene(text)):
+            with scene:
+                start = scene.control_points()
+                for _ in range(50):
+                    scene.step(H)
+                trajectories.append(scene.control_points())
+        np.testing.assert_array_equal(trajectories[0], trajectories[1])
+        np.testing.assert_array_equal(trajectories[0][9:12], start[9:12])  # s = 0.45, 0.5, 0.55
+        self.assertLess(trajectories[0][0, 2], -1e-3)  # the rest fell
+        with self.assertRaisesRegex(ValueError, "mesentery_root_points_m must be an \\(n, 3\\) array"):
+            enteron.SceneDesc(mesentery_root_points_m=[[0.0, 0.0], [1.0, 1.0]])
+        with self.assertRaises(enteron.Error) as caught:
+            enteron.Scene(desc=enteron.SceneDesc(effects={"pinned"}, pinned_spans_m=[[0.5, 0.2]]))
+        self.assertIn("pinned_spans_m[0].to must be >= pinned_spans_m[0].from", caught.exception.message)
+
     def test_clamped_end_keeps_its_point_and_tangent(self):
         # A horizontal cantilever clamped at its first end sags, its end tangent
         # (4 q1 - 3 q0 - q2) / 2 staying horizontal; the same through JSON's pinned.clamped.

@@ -87,6 +87,31 @@ TEST(JsonLoader, FullDocumentGivesEveryValue) {
     EXPECT_EQ(c.pinned->points, (std::vector<uint32_t>{3, 40}));
 }
 
+// The root as a polyline: its points kept, the segment read as its ends; two points are the
+// segment itself, as are root_start and root_end; the mapping and the spans as written.
+TEST(JsonLoader, TheFanMesenterysRootMappingAndSpans) {
+    const SceneConfig fan = load(R"({"intestine": {"length": 1},
+        "mesentery": {"root": [[-0.07, 0, 0], [0, 0.02, 0], [0.07, 0, 0.01]], "root_mapping": [[0, 0], [1, 1]]},
+        "environment": [{"type": "plane"}],
+        "pinned": {"spans": [{"from": 0.2, "to": 0.4}, {"from": 0.5, "to": 0.6, "obstacle": 0}]}})");
+    EXPECT_EQ(fan.mesentery->root_points, (std::vector<double>{-0.07, 0, 0, 0, 0.02, 0, 0.07, 0, 0.01}));
+    EXPECT_EQ(fan.mesentery->root_start, (Vec3{-0.07, 0.0, 0.0}));
+    EXPECT_EQ(fan.mesentery->root_end, (Vec3{0.07, 0.0, 0.01}));
+    EXPECT_EQ(fan.mesentery->root_mapping, (std::vector<double>{0, 0, 1, 1}));
+    ASSERT_EQ(fan.pinned->spans.size(), 2u);
+    EXPECT_EQ(fan.pinned->spans[0].from, 0.2);
+    EXPECT_EQ(fan.pinned->spans[0].to, 0.4);
+    EXPECT_FALSE(fan.pinned->spans[0].obstacle.has_value());
+    EXPECT_EQ(fan.pinned->spans[1].obstacle, std::optional<std::size_t>(0));
+    for (const char* segment : {R"({"mesentery": {"root": [[-0.1, 0, 0], [0.1, 0, 0.05]]}})",
+                                R"({"mesentery": {"root_start": [-0.1, 0, 0], "root_end": [0.1, 0, 0.05]}})"}) {
+        const SceneConfig c = load(segment);
+        EXPECT_TRUE(c.mesentery->root_points.empty()) << segment;
+        EXPECT_EQ(c.mesentery->root_start, (Vec3{-0.1, 0.0, 0.0})) << segment;
+        EXPECT_EQ(c.mesentery->root_end, (Vec3{0.1, 0.0, 0.05})) << segment;
+    }
+}
+
 TEST(JsonLoader, EmptyDocumentIsTheDefaultElasticBowelWithNoOtherEffect) {
     const SceneConfig c = load("{}");
     const SceneConfig defaults;
@@ -385,7 +410,7 @@ TEST(JsonLoader, WrongTypesNameThePath) {
         {R"({"gravity": [0, "x", 0]})", "gravity[1] must be a number, got \"x\""},
         {R"({"damping": []})", "damping must be an object, got an array of 0 elements"},
         {R"({"mesentery": {"root": [[0, 0, 0]]}})",
-         "mesentery.root must be an array of 2 points [[x, y, z], [x, y, z]], got an array of 1 element"},
+         "mesentery.root must have at least 2 points (the root's ends), got 1"},
         {R"({"mesentery": {"root": [[0, 0, 0], [1, 1, {}]]}})",
          "mesentery.root[1][2] must be a number, got an object"},
         {R"({"pinned": {"ends": "middle"}})",
@@ -489,6 +514,41 @@ TEST(JsonLoader, ValuesOutOfRangeNameThePathAndTheLimit) {
         {R"({"pinned": {"clamped": "first", "control_points": [2]}})",
          "pinned.control_points[0] is 2, a control point whose motion the clamped first end already constrains "
          "(pinned.clamped): a point pin there would fight the clamp; remove it"},
+        // The fan mesentery's root and mapping, and the pinned spans.
+        {R"({"mesentery": {"root": [[0, 0, 0], [0.1, 0, 0], [0.1, 0, 0]]}})",
+         "mesentery.root[2] is the point before it again, [0.1, 0, 0]: each segment of a root of more than 2 points "
+         "needs a length"},
+        {R"({"mesentery": {"root": [[0, 0, 0], [0.1, 0, 0]], "root_end": [0.1, 0, 0]}})",
+         "mesentery.root and mesentery.root_end are both given: the root is a polyline or the segment from its start "
+         "to its end, give one of them"},
+        {R"({"mesentery": {"root_mapping": [[0, 0]]}})",
+         "mesentery.root_mapping must have at least 2 pairs [s, t] (s along the bowel in m, t the fraction of the "
+         "root's length), got 1"},
+        {R"({"mesentery": {"root_mapping": [[0, 0], [0, 0.5]]}})",
+         "mesentery.root_mapping[1][0] must be greater than the s before it (0): s must increase along the mapping, "
+         "got 0"},
+        {R"({"mesentery": {"root_mapping": [[0, 0], [6, 1.5]]}})",
+         "mesentery.root_mapping[1][1] must be in [0, 1], a fraction of the root's length, got 1.5"},
+        {R"({"mesentery": {"root_mapping": [[0, -0.1], [6, 1]]}})",
+         "mesentery.root_mapping[0][1] must be in [0, 1], a fraction of the root's length, got -0.1"},
+        {R"({"mesentery": {"root_mapping": [[0, 0.5], [6, 0.2]]}})",
+         "mesentery.root_mapping[1][1] must be >= the t before it (0.5): the bowel's order along the root must not "
+         "turn back, got 0.2"},
+        {R"({"pinned": {"spans": [{"from": 0.5, "to": 0.2}]}})",
+         "pinned.spans[0].to must be >= pinned.spans[0].from (0.5), got 0.2"},
+        {R"({"pinned": {"spans": [{"from": -1, "to": 0.2}]}})", "pinned.spans[0].from must be >= 0, got -1"},
+        {R"({"pinned": {"spans": [{"from": 5, "to": 6.5}]}})",
+         "pinned.spans[0].to must be <= intestine.length (6): a span lies along the bowel, got 6.5"},
+        {R"({"intestine": {"length": 1, "control_points": 11}, "pinned": {"spans": [{"from": 0.31, "to": 0.39}]}})",
+         "pinned.spans[0] holds no control point: they lie every 0.1 m along the bowel at rest, and none in [0.31, "
+         "0.39]; widen the span"},
+        {R"({"pinned": {"spans": [{"from": 0, "to": 1, "obstacle": 0}]}})",
+         "pinned.spans[0].obstacle must be < the number of obstacles (0), got 0"},
+        {R"({"pinned": {"clamped": "last", "spans": [{"from": 5, "to": 6}]}})",
+         "pinned.spans[0] holds control point 237, which the clamped last end (pinned.clamped) already moves: a pin "
+         "there would fight the clamp; end the span before it"},
+        {R"({"pinned": {"spans": [{"from": 0}]}})",
+         "pinned.spans[0] must be an object with \"from\" and \"to\", got an object"},
     };
     for (const auto& [text, message] : cases) expect_scene_error(text, message);
 }

@@ -62,7 +62,9 @@ TEST(PlausibleRanges, TheUnitMistakesOfAFirstHourAreNamedWithTheirKeys) {
     SceneConfig config;
     config.gravity = Vec3{0.0, 0.0, -9810.0};     // mm/s^2
     config.intestine.linear_density = 300.0;      // x 1000
-    config.mesentery.emplace().stiffness = 1e9;    // no unit explains it
+    MesenteryConfig mesentery;
+    mesentery.stiffness = 1e9;                     // no unit explains it
+    config.mesentery = mesentery;
     collision::Obstacle box = default_obstacle(collision::ObstacleKind::box_inside);
     box.extent = {150.0, 150.0, 150.0};            // millimetres
     config.environment.push_back(box);

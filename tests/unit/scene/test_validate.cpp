@@ -194,7 +194,20 @@ TEST(Validate, NonFiniteNumbersAreNamed) {
     SceneConfig root;
     root.mesentery.emplace().root_end[2] = inf;
     EXPECT_STREQ(validate_error(root, json_field_names()).what(),
-                 "mesentery.root[1][2] must be finite, got inf");
+                 "mesentery.root_end[2] must be finite, got inf");
+    SceneConfig polyline;
+    polyline.mesentery.emplace().root_points = {0.0, 0.0, 0.0, 0.05, 0.0, 0.0, 0.1, inf, 0.0};
+    // Given as a C description gives it: root_start and root_end left at their defaults.
+    for (const auto& [names, message] :
+         {std::pair{&json_field_names(), "mesentery.root[2][1] must be finite, got inf"},
+          std::pair{&c_field_names(), "mesentery_root_points_m[7] must be finite, got inf"}}) {
+        try {
+            validate(polyline, *names, fields_apart_from_defaults(polyline));
+            ADD_FAILURE() << "validate raised no error";
+        } catch (const Error& error) {
+            EXPECT_STREQ(error.what(), message);
+        }
+    }
 
     SceneConfig stretch;
     stretch.intestine.stretch_stiffness = inf;
