@@ -458,6 +458,18 @@ void Renderer::draw_tools(const SceneView& view, bool colour_pass) {
         const Eigen::Vector3d tip = point(tool.pose.position_m);
         const Eigen::Vector3d end = tip + shape.length_m * rotate(tool.pose, Eigen::Vector3d::UnitZ());
         draw_capsule(tip, end, shape.radius_m, steel_material());
+        if (shape.blade_width_m > 0.0) {
+            // A retractor's blade: side by side capsules, no farther apart than the shaft's
+            // radius, fill the rounded plate the bowel meets.
+            const Eigen::Vector3d across = rotate(tool.pose, Eigen::Vector3d::UnitX());
+            const Eigen::Vector3d blade = std::min(shape.blade_length_m, shape.length_m) * (end - tip) /
+                                          std::max(shape.length_m, 1e-12);
+            const int strips = 1 + static_cast<int>(std::ceil(shape.blade_width_m / shape.radius_m));
+            for (int k = 0; k <= strips; ++k) {
+                const Eigen::Vector3d offset = (k / static_cast<double>(strips) - 0.5) * shape.blade_width_m * across;
+                draw_capsule(tip + offset, tip + offset + blade, shape.radius_m, steel_material());
+            }
+        }
         // The jaws: green while they hold the bowel, amber when closed on nothing.
         const bool closed = view.targets != nullptr && i < view.targets->count && view.targets->grasp[i];
         if (tool.feedback.grasping || closed) {

@@ -78,6 +78,8 @@ ToolShape read_tool(const json& item) {
     read_number(item, "radius", tool.radius_m);
     read_number(item, "length", tool.length_m);
     read_number(item, "max_force", tool.max_force_N);
+    read_number(item, "blade_width", tool.blade_width_m);
+    read_number(item, "blade_length", tool.blade_length_m);
     read_vector(item, "position", tool.initial.position_m);
     read_vector(item, "orientation", tool.initial.orientation_wxyz);
     normalise(tool.initial.orientation_wxyz, 4);

@@ -47,6 +47,7 @@ struct ObstacleShape {
 
 struct ToolShape {
     double radius_m = 0.0, length_m = 0.0, max_force_N = 0.0;
+    double blade_width_m = 0.0, blade_length_m = 0.0;  // a retractor's blade at the tip (0: none)
     ToolPose initial;
 };
 

@@ -877,6 +877,9 @@ ENT_API ent_status ent_scene_attach_clamped_end(ent_scene* scene, int32_t ends, 
  * is at the pose's position; its shaft runs from the tip back along the orientation's
  * local +z axis for length_m, with radius radius_m. With the identity orientation
  * (1, 0, 0, 0) the shaft rises straight up from the tip: a vertical tool pointing down.
+ * A grasper may have jaws (jaw_length_m, jaw_opening_m: what its grasp takes, see
+ * ent_tool_grasp) and a retractor a flat blade at its tip (blade_width_m, blade_length_m);
+ * both open or widen across the tool's local x axis.
  * Fill with ent_tool_desc_default first; it is not retained.
  */
 typedef struct ent_tool_desc {
@@ -895,6 +898,15 @@ typedef struct ent_tool_desc {
     double coupling_stiffness_N_per_m; /**< proxy mode: the virtual coupling's spring from the proxy to the commanded tip, > 0 (default 1000, 1 N/mm). */
     double coupling_damping_N_s_per_m; /**< proxy mode: the coupling's damper, >= 0 (default 1). */
     double friction;                 /**< Coulomb coefficient of this tool's contacts, >= 0; < 0 (default -1): the scene's (contact_friction). */
+    /* Later fields (an older struct_size leaves them at their defaults: the grasp takes what lies nearest the tip): */
+    double jaw_length_m;             /**< a grasper's jaws: the last jaw_length_m of the shaft, m, >= 0 and <= 1 (default 0; see ent_tool_grasp). */
+    double jaw_opening_m;            /**< how wide the jaws open, across the tool's local x axis, m, >= 0 and <= 1 (default 0). */
+    /** A retractor's blade: the first blade_length_m of the shaft from the tip widened to
+     *  blade_width_m across the tool's local x axis, as thick as the shaft (2 radius_m): a fan
+     *  or paddle retractor, which spreads its max_force_N over a loop's width. Width 0
+     *  (default): no blade, the capsule of a grasper. m, >= 0 and <= 1. */
+    double blade_width_m;
+    double blade_length_m;           /**< the blade's length from the tip, m, >= 0 and <= 10 (beyond length_m: the whole shaft; default 0). */
 } ent_tool_desc;
 
 /**
@@ -995,7 +1007,14 @@ ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double 
  * push, and the grasp starts without a jolt); the material point of the axis held stays
  * the same as the bowel moves. With nothing within reach nothing is held (still ENT_OK;
  * ent_tool_state reports it once that step is published). Grasping again picks the
- * nearest point anew. When holding would need more than max_force_N the grasp slips: it
+ * nearest point anew. A grasper with jaws (jaw_length_m, jaw_opening_m) takes what lies
+ * between them instead: its jaws are the last jaw_length_m of the shaft, opening
+ * jaw_opening_m wide across the tool's local x axis, and of the centres within the same
+ * reach of the rectangle they sweep the one least off that strip seen along the tool's
+ * axis is held (ties: the nearest to the tip), so a loop in the jaws' plane is taken
+ * before a nearer one beside them: place the jaws over a loop and turn them onto it to
+ * aim (docs/haptics.md). ent_tool_read_contacts' grasp_u says where
+ * it took hold. When holding would need more than max_force_N the grasp slips: it
  * is released at the end of that step, with no force jump beyond the bound.
  * Any thread, at any time: wait-free, like ent_tool_set_pose. Of a grasp and a release
  * posted before one step, the last one posted wins.

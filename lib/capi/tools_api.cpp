@@ -57,8 +57,14 @@ PublishedTool published_tool(const SceneHandle& handle, int32_t tool) {
 }
 
 // The sizes of ent_tool_desc and ent_tool_feedback in released headers: before the fields
-// of the tool's proxy and stiffness, (the feedback) before saturated, and now.
+// of the tool's proxy and stiffness, (the desc) before the jaws, (the feedback) before
+// saturated, and now.
 constexpr std::size_t kToolDescFirstSize = offsetof(ent_tool_desc, mode);
+constexpr std::size_t kToolDescProxySize = offsetof(ent_tool_desc, jaw_length_m);
+void check_tool_desc_size(uint32_t struct_size) {
+    enteron::capi::check_struct_size(struct_size, {kToolDescFirstSize, kToolDescProxySize, sizeof(ent_tool_desc)},
+                                     "ent_tool_desc");
+}
 
 // ent_tool_desc's fields, each the row of the tool's table with its name
 // (scene/scene_table.cpp); struct_size aside, all of them.
@@ -68,6 +74,7 @@ const enteron::capi::DescField<ent_tool_desc> kToolDescFields[] = {
     TOOL_FIELD(grasp_stiffness_N_per_m), TOOL_FIELD(grasp_damping_N_s_per_m), TOOL_FIELD(position_m),
     TOOL_FIELD(orientation_wxyz), TOOL_FIELD(mode), TOOL_FIELD(passivity_limiter),
     TOOL_FIELD(coupling_stiffness_N_per_m), TOOL_FIELD(coupling_damping_N_s_per_m), TOOL_FIELD(friction),
+    TOOL_FIELD(jaw_length_m), TOOL_FIELD(jaw_opening_m), TOOL_FIELD(blade_width_m), TOOL_FIELD(blade_length_m),
 };
 #undef TOOL_FIELD
 
@@ -101,7 +108,7 @@ extern "C" {
 ENT_API ent_status ent_tool_desc_init(ent_tool_desc* desc, uint32_t struct_size) {
     return guarded([&] {
         require(desc, "desc");
-        enteron::capi::check_struct_size(struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
+        check_tool_desc_size(struct_size);
         ent_tool_desc defaults = desc_of(enteron::collision::ToolConfig{});
         defaults.struct_size = struct_size;
         std::memcpy(desc, &defaults, struct_size);
@@ -113,7 +120,7 @@ ENT_API ent_status ent_tool_read_desc(const ent_scene* scene, int32_t tool, ent_
         const enteron::capi::SceneCall call(scene);
         const SceneHandle& handle = call.handle();
         require(out, "out");
-        enteron::capi::check_struct_size(out->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
+        check_tool_desc_size(out->struct_size);
         const enteron::collision::ToolChannels& channels = handle.scene->tool_channels();
         const enteron::collision::ToolConfig* added = tool >= 0 ? channels.added(static_cast<std::size_t>(tool)) : nullptr;
         if (added == nullptr) unknown_tool(tool, channels.size());
@@ -131,7 +138,7 @@ ENT_API ent_status ent_tool_add(ent_scene* scene, const ent_tool_desc* desc, int
         const SceneCall call(scene);
         SceneHandle& handle = call.handle();
         require(desc, "desc");
-        enteron::capi::check_struct_size(desc->struct_size, {kToolDescFirstSize, sizeof(ent_tool_desc)}, "ent_tool_desc");
+        check_tool_desc_size(desc->struct_size);
         const enteron::capi::DrivingCall driving(handle, "ent_tool_add");
         // An older, smaller desc: its missing fields take their defaults.
         ent_tool_desc full;

@@ -14,7 +14,9 @@
 namespace enteron::collision {
 
 struct ShaftContact {
-    double s;         // shaft parameter of the closest point, in [0, 1]
+    ShaftPoint at;    // where on the tool (s along the shaft, w across the blade)
+    double s;         // shaft parameter of the closest point, in [0, 1] (at.s)
+    double w;         // across the blade, in [-1, 1]; 0 on the shaft (at.w)
     Vec3 d;           // the centre minus that point, m
     double distance;  // |d|, m
     double depth;     // the reach minus |d|, m (> 0)
@@ -25,7 +27,9 @@ struct ShaftContact {
 // on the shaft's axis is pushed up (+z): any direction will do.
 inline bool shaft_contact(const Shaft& shaft, const Vec3& center, ShaftContact* out) {
     double distance2;
-    if (!shaft.touches(center, &out->s, &out->d, &distance2)) return false;
+    if (!shaft.touches(center, &out->at, &out->d, &distance2)) return false;
+    out->s = out->at.s;
+    out->w = out->at.w;
     out->distance = std::sqrt(distance2);
     out->depth = shaft.reach - out->distance;
     out->normal = out->distance > 1e-12 ? Vec3(out->d / out->distance) : Vec3::UnitZ();
@@ -42,19 +46,30 @@ inline ContactJacobian shaft_contact_jacobian(const ContactParameters& law, cons
     return {-law.stiffness * nn, -(force.damping * nn + force.friction_damping * (Mat3::Identity() - nn))};
 }
 
-// d(force on the sphere)/d(tip) as the shaft moves rigidly with its tip, the sphere held,
+// d(force on the sphere)/d(tip) as the tool moves rigidly with its tip, the sphere held,
 // the tool's velocity changing by `velocity_rate` times the tip's move (a proxy's v_p =
 // (p - p0) / dt: 1 / dt; velocities held: 0) and its point's velocity with s along
-// `axis_velocity` (the tail's velocity minus the tip's). At an end of the shaft the closest
-// point moves with the tip; along its side it slides along the axis a: d(d)/d(tip) =
-// -(I - a a^T / |a|^2), ds/d(tip) = -a^T / |a|^2.
+// `axis_velocity` (the tail's velocity minus the tip's) and with w along `side_velocity`.
+// Where the nearest point is held (an end, an edge's corner) it moves with the tip; where it
+// slides along the axis a, d(d)/d(tip) loses a a^T / |a|^2 and ds/d(tip) = -a^T / |a|^2, and
+// across the blade's side e the same with e:
+//   d(d)/d(tip) = -(I - [along] a a^T / |a|^2 - [across] e e^T / |e|^2).
 inline Mat3 shaft_contact_rate(const ContactJacobian& jacobian, const ShaftContact& contact, const Shaft& shaft,
-                               const Vec3& axis_velocity, double velocity_rate) {
-    if (contact.s > 0.0 && contact.s < 1.0) {
-        const Eigen::RowVector3d ds = -shaft.inverse_axis2 * shaft.axis.transpose();
-        const Mat3 across = Mat3::Identity() + shaft.axis * ds;
-        return -(jacobian.position * across +
-                 jacobian.velocity * (velocity_rate * Mat3::Identity() + axis_velocity * ds));
+                               const Vec3& axis_velocity, double velocity_rate, const Vec3& side_velocity = Vec3::Zero()) {
+    if (contact.at.slides_along || contact.at.slides_across) {
+        Mat3 across = Mat3::Identity();
+        Mat3 moving = velocity_rate * Mat3::Identity();
+        if (contact.at.slides_along) {
+            const Eigen::RowVector3d ds = -shaft.inverse_axis2 * shaft.axis.transpose();
+            across += shaft.axis * ds;
+            moving += axis_velocity * ds;
+        }
+        if (contact.at.slides_across) {
+            const Eigen::RowVector3d dw = -shaft.inverse_side2 * shaft.blade.side.transpose();
+            across += shaft.blade.side * dw;
+            moving += side_velocity * dw;
+        }
+        return -(jacobian.position * across + jacobian.velocity * moving);
     }
     if (velocity_rate == 0.0) return -jacobian.position;
     return -(jacobian.position + velocity_rate * jacobian.velocity);

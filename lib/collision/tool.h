@@ -2,7 +2,8 @@
 // A surgical tool as the bowel sees it: a capsule (a shaft swept by a sphere) whose tip is
 // at `position` and whose shaft runs from the tip back along the orientation's local +z
 // axis for `length` metres (the identity orientation is a vertical tool pointing down,
-// tip lowest). Poses come from the caller (tool_mailbox.h); the tool moves continuously
+// tip lowest); a retractor's blade widens the first part of the shaft across local x
+// (tool_shaft.h). Poses come from the caller (tool_mailbox.h); the tool moves continuously
 // from the previous pose to the new one over the next step.
 //
 // Two modes (docs/haptics.md):
@@ -40,6 +41,16 @@ struct ToolSettings {
     double coupling_damping = 1.0;       // N s/m, >= 0
     double friction = -1.0;              // Coulomb coefficient of its contacts, >= 0; < 0: the scene's
     bool passivity_limiter = false;      // Hannaford and Ryu's time-domain passivity controller
+    // A grasper's jaws (grasp_aim.h): the last jaw_length metres of the shaft, opening
+    // jaw_opening wide across the tool's local x axis. Both 0: a grasp takes what lies
+    // nearest the tip (the first tools' rule).
+    double jaw_length = 0.0;   // m, >= 0
+    double jaw_opening = 0.0;  // m, >= 0
+    // A retractor's blade (tool_shaft.h): the first blade_length metres of the shaft from the
+    // tip widened to blade_width across the tool's local x axis, as thick as the shaft. A
+    // width of 0: no blade, the capsule of a grasper.
+    double blade_width = 0.0;   // m, >= 0
+    double blade_length = 0.0;  // m, >= 0 (beyond `length`: the whole shaft)
 };
 
 struct ToolPose {
@@ -87,6 +98,12 @@ struct ToolOutput {
     // the wrench was clipped to it): the force is the bound, not what the contacts asked.
     bool saturated = false;
 };
+
+// The unit local +x axis of a unit quaternion (w x y z) in world coordinates.
+inline Vec3 quaternion_x_axis(const std::array<double, 4>& q) {
+    const double w = q[0], x = q[1], y = q[2], z = q[3];
+    return Vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + w * z), 2.0 * (x * z - w * y));
+}
 
 // The unit local +z axis of a unit quaternion (w x y z) in world coordinates.
 inline Vec3 quaternion_z_axis(const std::array<double, 4>& q) {

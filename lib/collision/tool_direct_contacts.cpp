@@ -12,7 +12,7 @@ void DirectContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doub
                               const mechanics::State& state, const CollisionSpheres& spheres,
                               ToolContacts& contacts) {
     ToolEvaluation& evaluation = tool.evaluation;
-    const Shaft shaft(at.tip, at.tail, tool.settings.radius + spheres.radius());
+    const Shaft shaft(at.tip, at.tail, tool.settings.radius + spheres.radius(), {at.side, blade_share(tool.settings)});
     evaluation.rested = {at.tip, at.tip_velocity, t};
     // The contacts, first unscaled.
     hits_.clear();
@@ -33,14 +33,16 @@ void DirectContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doub
         hit.depth = touch.depth;
         hit.normal = touch.normal;
         hit.velocity = spline::evaluate(state.v.data(), sphere.weights);
-        const Vec3 relative = hit.velocity - ((1.0 - s) * at.tip_velocity + s * at.tail_velocity);
+        Vec3 relative = hit.velocity - ((1.0 - s) * at.tip_velocity + s * at.tail_velocity);
+        if (touch.w != 0.0) relative -= touch.w * at.side_velocity;
         hit.force = contact_force(tool.contact, hit.depth, hit.normal, relative);
         hit.arm = s * shaft.axis + tool.settings.radius * hit.normal;
+        if (touch.w != 0.0) hit.arm += touch.w * at.side;
         total += hit.force.force;
         const double magnitude = hit.force.force.norm();
         total_magnitude += magnitude;
         const Mat3 rate = shaft_contact_rate(shaft_contact_jacobian(tool.contact, touch, hit.force, relative), touch,
-                                             shaft, at.tail_velocity - at.tip_velocity, 0.0);
+                                             shaft, at.tail_velocity - at.tip_velocity, 0.0, at.side_velocity);
         total_rate += rate;
         if (magnitude > 0.0) magnitude_rate += (hit.force.force / magnitude).transpose() * rate;
         hits_.push_back(hit);

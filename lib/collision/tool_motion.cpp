@@ -28,7 +28,8 @@ Vec3 tail_of(const ToolPose& pose, double length) {
     return pose.position + length * quaternion_z_axis(pose.orientation);
 }
 
-ShaftAt commanded_shaft(const ToolPose& from, const ToolPose& to, double length, const StepSpan& step, double t) {
+ShaftAt commanded_shaft(const ToolPose& from, const ToolPose& to, double length, const StepSpan& step, double t,
+                        double half_width) {
     const double alpha = step.fraction(t);
     ToolPose pose;
     pose.position = (1.0 - alpha) * from.position + alpha * to.position;
@@ -42,7 +43,18 @@ ShaftAt commanded_shaft(const ToolPose& from, const ToolPose& to, double length,
         shaft.tip_velocity = (to.position - from.position) / step.dt;
         shaft.tail_velocity = (tail_of(to, length) - tail_of(from, length)) / step.dt;
     }
+    if (half_width > 0.0) {
+        shaft.side = half_width * quaternion_x_axis(pose.orientation);
+        if (step.dt > 0.0)
+            shaft.side_velocity =
+                half_width * (quaternion_x_axis(to.orientation) - quaternion_x_axis(from.orientation)) / step.dt;
+    }
     return shaft;
+}
+
+double blade_share(const ToolSettings& settings) {
+    if (!(settings.blade_width > 0.0) || !(settings.length > 0.0)) return 0.0;
+    return std::min(1.0, settings.blade_length / settings.length);
 }
 
 ShaftTravel commanded_travel(const ToolPose& from, const ToolPose& to, double length) {

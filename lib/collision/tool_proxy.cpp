@@ -33,19 +33,20 @@ constexpr double kSufficientDecrease = 1e-4;
 // rounding of the stop radius, where first_touch would stop every later step too.
 double free_fraction(const ProxyProblem& problem, const std::pmr::vector<ProxyCandidate>& candidates, const Vec3& p,
                      const Vec3& step) {
-    const Shaft shaft(p, p + problem.shaft, problem.reach);
+    const Shaft shaft(p, p + problem.shaft, problem.reach, problem.blade);
     // Within the step (t <= 1) the shaft comes no closer to a centre than the centre's
     // distance to the box around it less the step's length: a centre outside the box
     // widened by the step (and a hundredth of the reach, for rounding) cannot be met, and
     // first_touch is not asked about it.
-    const Shaft swept(p, p + problem.shaft, 1.01 * problem.reach + step.norm());
+    const Shaft swept(p, p + problem.shaft, 1.01 * problem.reach + step.norm(), problem.blade);
     double first = 1.0;
     for (const ProxyCandidate& candidate : candidates) {
         if (!swept.in_box(candidate.center)) continue;
-        double s, distance2;
+        ShaftPoint at;
+        double distance2;
         Vec3 d;
         const double reach = problem.reach - candidate.thinner;
-        if (shaft.touches(candidate.center, &s, &d, &distance2) && distance2 < reach * reach) continue;
+        if (shaft.touches(candidate.center, &at, &d, &distance2) && distance2 < reach * reach) continue;
         const double t = shaft.first_touch(candidate.center, step, reach - kFirstTouchDepth * problem.reach);
         if (t > 0.0) first = std::min(first, t);
     }
@@ -72,7 +73,7 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
                         const Vec3& p, ProxyResult& result, Mat3& jacobian) {
     const double rate = problem.dt > 0.0 ? 1.0 / problem.dt : 0.0;  // d(v_p)/dp
     const Vec3 vp = problem.dt > 0.0 ? Vec3((p - problem.start) * rate) : problem.start_velocity;
-    const Shaft shaft(p, p + problem.shaft, problem.reach);
+    const Shaft shaft(p, p + problem.shaft, problem.reach, problem.blade);
     contacts_.clear();
     Vec3 given = Vec3::Zero();  // to the bowel
     Mat3 given_rate = Mat3::Zero();  // d(given)/dp
@@ -86,13 +87,15 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
         contact.candidate = k;
         contact.depth = touch.depth;
         contact.s = touch.s;
+        contact.w = touch.w;
         contact.normal = touch.normal;
-        const Vec3 relative = candidate.velocity - (vp + touch.s * problem.shaft_velocity);
+        Vec3 relative = candidate.velocity - (vp + touch.s * problem.shaft_velocity);
+        if (touch.w != 0.0) relative -= touch.w * problem.side_velocity;
         contact.force = contact_force(problem.contact, contact.depth, contact.normal, relative);
         contact.jacobian = shaft_contact_jacobian(problem.contact, touch, contact.force, relative);
         given += contact.force.force;
         // v_p moves with (p - p0) / dt.
-        given_rate += shaft_contact_rate(contact.jacobian, touch, shaft, problem.shaft_velocity, rate);
+        given_rate += shaft_contact_rate(contact.jacobian, touch, shaft, problem.shaft_velocity, rate, problem.side_velocity);
         contacts_.push_back(contact);
     }
     result.grasp = GraspSpring{};

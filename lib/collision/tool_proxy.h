@@ -68,6 +68,8 @@ struct ProxyBudget {
 struct ProxyProblem {
     Vec3 shaft = Vec3::Zero();           // tail - tip at this instant, m (the commanded orientation)
     Vec3 shaft_velocity = Vec3::Zero();  // its rate of change, m/s (a turning tool)
+    Blade blade;                         // a retractor's blade at the tip (tool_shaft.h): its side turns with the tool
+    Vec3 side_velocity = Vec3::Zero();   // the blade's side's rate of change, m/s
     double reach = 0.0;                  // the tool's radius plus R, m
     ContactParameters contact;           // the proxy's contact law
     double coupling_stiffness = 0.0;     // k_c, N/m
@@ -87,6 +89,7 @@ struct ProxyContact {
     std::size_t candidate;  // index in the candidates
     double depth;           // m
     double s;               // shaft parameter of the closest point, in [0, 1]
+    double w;               // across the blade, in [-1, 1]; 0 on the shaft
     Vec3 normal;            // out of the proxy, towards the sphere's centre
     ContactForce force;     // on the bowel
     ContactJacobian jacobian;

@@ -10,15 +10,24 @@ namespace enteron::collision {
 namespace {
 
 // The box around where a proxy may go in one solve: its shaft where it was and where the
-// device is, grown by twice the reach (it may slide half round a tube on its way).
+// device is, grown by twice the reach (it may slide half round a tube on its way) and its
+// blade's half width.
 struct SweptBox {
     Vec3 low, high;
-    SweptBox(const Vec3& from, const Vec3& to, const Vec3& shaft, double reach) {
-        low = from.cwiseMin(to).cwiseMin(from + shaft).cwiseMin(to + shaft).array() - 2.0 * reach;
-        high = from.cwiseMax(to).cwiseMax(from + shaft).cwiseMax(to + shaft).array() + 2.0 * reach;
+    SweptBox(const Vec3& from, const Vec3& to, const Vec3& shaft, double reach, const Vec3& side) {
+        const Vec3 width = side.cwiseAbs();
+        low = from.cwiseMin(to).cwiseMin(from + shaft).cwiseMin(to + shaft).array() - 2.0 * reach - width.array();
+        high = from.cwiseMax(to).cwiseMax(from + shaft).cwiseMax(to + shaft).array() + 2.0 * reach + width.array();
     }
     bool contains(const Vec3& p) const { return !((p.array() < low.array()) || (p.array() > high.array())).any(); }
 };
+
+// From the proxy's tip to where contact c's force acts on the tool's surface, m.
+Vec3 arm_of(const ProxyContact& c, const ProxyProblem& problem, double radius) {
+    Vec3 arm = c.s * problem.shaft + radius * c.normal;
+    if (c.w != 0.0) arm += c.w * problem.blade.side;
+    return arm;
+}
 
 }  // namespace
 
@@ -34,6 +43,8 @@ void ProxyContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doubl
     ProxyProblem problem;
     problem.shaft = at.tail - at.tip;
     problem.shaft_velocity = at.tail_velocity - at.tip_velocity;
+    problem.blade = {at.side, blade_share(tool.settings)};
+    problem.side_velocity = at.side_velocity;
     problem.reach = tool.settings.radius + spheres.radius();
     problem.contact = tool.contact;
     problem.coupling_stiffness = tool.settings.coupling_stiffness;
@@ -51,7 +62,7 @@ void ProxyContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doubl
     problem.dt = std::max(0.0, t - tool.proxy.time);
     // The spheres the proxy may meet on its way from where it was to the device.
     candidates_.clear();
-    const SweptBox box(tool.proxy.position, at.tip, problem.shaft, problem.reach);
+    const SweptBox box(tool.proxy.position, at.tip, problem.shaft, problem.reach, at.side);
     for (std::size_t i = 0; i < spheres.size(); ++i) {
         const Sphere& sphere = spheres[i];
         if (!box.contains(sphere.center)) continue;
@@ -97,7 +108,7 @@ void ProxyContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doubl
         const ProxyCandidate& candidate = candidates_[c.candidate];
         const ToolContact& contact = contacts.add_sphere(
             static_cast<uint32_t>(candidate.sphere), spheres[candidate.sphere].weights, c.depth, c.force, c.normal,
-            scale, candidate.center, candidate.velocity, c.s * problem.shaft + tool.settings.radius * c.normal);
+            scale, candidate.center, candidate.velocity, arm_of(c, problem, tool.settings.radius));
         add_to_body(contact, contact_linearization(c.force, h));
     }
     evaluation.sphere_contacts = static_cast<uint32_t>(proxy_.contacts().size());

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collision/grasp_aim.h"
 #include "collision/tool_grasp.h"
 #include "collision/tool_outputs.h"
 #include "collision/tool_shaft.h"
@@ -83,23 +84,22 @@ bool ToolsForce::take_commands(const mechanics::State& state, double dt) {
 void ToolsForce::take_grasp(ToolState& tool, const mechanics::State& state) {
     spheres_.update(state.q.data());
     const double reach = tool.settings.radius + spheres_.radius() + tool.settings.grasp_margin;
-    // Where the tool rests: the proxy's tip (the commanded tip in direct mode).
-    const Vec3 tip = tool.settings.mode == ToolMode::proxy ? tool.proxy.position : tool.current.position;
-    double best = reach * reach;
-    bool found = false;
-    for (std::size_t i = 0; i < spheres_.size(); ++i) {
-        const double d2 = (spheres_[i].center - tip).squaredNorm();
-        if (d2 <= best) {
-            best = d2;
-            tool.grasp.point = spheres_[i].weights;
-            tool.grasp.sphere = static_cast<uint32_t>(i);
-            found = true;
-        }
-    }
-    if (found) {
+    // Where the tool rests: the proxy's tip (the commanded tip in direct mode), its jaws
+    // turned as commanded.
+    Jaws jaws;
+    jaws.tip = tool.settings.mode == ToolMode::proxy ? tool.proxy.position : tool.current.position;
+    jaws.axis = quaternion_z_axis(tool.current.orientation);
+    jaws.across = quaternion_x_axis(tool.current.orientation);
+    jaws.length = std::min(tool.settings.jaw_length, tool.settings.length);
+    jaws.half_opening = 0.5 * tool.settings.jaw_opening;
+    GraspAim aim(jaws, reach);
+    for (std::size_t i = 0; i < spheres_.size(); ++i) aim.offer(i, spheres_[i].center);
+    if (aim.found()) {
+        tool.grasp.point = spheres_[aim.picked()].weights;
+        tool.grasp.sphere = static_cast<uint32_t>(aim.picked());
         tool.grasp.holding = true;
         // The spring starts slack wherever the held point is (no jolt), then closes.
-        tool.grasp.rest = std::max(tool.settings.radius + spheres_.radius(), std::sqrt(best));
+        tool.grasp.rest = std::max(tool.settings.radius + spheres_.radius(), std::sqrt(aim.picked_tip_distance2()));
     }
 }
 
@@ -130,7 +130,8 @@ void ToolsForce::evaluate(const mechanics::State& state, double* force, const me
         evaluation.sphere_contacts = 0;
         evaluation.has_body = false;
         if (tool.removed) continue;
-        const ShaftAt shaft = commanded_shaft(tool.current, tool.target, tool.settings.length, step_, t);
+        const ShaftAt shaft = commanded_shaft(tool.current, tool.target, tool.settings.length, step_, t,
+                                              0.5 * tool.settings.blade_width);
         const double rest = grasp_rest_at(tool, t);
         if (tool.settings.mode == ToolMode::proxy)
             proxy_.evaluate(tool, shaft, t, rest, state, spheres_, contacts_);
@@ -200,15 +201,17 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
         if (tool.removed) continue;
         // The capsule the bowel meets: the proxy where it rests now (with the commanded
         // orientation), or the commanded pose itself.
-        const ShaftAt at = commanded_shaft(tool.current, tool.target, tool.settings.length, step_, state.time);
+        const ShaftAt at = commanded_shaft(tool.current, tool.target, tool.settings.length, step_, state.time,
+                                           0.5 * tool.settings.blade_width);
         const bool proxy = tool.settings.mode == ToolMode::proxy;
         const Vec3 tip = proxy ? tool.proxy.position : at.tip;
-        const Shaft shaft(tip, tip + (at.tail - at.tip), tool.settings.radius + r);
+        const Shaft shaft(tip, tip + (at.tail - at.tip), tool.settings.radius + r, {at.side, blade_share(tool.settings)});
         double stored = 0.0, total_magnitude = 0.0;
         for (std::size_t i = 0; i < spheres_.size(); ++i) {
-            double s, dist2;
+            ShaftPoint where;
+            double dist2;
             Vec3 d;
-            if (!shaft.touches(spheres_[i].center, &s, &d, &dist2)) continue;
+            if (!shaft.touches(spheres_[i].center, &where, &d, &dist2)) continue;
             const double depth = shaft.reach - std::sqrt(dist2);
             if (!(depth > 0.0)) continue;
             stored += 0.5 * tool.contact.stiffness * depth * depth;

@@ -114,6 +114,9 @@ void BorderedSystem::solve(const SystemMatrix& factored, double* dv) {
     std::size_t* window_first = window_first_.data();
     std::size_t* window_last = window_last_.data();
     const std::size_t bodies = bodies_;
+    // P is block-diagonal (bodies meet only through the bowel): the blocks between two
+    // bodies start at zero, not at what the last solve's factorisation left there.
+    std::fill(schur_.begin(), schur_.begin() + m * m, 0.0);
     for (std::size_t b = 0; b < bodies; ++b) {
         Body& body = body_[b];
         for (std::size_t i = 0; i < 3; ++i)

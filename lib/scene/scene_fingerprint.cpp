@@ -130,6 +130,14 @@ void add_to_fingerprint(Fingerprint& f, const collision::ToolConfig& tool) {
     f.add(s.coupling_damping);
     f.add(s.friction);
     f.add(uint64_t{s.passivity_limiter});
+    // The jaws and the blade only when a tool has them: a state saved before they existed
+    // still restores.
+    if (s.jaw_length != 0.0 || s.jaw_opening != 0.0 || s.blade_width != 0.0 || s.blade_length != 0.0) {
+        f.add(s.jaw_length);
+        f.add(s.jaw_opening);
+        f.add(s.blade_width);
+        f.add(s.blade_length);
+    }
     // Not its start pose: where a tool is belongs to the state.
 }
 

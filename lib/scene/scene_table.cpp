@@ -320,6 +320,18 @@ const Field kToolFields[] = {
     // Finite; < 0: the scene's.
     number<&ToolConfig::settings, &ToolSettings::friction>("friction", "friction"),
     flag<&ToolConfig::settings, &ToolSettings::passivity_limiter>("passivity_limiter", "passivity_limiter"),
+    number<&ToolConfig::settings, &ToolSettings::jaw_length>("jaw_length", "jaw_length_m")
+        .at_least(0.0)
+        .at_most(kMaxToolRadius),
+    number<&ToolConfig::settings, &ToolSettings::jaw_opening>("jaw_opening", "jaw_opening_m")
+        .at_least(0.0)
+        .at_most(kMaxToolRadius),
+    number<&ToolConfig::settings, &ToolSettings::blade_width>("blade_width", "blade_width_m")
+        .at_least(0.0)
+        .at_most(kMaxToolRadius),
+    number<&ToolConfig::settings, &ToolSettings::blade_length>("blade_length", "blade_length_m")
+        .at_least(0.0)
+        .at_most(kMaxToolLength),
 };
 const Block kTool = block_of(kToolFields);
 

@@ -183,7 +183,8 @@ TEST(ReadDesc, AToolReadsBackAsAddedItsQuaternionNormalised) {
     const ScenePtr scene = create_json(R"({"tools": [
         {"radius": 0.004, "length": 0.25, "max_force": 3, "grasp_margin": 0.002, "grasp_stiffness": 150,
          "grasp_damping": 1.5, "position": [0.3, 0.0, 0.4], "orientation": [2, 0, 0, 0], "mode": "direct",
-         "coupling_stiffness": 800, "coupling_damping": 0.5, "friction": 0.2, "passivity_limiter": true},
+         "coupling_stiffness": 800, "coupling_damping": 0.5, "friction": 0.2, "passivity_limiter": true,
+         "jaw_length": 0.02, "jaw_opening": 0.015},
         {}]})");
     ASSERT_TRUE(scene);
     const ent_tool_desc first = read_tool(scene.get(), 0);
@@ -201,6 +202,8 @@ TEST(ReadDesc, AToolReadsBackAsAddedItsQuaternionNormalised) {
     EXPECT_EQ(first.coupling_damping_N_s_per_m, 0.5);
     EXPECT_EQ(first.friction, 0.2);
     EXPECT_EQ(first.passivity_limiter, 1);
+    EXPECT_EQ(first.jaw_length_m, 0.02);
+    EXPECT_EQ(first.jaw_opening_m, 0.015);
 
     ent_tool_desc defaults;
     ent_tool_desc_default(&defaults);

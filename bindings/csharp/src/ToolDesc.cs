@@ -39,6 +39,14 @@ namespace Enteron
         public double coupling_damping_N_s_per_m;
         /// <summary>Coulomb coefficient of this tool's contacts; &lt; 0 (default -1): the scene's</summary>
         public double friction;
+        /// <summary>a grasper's jaws: the last jaw_length_m of the shaft, m (default 0: a grasp takes what lies nearest the tip)</summary>
+        public double jaw_length_m;
+        /// <summary>how wide the jaws open, across the tool's local x axis, m (default 0)</summary>
+        public double jaw_opening_m;
+        /// <summary>a retractor's blade: the first blade_length_m of the shaft widened to this across local x, m (default 0: no blade)</summary>
+        public double blade_width_m;
+        /// <summary>the blade's length from the tip, m (default 0)</summary>
+        public double blade_length_m;
 
         /// <summary>The library's defaults (ent_tool_desc_init).</summary>
         public static ToolDesc Default()

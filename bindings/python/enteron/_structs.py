@@ -225,6 +225,10 @@ class ent_tool_desc(ctypes.Structure):
         ("coupling_stiffness_N_per_m", ctypes.c_double),
         ("coupling_damping_N_s_per_m", ctypes.c_double),
         ("friction", ctypes.c_double),
+        ("jaw_length_m", ctypes.c_double),
+        ("jaw_opening_m", ctypes.c_double),
+        ("blade_width_m", ctypes.c_double),
+        ("blade_length_m", ctypes.c_double),
     ]
 
 

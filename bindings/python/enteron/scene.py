@@ -509,7 +509,9 @@ class Scene(OwnedHandle):
         position (m, of the tip), orientation (w, x, y, z; identity: vertical, tip lowest),
         mode ("proxy", the default, or "direct"), coupling_stiffness (N/m), coupling_damping
         (N s/m), friction (its contacts' Coulomb coefficient; < 0: the scene's),
-        passivity_limiter (True or False) (docs/haptics.md).
+        passivity_limiter (True or False), jaw_length and jaw_opening (m: a grasper's jaws,
+        whose grasp takes what lies between them), blade_width and blade_length (m: a
+        retractor's blade at the tip) (docs/haptics.md).
         The first tool turns the tools effect on. Allocates: call it between steps."""
         desc = tool_desc(position, orientation, **settings)
         index = ctypes.c_int32(-1)

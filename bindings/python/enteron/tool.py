@@ -41,6 +41,10 @@ SETTINGS = {
     "coupling_stiffness": "coupling_stiffness_N_per_m",
     "coupling_damping": "coupling_damping_N_s_per_m",
     "friction": "friction",
+    "jaw_length": "jaw_length_m",
+    "jaw_opening": "jaw_opening_m",
+    "blade_width": "blade_width_m",
+    "blade_length": "blade_length_m",
 }
 
 #: ENT_TOOL_MODE_*: how a tool meets the bowel (docs/haptics.md).

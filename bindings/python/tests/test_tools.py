@@ -317,6 +317,9 @@ class Haptics(unittest.TestCase):
             with self.assertRaises(enteron.Error) as caught:
                 scene.add_tool(coupling_stiffness=-1.0)
             self.assertIn("coupling_stiffness_N_per_m", caught.exception.message)
+            with self.assertRaises(enteron.Error) as caught:
+                scene.add_tool(jaw_opening=-0.01)
+            self.assertIn("jaw_opening_m", caught.exception.message)
             self.assertEqual(scene.tool_count, 0)
 
 

@@ -141,6 +141,7 @@ TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
         Vec3 target;
         double max_force;
         Vec3 bowel_velocity;
+        Vec3 blade_side = Vec3::Zero();  // a retractor's blade's half width (tool_shaft.h)
     };
     const double reach = kProxyToolRadius + kProxyBowelRadius;
     const Case cases[] = {
@@ -148,11 +149,25 @@ TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
         {"between two spheres", Vec3(0.003, 0.001, reach - 0.003), 50.0, Vec3::Zero()},
         {"sliding with friction", Vec3(0.001, 0.002, reach - 0.002), 50.0, Vec3(0.03, -0.02, 0.0)},
         {"on the side of the tube", Vec3(0.001, 0.012, 0.004), 50.0, Vec3(0.0, 0.01, 0.0)},
+        // A blade 3 cm wide along the tube: its contacts slide across it and along it.
+        {"a blade along the tube", Vec3(0.001, 0.002, reach - 0.002), 50.0, Vec3::Zero(), Vec3(0.015, 0.0, 0.0)},
+        {"a blade sliding with friction", Vec3(0.001, 0.002, reach - 0.002), 50.0, Vec3(0.03, -0.02, 0.0),
+         Vec3(0.015, 0.0, 0.0)},
+        {"a turned blade on the side of the tube", Vec3(0.002, 0.012, 0.004), 50.0, Vec3(0.0, 0.01, 0.0),
+         Vec3(0.012, 0.009, 0.0)},
     };
     const double delta = 1e-7;
     for (const Case& c : cases) {
         const std::pmr::vector<ProxyCandidate> spheres = row(c.bowel_velocity);
-        const ProxyResult at = proxy.solve(problem(c.target, c.max_force), spheres);
+        const auto posed = [&](const Vec3& target) {
+            ProxyProblem p = problem(target, c.max_force);
+            p.blade = {c.blade_side, 0.1};  // over the first 3 cm of the shaft
+            // The blade's edge meets five spheres at once: their dampers fade in over R/10 as
+            // a scene's do (scene.cpp), else five full dampers switch on in one Newton step.
+            if (c.blade_side != Vec3::Zero()) p.contact.damping_depth = 0.1 * kProxyBowelRadius;
+            return p;
+        };
+        const ProxyResult at = proxy.solve(posed(c.target), spheres);
         ASSERT_GT(proxy.contacts().size(), 0u) << c.name;
         ASSERT_FALSE(at.saturated) << c.name;
         Mat3 differences;
@@ -160,8 +175,8 @@ TEST(ToolProxy, TheDeviceStiffnessIsTheDerivativeOfTheCouplingForce) {
             Vec3 plus = c.target, minus = c.target;
             plus[j] += delta;
             minus[j] -= delta;
-            const Vec3 f_plus = -proxy.solve(problem(plus, c.max_force), spheres).coupling_force;
-            const Vec3 f_minus = -proxy.solve(problem(minus, c.max_force), spheres).coupling_force;
+            const Vec3 f_plus = -proxy.solve(posed(plus), spheres).coupling_force;
+            const Vec3 f_minus = -proxy.solve(posed(minus), spheres).coupling_force;
             differences.col(j) = (f_plus - f_minus) / (2 * delta);
         }
         const double error = (differences - at.device_stiffness).norm() / differences.norm();

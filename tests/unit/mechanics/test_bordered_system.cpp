@@ -2,7 +2,8 @@
 // The bordered solve (lib/mechanics/bordered_system.h) against a dense solve of the whole
 // system [A -B; -B^T P] [dv; e] = [r; r_p] (Eigen's LDL^T): bodies held by contact springs
 // K_b at spline points, also pulled by a device spring D_b, so the whole matrix is positive
-// definite; bodies on distant control points and two bodies on the same ones; a body held
+// definite; bodies on distant control points and two bodies on the same ones, solve after
+// solve with one BorderedSystem; a body held
 // in one direction only (a frictionless contact), whose unheld unknowns are set to zero,
 // as the dense solve with them removed gives; a body that touches nothing; a pinned
 // coordinate, which the bodies do not move.
@@ -78,7 +79,8 @@ struct Solutions {
 };
 
 Solutions solve_both(BowelSystem& bowel, const std::vector<Body>& bodies, const Eigen::VectorXd& r,
-                     const std::vector<Mat3>& held_directions = {}, const std::vector<std::size_t>& pinned = {}) {
+                     const std::vector<Mat3>& held_directions = {}, const std::vector<std::size_t>& pinned = {},
+                     BorderedSystem* reused = nullptr) {
     for (const Body& b : bodies) bowel.add_spring(b.weights, b.spring);
     const std::size_t m = 3 * bodies.size();
     // Dense: [A -B; -B^T P], B = w (x) K, P = K + D; pinned rows and columns identity.
@@ -119,7 +121,9 @@ Solutions solve_both(BowelSystem& bowel, const std::vector<Body>& bodies, const 
     Solutions out;
     out.dense = t * (t.transpose() * whole * t).ldlt().solve(t.transpose() * rhs);
 
-    BorderedSystem border(std::pmr::new_delete_resource());
+    BorderedSystem own(std::pmr::new_delete_resource());
+    BorderedSystem& border = reused != nullptr ? *reused : own;
+    border.clear();
     border.reserve(bodies.size(), kBorderedSystemCoordinates);
     for (const Body& body : bodies) {
         const std::size_t index = border.add_body(body.spring + body.device, body.rhs);
@@ -153,6 +157,23 @@ TEST(BorderedSystem, MatchesADenseSolveOfTheWholeSystem) {
     };
     const Solutions s = solve_both(bowel, bodies, random_rhs(random));
     EXPECT_LT((s.bordered - s.dense).cwiseAbs().maxCoeff(), 1e-10 * s.dense.cwiseAbs().maxCoeff());
+}
+
+TEST(BorderedSystem, EverySolveOfTheSameBordersMatchesTheDenseSolve) {
+    // One BorderedSystem solves step after step: nothing of a solve may leak into the next
+    // (two proxies on distant folds each step: their Schur blocks couple them by nothing).
+    std::mt19937_64 random(5);
+    BorderedSystem border(std::pmr::new_delete_resource());
+    for (int solve = 0; solve < 4; ++solve) {
+        BowelSystem bowel(20 + solve);
+        const std::vector<Body> bodies = {
+            {bordered_system_weights(1, 0.4), spd(random, 40.0), spd(random, 5.0), Vec3(0.2, -0.1, 0.4)},
+            {bordered_system_weights(12, 0.6), spd(random, 30.0), spd(random, 2.0), Vec3(-0.3, 0.2, 0.1)},
+        };
+        const Solutions s = solve_both(bowel, bodies, random_rhs(random), {}, {}, &border);
+        EXPECT_LT((s.bordered - s.dense).cwiseAbs().maxCoeff(), 1e-10 * s.dense.cwiseAbs().maxCoeff())
+            << "solve " << solve;
+    }
 }
 
 TEST(BorderedSystem, AnUnknownNoContactHoldsIsSetToZero) {

@@ -92,6 +92,10 @@ TEST(SceneFingerprint, EveryValueThePhysicsDependsOnChangesIt) {
         {"a tool's grasp stiffness", [](SceneConfig& c) { c.tools[0].settings.grasp_stiffness *= 2; }},
         {"a tool's friction", [](SceneConfig& c) { c.tools[0].settings.friction += 0.1; }},
         {"a tool's passivity limiter", [](SceneConfig& c) { c.tools[0].settings.passivity_limiter = !c.tools[0].settings.passivity_limiter; }},
+        {"a tool's jaws", [](SceneConfig& c) { c.tools[0].settings.jaw_length = 0.02; }},
+        {"a tool's jaw opening", [](SceneConfig& c) { c.tools[0].settings.jaw_opening = 0.01; }},
+        {"a tool's blade", [](SceneConfig& c) { c.tools[0].settings.blade_width = 0.05; }},
+        {"a tool's blade length", [](SceneConfig& c) { c.tools[0].settings.blade_length = 0.05; }},
         {"one more tool", [](SceneConfig& c) { c.tools.emplace_back(); }},
     };
     const uint64_t base = fingerprint_of(base_config());
