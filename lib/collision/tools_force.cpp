@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "collision/tool_grasp.h"
 #include "collision/tool_outputs.h"
@@ -82,15 +83,22 @@ bool ToolsForce::take_commands(const mechanics::State& state, double dt) {
 
 void ToolsForce::take_grasp(ToolState& tool, const mechanics::State& state) {
     spheres_.update(state.q.data());
-    const double reach = tool.settings.radius + spheres_.radius() + tool.settings.grasp_margin;
     // Where the tool rests: the proxy's tip (the commanded tip in direct mode).
     const Vec3 tip = tool.settings.mode == ToolMode::proxy ? tool.proxy.position : tool.current.position;
-    double best = reach * reach;
+    // The sphere whose surface is nearest the tip, within grasp_margin of the tool's: each
+    // at its own radius (the profile's at its place), so a thin stretch is reached at its
+    // own surface, not at the largest radius'. (Without a profile every sphere has the same
+    // radius, and the nearest surface is the nearest centre.)
+    double best = std::numeric_limits<double>::infinity(), best_d2 = 0.0;
     bool found = false;
     for (std::size_t i = 0; i < spheres_.size(); ++i) {
         const double d2 = (spheres_[i].center - tip).squaredNorm();
-        if (d2 <= best) {
-            best = d2;
+        const double reach = tool.settings.radius + spheres_[i].radius + tool.settings.grasp_margin;
+        if (d2 > reach * reach) continue;
+        const double gap = std::sqrt(d2) - (tool.settings.radius + spheres_[i].radius);
+        if (gap <= best) {
+            best = gap;
+            best_d2 = d2;
             tool.grasp.point = spheres_[i].weights;
             tool.grasp.sphere = static_cast<uint32_t>(i);
             found = true;
@@ -99,12 +107,16 @@ void ToolsForce::take_grasp(ToolState& tool, const mechanics::State& state) {
     if (found) {
         tool.grasp.holding = true;
         // The spring starts slack wherever the held point is (no jolt), then closes.
-        tool.grasp.rest = std::max(tool.settings.radius + spheres_.radius(), std::sqrt(best));
+        tool.grasp.rest = std::max(grasp_surface(tool), std::sqrt(best_d2));
     }
 }
 
+double ToolsForce::grasp_surface(const ToolState& tool) const {
+    return tool.settings.radius + spheres_[tool.grasp.sphere].radius;
+}
+
 double ToolsForce::grasp_rest_at(const ToolState& tool, double t) const {
-    return grasp_rest(tool.grasp.rest, tool.settings.radius + spheres_.radius(), step_.elapsed(t));
+    return grasp_rest(tool.grasp.rest, grasp_surface(tool), step_.elapsed(t));
 }
 
 // The attempts.
@@ -209,7 +221,9 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
             double s, dist2;
             Vec3 d;
             if (!shaft.touches(spheres_[i].center, &s, &d, &dist2)) continue;
-            const double depth = shaft.reach - std::sqrt(dist2);
+            // Each sphere at its own radius, as the contacts take it (the shaft reaches as
+            // far as the largest).
+            const double depth = shaft.reach - std::sqrt(dist2) - (r - spheres_[i].radius);
             if (!(depth > 0.0)) continue;
             stored += 0.5 * tool.contact.stiffness * depth * depth;
             total_magnitude += tool.contact.stiffness * depth;
