@@ -28,6 +28,11 @@
 // skin updated every 16 ms of simulation: the largest motion of a vertex beyond the motion
 // of its axis point between two updates (excess_pct, % of R), over 40 updates.
 //
+// colon/{constant,tapered}/<method>: a 1.5 m colon settled in a serpentine on a floor, of
+// 3.5 cm throughout or tapering to 1.3 cm (a radius profile), each method at the default
+// resolution (its knobs scaled by the largest radius): the update rate, and the radius,
+// facet and volume errors against the profile (docs/skinning.md, "A radius that changes").
+//
 // marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
 // (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
 // grid: the point-skeleton field of the settled demo pile (the library's internals, not the
@@ -223,6 +228,83 @@ void popping_benchmark(benchmark::State& state, const enteron::bench::SkinPile* 
         ent_skin_destroy(skin);
         ent_scene_destroy(scene);
     }
+}
+
+// ---- a tube whose radius changes along it -----------------------------------------------
+
+// A 1.5 m colon (N = 61) laid as a serpentine of 0.3 m legs 8 cm apart on a floor, settled
+// 1 s: tapered from 3.5 to 1.3 cm (the caecum to the sigmoid), or of 3.5 cm throughout.
+ent_scene* settled_colon(bool tapered) {
+    static ent_scene* scenes[2] = {};
+    static bool tried[2] = {};
+    if (tried[tapered]) return scenes[tapered];
+    tried[tapered] = true;
+    static const double profile[4] = {0.0, 0.035, 1.5, 0.013};
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    desc.control_points = 61;
+    desc.length_m = 1.5;
+    if (tapered) {
+        desc.radius_profile_m = profile;
+        desc.radius_profile_count = 2;
+    } else {
+        desc.radius_m = 0.035;
+    }
+    desc.shape = ENT_SHAPE_SERPENTINE;
+    desc.shape_leg_length_m = 0.3;
+    desc.shape_leg_spacing_m = 0.08;
+    desc.shape_center_m[2] = 0.036;
+    desc.integrator = ENT_INTEGRATOR_IMPLICIT_EULER;
+    ent_scene* scene = nullptr;
+    if (ent_scene_create(&desc, &scene) != ENT_OK) return nullptr;
+    ent_obstacle_desc floor;
+    ent_obstacle_desc_default(&floor);
+    floor.kind = ENT_OBSTACLE_PLANE;
+    int32_t index = -1;
+    bool ok = ent_scene_add_obstacle(scene, &floor, &index) == ENT_OK;
+    for (int k = 0; ok && k < 1000; ++k) ok = ent_scene_step(scene, 1e-3) == ENT_OK;
+    if (!ok) {
+        ent_scene_destroy(scene);
+        return nullptr;
+    }
+    scenes[tapered] = scene;
+    return scene;
+}
+
+// The default skin of each method on the settled colon: ms per update, updates per second,
+// and the radius error against the profile (radius_rms_pct, radius_max_pct, free_rms_pct),
+// the facet error and the volume error, all from ent_skin_metrics.
+void colon_benchmark(benchmark::State& state, bool tapered, int32_t method) {
+    ent_scene* scene = settled_colon(tapered);
+    ent_skin* skin = scene != nullptr ? make_skin(scene, method, kDefault) : nullptr;
+    if (skin == nullptr) {
+        state.SkipWithError(ent_last_error());
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    for (auto _ : state) {
+        if (ent_skin_update(skin) != ENT_OK) {
+            state.SkipWithError(ent_last_error());
+            break;
+        }
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    struct ent_skin_metrics m;
+    std::memset(&m, 0, sizeof m);
+    m.struct_size = sizeof m;
+    if (ent_skin_metrics(skin, &m) == ENT_OK) {
+        state.counters["ms_per_update"] = 1e3 * seconds / double(state.iterations());
+        state.counters["updates_per_s"] = double(state.iterations()) / seconds;
+        state.counters["triangles"] = m.triangle_count;
+        state.counters["radius_rms_pct"] = 100.0 * m.radius_error_rms;
+        state.counters["radius_max_pct"] = 100.0 * m.radius_error_max;
+        state.counters["free_rms_pct"] = 100.0 * m.free_radius_error_rms;
+        state.counters["facet_rms_pct"] = 100.0 * m.facet_error_rms;
+        state.counters["facet_max_pct"] = 100.0 * m.facet_error_max;
+        state.counters["volume_pct"] = 100.0 * m.volume_error;
+        state.counters["watertight"] = m.watertight;
+    }
+    ent_skin_destroy(skin);
 }
 
 // ---- meshes for people ----------------------------------------------------------------
@@ -498,6 +580,13 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMillisecond)
                 ->Iterations(1);
     }
+    // A radius profile: the tapered colon beside the same colon of its largest radius.
+    for (const Method& method : kMethods)
+        for (const bool tapered : {false, true})
+            benchmark::RegisterBenchmark(
+                (std::string("colon/") + (tapered ? "tapered/" : "constant/") + method.name).c_str(), colon_benchmark,
+                tapered, method.id)
+                ->Unit(benchmark::kMillisecond);
     // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
     for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
         char name[64];
@@ -546,5 +635,6 @@ int main(int argc, char** argv) {
     benchmark::Shutdown();
     band_field_storage.reset();
     for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) ent_scene_destroy(settled(pile));
+    for (const bool tapered : {false, true}) ent_scene_destroy(settled_colon(tapered));
     return 0;
 }
