@@ -31,7 +31,8 @@
 // colon/{constant,tapered}/<method>: a 1.5 m colon settled in a serpentine on a floor, of
 // 3.5 cm throughout or tapering to 1.3 cm (a radius profile), each method at the default
 // resolution (its knobs scaled by the largest radius): the update rate, and the radius,
-// facet and volume errors against the profile (docs/skinning.md, "A radius that changes").
+// facet and volume errors against the profile (docs/skinning.md, "A radius that changes");
+// colon/tapered/point_skeleton_thin_voxel: its voxel a third of the thin end's radius.
 //
 // marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
 // (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
@@ -274,9 +275,9 @@ ent_scene* settled_colon(bool tapered) {
 // The default skin of each method on the settled colon: ms per update, updates per second,
 // and the radius error against the profile (radius_rms_pct, radius_max_pct, free_rms_pct),
 // the facet error and the volume error, all from ent_skin_metrics.
-void colon_benchmark(benchmark::State& state, bool tapered, int32_t method) {
+void colon_benchmark(benchmark::State& state, bool tapered, int32_t method, Resolution resolution) {
     ent_scene* scene = settled_colon(tapered);
-    ent_skin* skin = scene != nullptr ? make_skin(scene, method, kDefault) : nullptr;
+    ent_skin* skin = scene != nullptr ? make_skin(scene, method, resolution) : nullptr;
     if (skin == nullptr) {
         state.SkipWithError(ent_last_error());
         return;
@@ -585,8 +586,14 @@ int main(int argc, char** argv) {
         for (const bool tapered : {false, true})
             benchmark::RegisterBenchmark(
                 (std::string("colon/") + (tapered ? "tapered/" : "constant/") + method.name).c_str(), colon_benchmark,
-                tapered, method.id)
+                tapered, method.id, kDefault)
                 ->Unit(benchmark::kMillisecond);
+    // The point skeleton's voxel a third of the thin end's radius instead of the largest's.
+    Resolution thin_voxel = kDefault;
+    thin_voxel.voxel_size = 0.013 / 0.035 / 3.0;
+    benchmark::RegisterBenchmark("colon/tapered/point_skeleton_thin_voxel", colon_benchmark, true,
+                                 ENT_SKIN_POINT_SKELETON, thin_voxel)
+        ->Unit(benchmark::kMillisecond);
     // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
     for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
         char name[64];
