@@ -20,8 +20,8 @@
 // Contacts (docs/skinning.md): every row has the contact measures of ent_skin_metrics as
 // counters (overlap_pct: the deepest vertex inside another fold's skin, % of R;
 // overlap_area_mm2; tube_overlap_pct: inside another fold's ideal tube; gap_pct: the contact
-// surfaces' largest gap; shape_volume_pct; free_rms_pct: the radius error away from
-// contacts and bends tighter than R), and <pile>/<method>/default_no_contacts the same skin
+// surfaces' largest gap; shape_volume_pct; volume_pct, the volume error; free_rms_pct: the
+// radius error away from contacts and bends tighter than R), and <pile>/<method>/default_no_contacts the same skin
 // with contact_surfaces 0, for the cost of the contacts. <pile>/convolution/skeleton_*: the
 // skeleton following the curvature (skeleton_spacing_radii h, skeleton_chord_error_radii e)
 // against even ones. popping/<pile>/<method>: a tool sweeps through the settled pile, the
@@ -134,9 +134,8 @@ ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resoluti
     return skin;
 }
 
-void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method,
-                    Resolution resolution) {
-    ent_scene* scene = settled(*pile);
+// Times ent_skin_update of a skin of `scene` and reports its counters.
+void skin_updates_benchmark(benchmark::State& state, ent_scene* scene, int32_t method, const Resolution& resolution) {
     ent_skin* skin = scene != nullptr ? make_skin(scene, method, resolution) : nullptr;
     if (skin == nullptr) {
         state.SkipWithError(ent_last_error());
@@ -176,8 +175,14 @@ void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pil
         state.counters["gap_pct"] = 100.0 * m.contact_gap_max;
         state.counters["shape_volume_pct"] = 100.0 * m.shape_volume_error;
         state.counters["free_rms_pct"] = 100.0 * m.free_radius_error_rms;
+        state.counters["volume_pct"] = 100.0 * m.volume_error;
     }
     ent_skin_destroy(skin);
+}
+
+void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method,
+                    Resolution resolution) {
+    skin_updates_benchmark(state, settled(*pile), method, resolution);
 }
 
 // A tool sweeps through the settled pile while the skin follows at 60 Hz: the largest
@@ -272,40 +277,10 @@ ent_scene* settled_colon(bool tapered) {
     return scene;
 }
 
-// The default skin of each method on the settled colon: ms per update, updates per second,
-// and the radius error against the profile (radius_rms_pct, radius_max_pct, free_rms_pct),
-// the facet error and the volume error, all from ent_skin_metrics.
+// A skin of each method on the settled colon (skin_updates_benchmark's counters: the radius
+// errors are against the profile).
 void colon_benchmark(benchmark::State& state, bool tapered, int32_t method, Resolution resolution) {
-    ent_scene* scene = settled_colon(tapered);
-    ent_skin* skin = scene != nullptr ? make_skin(scene, method, resolution) : nullptr;
-    if (skin == nullptr) {
-        state.SkipWithError(ent_last_error());
-        return;
-    }
-    const auto start = std::chrono::steady_clock::now();
-    for (auto _ : state) {
-        if (ent_skin_update(skin) != ENT_OK) {
-            state.SkipWithError(ent_last_error());
-            break;
-        }
-    }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    struct ent_skin_metrics m;
-    std::memset(&m, 0, sizeof m);
-    m.struct_size = sizeof m;
-    if (ent_skin_metrics(skin, &m) == ENT_OK) {
-        state.counters["ms_per_update"] = 1e3 * seconds / double(state.iterations());
-        state.counters["updates_per_s"] = double(state.iterations()) / seconds;
-        state.counters["triangles"] = m.triangle_count;
-        state.counters["radius_rms_pct"] = 100.0 * m.radius_error_rms;
-        state.counters["radius_max_pct"] = 100.0 * m.radius_error_max;
-        state.counters["free_rms_pct"] = 100.0 * m.free_radius_error_rms;
-        state.counters["facet_rms_pct"] = 100.0 * m.facet_error_rms;
-        state.counters["facet_max_pct"] = 100.0 * m.facet_error_max;
-        state.counters["volume_pct"] = 100.0 * m.volume_error;
-        state.counters["watertight"] = m.watertight;
-    }
-    ent_skin_destroy(skin);
+    skin_updates_benchmark(state, settled_colon(tapered), method, resolution);
 }
 
 // ---- meshes for people ----------------------------------------------------------------
