@@ -110,7 +110,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
-      start_clearance_(scene::start_clearance(config)),
+      start_clearance_(scene::start_clearance(config, memory)),
       published_(published) {
     const IntestineConfig& intestine = config.intestine;
     const std::size_t n = model_.control_points;

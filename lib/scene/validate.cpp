@@ -551,11 +551,12 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     return config;
 }
 
-StartClearance start_clearance(const SceneConfig& config) {
+StartClearance start_clearance(const SceneConfig& config, std::pmr::memory_resource* memory) {
     const IntestineConfig& tube = config.intestine;
     const double radius = tube.radius, spacing = resting_sphere_spacing(config.collision, radius);
     const double k = config.collision.contact.stiffness;
-    StartClearance clearance{radius, std::sqrt(k / (tube.linear_density * spacing)), config.solver.max_speed, {}, {}};
+    StartClearance clearance{radius, std::sqrt(k / (tube.linear_density * spacing)), config.solver.max_speed,
+                             std::pmr::vector<double>(memory), std::pmr::vector<double>(memory)};
     if (tube.radius_profile.empty() && tube.linear_density_profile.empty()) return clearance;
     // Each control point at its rest arc length s = i l0: its radius, and a sphere there of
     // the spacing x R(s) / R_max (collision_spheres.h) and the density at s.
