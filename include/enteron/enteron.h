@@ -966,9 +966,9 @@ ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double 
  * rest length radius_m + R (the held point stays on the tool's surface, where the contact
  * does not push, and the grasp starts without a jolt), R the sphere's radius (with a radius
  * profile, the profile's at its place: a thin stretch is held at its own surface); the
- * material point of the axis held stays the same as the bowel moves. With nothing within reach nothing is held (still ENT_OK;
- * ent_tool_state reports it once that step is published). Grasping again picks the
- * nearest point anew. When holding would need more than max_force_N the grasp slips: it
+ * material point of the axis held stays the same as the bowel moves. With nothing within
+ * reach nothing is held (still ENT_OK; ent_tool_state reports it once that step is
+ * published). Grasping again picks the nearest point anew. When holding would need more than max_force_N the grasp slips: it
  * is released at the end of that step, with no force jump beyond the bound.
  * Any thread, at any time: wait-free, like ent_tool_set_pose. Of a grasp and a release
  * posted before one step, the last one posted wins.

@@ -344,7 +344,8 @@ double PointSkeletonSkin::stretch_at(const Vec3& p, std::size_t k) const {
     // that side: r is linear between the two skeleton points.
     const double along = (p - skeleton_.position(k)).dot(skeleton_.tangent(k));
     const std::size_t neighbour = along >= 0.0 ? std::min(k + 1, skeleton_.size() - 1) : (k > 0 ? k - 1 : 0);
-    const double w = neighbour == k ? 0.0 : std::min(1.0, std::fabs(along) * std::sqrt(inverse_chord2_[std::min(k, neighbour)]));
+    const double inverse_chord2 = neighbour == k ? 0.0 : inverse_chord2_[std::min(k, neighbour)];
+    const double w = std::min(1.0, std::fabs(along) * std::sqrt(inverse_chord2));
     return settings_.radius / ((1.0 - w) * radii_[k] + w * radii_[neighbour]);
 }
 

@@ -73,7 +73,8 @@ TEST(TaperedTube, EverySkinDrawsTheProfilesRadiusAtEachPlace) {
         }
         EXPECT_NEAR(lowest, 0.0, 0.001) << "method " << method;
         EXPECT_NEAR(highest_over_diameter, 1.0, 0.02) << "method " << method;
-        std::printf("[ tapered ] method %d: radius error RMS %.3f %% max %.3f %%, free RMS %.3f %%, top %.4f of 2 r(x)\n",
+        std::printf("[ tapered ] method %d: radius error RMS %.3f %% max %.3f %%, free RMS %.3f %%, "
+                    "top %.4f of 2 r(x)\n",
                     method, 100 * m.radius_error_rms, 100 * m.radius_error_max, 100 * m.free_radius_error_rms,
                     highest_over_diameter);
     }

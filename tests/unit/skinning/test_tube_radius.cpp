@@ -31,7 +31,9 @@ const char* taper_method_name(SkinMethod m) {
     return m == SkinMethod::tube ? "tube" : m == SkinMethod::point_skeleton ? "point_skeleton" : "convolution";
 }
 
-double taper_radius(double s) { return kTaperWide + (kTaperThin - kTaperWide) * std::clamp(s / kTaperLength, 0.0, 1.0); }
+double taper_radius(double s) {
+    return kTaperWide + (kTaperThin - kTaperWide) * std::clamp(s / kTaperLength, 0.0, 1.0);
+}
 
 TubeRadius taper_along(double wide, double thin) {
     TubeRadius along;
