@@ -20,13 +20,19 @@
 // Contacts (docs/skinning.md): every row has the contact measures of ent_skin_metrics as
 // counters (overlap_pct: the deepest vertex inside another fold's skin, % of R;
 // overlap_area_mm2; tube_overlap_pct: inside another fold's ideal tube; gap_pct: the contact
-// surfaces' largest gap; shape_volume_pct; free_rms_pct: the radius error away from
-// contacts and bends tighter than R), and <pile>/<method>/default_no_contacts the same skin
+// surfaces' largest gap; shape_volume_pct; volume_pct, the volume error; free_rms_pct: the
+// radius error away from contacts and bends tighter than R), and <pile>/<method>/default_no_contacts the same skin
 // with contact_surfaces 0, for the cost of the contacts. <pile>/convolution/skeleton_*: the
 // skeleton following the curvature (skeleton_spacing_radii h, skeleton_chord_error_radii e)
 // against even ones. popping/<pile>/<method>: a tool sweeps through the settled pile, the
 // skin updated every 16 ms of simulation: the largest motion of a vertex beyond the motion
 // of its axis point between two updates (excess_pct, % of R), over 40 updates.
+//
+// colon/{constant,tapered}/<method>: a 1.5 m colon settled in a serpentine on a floor, of
+// 3.5 cm throughout or tapering to 1.3 cm (a radius profile), each method at the default
+// resolution (its knobs scaled by the largest radius): the update rate, and the radius,
+// facet and volume errors against the profile (docs/skinning.md, "A radius that changes");
+// colon/tapered/point_skeleton_thin_voxel: its voxel a third of the thin end's radius.
 //
 // marching_cubes/*: our marching cubes against VTK's vtkFlyingEdges3D and vtkMarchingCubes
 // (when Debian's libvtk9-dev is found, ENTERON_HAVE_VTK), on the same scalar field and
@@ -128,9 +134,8 @@ ent_skin* make_skin(ent_scene* scene, int32_t method, const Resolution& resoluti
     return skin;
 }
 
-void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method,
-                    Resolution resolution) {
-    ent_scene* scene = settled(*pile);
+// Times ent_skin_update of a skin of `scene` and reports its counters.
+void skin_updates_benchmark(benchmark::State& state, ent_scene* scene, int32_t method, const Resolution& resolution) {
     ent_skin* skin = scene != nullptr ? make_skin(scene, method, resolution) : nullptr;
     if (skin == nullptr) {
         state.SkipWithError(ent_last_error());
@@ -170,8 +175,14 @@ void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pil
         state.counters["gap_pct"] = 100.0 * m.contact_gap_max;
         state.counters["shape_volume_pct"] = 100.0 * m.shape_volume_error;
         state.counters["free_rms_pct"] = 100.0 * m.free_radius_error_rms;
+        state.counters["volume_pct"] = 100.0 * m.volume_error;
     }
     ent_skin_destroy(skin);
+}
+
+void skin_benchmark(benchmark::State& state, const enteron::bench::SkinPile* pile, int32_t method,
+                    Resolution resolution) {
+    skin_updates_benchmark(state, settled(*pile), method, resolution);
 }
 
 // A tool sweeps through the settled pile while the skin follows at 60 Hz: the largest
@@ -223,6 +234,53 @@ void popping_benchmark(benchmark::State& state, const enteron::bench::SkinPile* 
         ent_skin_destroy(skin);
         ent_scene_destroy(scene);
     }
+}
+
+// ---- a tube whose radius changes along it -----------------------------------------------
+
+// A 1.5 m colon (N = 61) laid as a serpentine of 0.3 m legs 8 cm apart on a floor, settled
+// 1 s: tapered from 3.5 to 1.3 cm (the caecum to the sigmoid), or of 3.5 cm throughout.
+ent_scene* settled_colon(bool tapered) {
+    static ent_scene* scenes[2] = {};
+    static bool tried[2] = {};
+    if (tried[tapered]) return scenes[tapered];
+    tried[tapered] = true;
+    static const double profile[4] = {0.0, 0.035, 1.5, 0.013};
+    ent_scene_desc desc;
+    ent_scene_desc_default(&desc);
+    desc.control_points = 61;
+    desc.length_m = 1.5;
+    if (tapered) {
+        desc.radius_profile_m = profile;
+        desc.radius_profile_count = 2;
+    } else {
+        desc.radius_m = 0.035;
+    }
+    desc.shape = ENT_SHAPE_SERPENTINE;
+    desc.shape_leg_length_m = 0.3;
+    desc.shape_leg_spacing_m = 0.08;
+    desc.shape_center_m[2] = 0.036;
+    desc.integrator = ENT_INTEGRATOR_IMPLICIT_EULER;
+    ent_scene* scene = nullptr;
+    if (ent_scene_create(&desc, &scene) != ENT_OK) return nullptr;
+    ent_obstacle_desc floor;
+    ent_obstacle_desc_default(&floor);
+    floor.kind = ENT_OBSTACLE_PLANE;
+    int32_t index = -1;
+    bool ok = ent_scene_add_obstacle(scene, &floor, &index) == ENT_OK;
+    for (int k = 0; ok && k < 1000; ++k) ok = ent_scene_step(scene, 1e-3) == ENT_OK;
+    if (!ok) {
+        ent_scene_destroy(scene);
+        return nullptr;
+    }
+    scenes[tapered] = scene;
+    return scene;
+}
+
+// A skin of each method on the settled colon (skin_updates_benchmark's counters: the radius
+// errors are against the profile).
+void colon_benchmark(benchmark::State& state, bool tapered, int32_t method, Resolution resolution) {
+    skin_updates_benchmark(state, settled_colon(tapered), method, resolution);
 }
 
 // ---- meshes for people ----------------------------------------------------------------
@@ -498,6 +556,19 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMillisecond)
                 ->Iterations(1);
     }
+    // A radius profile: the tapered colon beside the same colon of its largest radius.
+    for (const Method& method : kMethods)
+        for (const bool tapered : {false, true})
+            benchmark::RegisterBenchmark(
+                (std::string("colon/") + (tapered ? "tapered/" : "constant/") + method.name).c_str(), colon_benchmark,
+                tapered, method.id, kDefault)
+                ->Unit(benchmark::kMillisecond);
+    // The point skeleton's voxel a third of the thin end's radius instead of the largest's.
+    Resolution thin_voxel = kDefault;
+    thin_voxel.voxel_size = 0.013 / 0.035 / 3.0;
+    benchmark::RegisterBenchmark("colon/tapered/point_skeleton_thin_voxel", colon_benchmark, true,
+                                 ENT_SKIN_POINT_SKELETON, thin_voxel)
+        ->Unit(benchmark::kMillisecond);
     // Level of detail: even rings against adaptive ones (at most R apart), 16 segments.
     for (double spacing : {1.0, 0.75, 0.5, 0.35, 0.25}) {
         char name[64];
@@ -546,5 +617,6 @@ int main(int argc, char** argv) {
     benchmark::Shutdown();
     band_field_storage.reset();
     for (const enteron::bench::SkinPile& pile : enteron::bench::kSkinPiles) ent_scene_destroy(settled(pile));
+    for (const bool tapered : {false, true}) ent_scene_destroy(settled_colon(tapered));
     return 0;
 }

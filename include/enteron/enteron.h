@@ -887,7 +887,7 @@ typedef struct ent_tool_desc {
     double radius_m;                 /**< shaft radius, m, > 0 and <= 1 (default 0.005). */
     double length_m;                 /**< shaft length from the tip along local +z, m, >= 0 and <= 10 (default 0.3). */
     double max_force_N;              /**< bound of the force the tool exerts and reports, N, > 0 (default 5). */
-    double grasp_margin_m;           /**< grasp reach beyond touching: reach = radius_m + R + this, m, >= 0 and <= 1 (default 0.005). */
+    double grasp_margin_m;           /**< grasp reach beyond touching: reach = radius_m + R + this (R the radius there), m, >= 0 and <= 1 (default 0.005). */
     double grasp_stiffness_N_per_m;  /**< stiffness of the grasp spring from the held axis point to the tip (rest length radius_m + R), > 0 (default 200). */
     double grasp_damping_N_s_per_m;  /**< damping of the grasp spring, >= 0 (default 2). */
     double position_m[3];            /**< initial tip position, m (default 0, 0, 0). */
@@ -1000,21 +1000,22 @@ ENT_API ent_status ent_tool_set_pose(ent_scene* scene, int32_t tool, const doubl
 ENT_API ent_status ent_tool_wrench(const ent_scene* scene, int32_t tool, double force_N[3], double torque_Nm[3]);
 
 /**
- * Grasps the bowel at the start of the next ent_scene_step: the collision sphere centre
- * nearest the tip (where the tool rests before that step), within radius_m + R +
- * grasp_margin_m of it, is held to the tip by a tension-only spring-damper of rest length
- * radius_m + R (the held point stays on the tool's surface, where the contact does not
- * push, and the grasp starts without a jolt); the material point of the axis held stays
- * the same as the bowel moves. With nothing within reach nothing is held (still ENT_OK;
- * ent_tool_state reports it once that step is published). Grasping again picks the
- * nearest point anew. A grasper with jaws (jaw_length_m, jaw_opening_m) takes what lies
- * between them instead: its jaws are the last jaw_length_m of the shaft, opening
- * jaw_opening_m wide across the tool's local x axis, and of the centres within the same
- * reach of the rectangle they sweep the one least off that strip seen along the tool's
- * axis is held (ties: the nearest to the tip), so a loop in the jaws' plane is taken
- * before a nearer one beside them: place the jaws over a loop and turn them onto it to
- * aim (docs/haptics.md). ent_tool_read_contacts' grasp_u says where
- * it took hold. When holding would need more than max_force_N the grasp slips: it
+ * Grasps the bowel at the start of the next ent_scene_step: the collision sphere whose
+ * surface is nearest the tip (where the tool rests before that step), its centre within
+ * radius_m + R + grasp_margin_m of it, is held to the tip by a tension-only spring-damper of
+ * rest length radius_m + R (the held point stays on the tool's surface, where the contact
+ * does not push, and the grasp starts without a jolt), R the sphere's radius (with a radius
+ * profile, the profile's at its place: a thin stretch is held at its own surface); the
+ * material point of the axis held stays the same as the bowel moves. With nothing within
+ * reach nothing is held (still ENT_OK; ent_tool_state reports it once that step is
+ * published). Grasping again picks the nearest point anew. A grasper with jaws
+ * (jaw_length_m, jaw_opening_m) takes what lies between them instead: its jaws are the
+ * last jaw_length_m of the shaft, opening jaw_opening_m wide across the tool's local x
+ * axis, and of the centres within the same reach of the rectangle they sweep the one least
+ * off that strip seen along the tool's axis is held (ties: the surface nearest the tip), so
+ * a loop in the jaws' plane is taken before a nearer one beside them: place the jaws over a
+ * loop and turn them onto it to aim (docs/haptics.md). ent_tool_read_contacts' grasp_u
+ * says where it took hold. When holding would need more than max_force_N the grasp slips: it
  * is released at the end of that step, with no force jump beyond the bound.
  * Any thread, at any time: wait-free, like ent_tool_set_pose. Of a grasp and a release
  * posted before one step, the last one posted wins.
@@ -1422,7 +1423,9 @@ typedef struct ent_skin ent_skin;
 /**
  * How to skin. Fill it with ent_skin_desc_default, change what you need, then call
  * ent_skin_create; it is not retained. Lengths are in units of the intestine radius R, so
- * the same settings suit any bowel. Each method reads only the knobs it names.
+ * the same settings suit any bowel. Each method reads only the knobs it names. With a radius
+ * profile (ent_scene_desc.radius_profile_m) R is its largest value: the knobs scale with it,
+ * and every skin draws the profile's radius at each place along the axis (docs/skinning.md).
  */
 typedef struct ent_skin_desc {
     uint32_t struct_size;          /**< sizeof(ent_skin_desc); set by ent_skin_desc_default. */
@@ -1579,7 +1582,10 @@ struct ent_skin_metrics {
     /** Triangles facing the axis as seen from each of their three corners' axis points: the tube's
      *  fold-over at bends tighter than R. */
     uint32_t inverted_triangles;
-    double radius_error_rms;       /**< RMS over vertices of | |v - A(u)| - R | / R, A(u) the vertex's own axis point. */
+    /** RMS over vertices of | |v - A(u)| - R | / R, A(u) the vertex's own axis point; with a radius profile R
+     *  is the profile's at A(u)'s place (as in every radius, facet and volume error here; the measures
+     *  "in R" take its largest value). */
+    double radius_error_rms;
     double radius_error_max;       /**< largest of those. */
     double normal_deviation_rms_rad; /**< RMS angle between the vertex normal and the ideal tube's normal (v - A(u)) / |v - A(u)|. */
     double normal_deviation_max_rad; /**< largest of those. */

@@ -117,6 +117,16 @@ void check_skin_metrics_size(uint32_t struct_size) {
                                      "ent_skin_metrics");
 }
 
+// The radius along the scene's tube, for its skins (tube_radius.h): the profile (a copy:
+// the skin may outlive the scene) at rest arc length s = p l0, or constant.
+enteron::skinning::TubeRadius radius_along(const enteron::scene::Scene& scene) {
+    enteron::skinning::TubeRadius along;
+    if (scene.radius_profile().empty()) return along;
+    along.profile = std::make_shared<const enteron::spline::LengthProfile>(scene.radius_profile());
+    along.segment_rest_length = scene.rest_length() / static_cast<double>(scene.control_points() - 1);
+    return along;
+}
+
 ent_skin_desc default_skin_desc() {
     ent_skin_desc defaults{};
     defaults.struct_size = sizeof defaults;
@@ -194,7 +204,9 @@ ENT_API ent_status ent_skin_create(ent_scene* scene, const ent_skin_desc* desc, 
         require(desc, "desc");
         require(out_skin, "out_skin");
         const enteron::scene::Scene& s = *scene_handle.scene;
-        const enteron::skinning::SkinSettings settings = settings_from_desc(*desc, s.radius());
+        enteron::skinning::SkinSettings settings = settings_from_desc(*desc, s.radius());
+        // The knobs scale with the largest radius; the skin draws the profile's at each place.
+        settings.radius_along = radius_along(s);
         auto handle = std::make_unique<SkinHandle>();
         handle->skin = enteron::skinning::make_skin(settings);
         handle->points.resize(3 * s.control_points());
@@ -269,7 +281,8 @@ ENT_API ent_status ent_skin_metrics(const ent_skin* skin, struct ent_skin_metric
             }
             const enteron::skinning::SkinMetrics m =
                 enteron::skinning::measure_skin(sk.mesh(), sk.axis_points(), sk.axis_count(), sk.arc_length(),
-                                                sk.settings().radius, sk.has_previous() ? &previous : nullptr);
+                                                sk.settings().radius, sk.settings().radius_along,
+                                                sk.has_previous() ? &previous : nullptr);
             full.vertex_count = static_cast<uint32_t>(m.vertices);
             full.triangle_count = static_cast<uint32_t>(m.triangles);
             full.watertight = m.watertight ? 1 : 0;

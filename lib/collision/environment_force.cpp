@@ -28,14 +28,16 @@ namespace {
 std::size_t contacts_per_sphere(ObstacleKind kind) { return kind == ObstacleKind::box_inside ? 6 : 1; }
 }  // namespace
 
-void EnvironmentForce::prepare(Obstacle& obstacle, double radius, std::pmr::memory_resource* memory) {
+void EnvironmentForce::prepare(Obstacle& obstacle, double radius, std::pmr::memory_resource* memory,
+                               double smallest_radius) {
     if (obstacle.kind != ObstacleKind::mesh || obstacle.field) return;
     DistanceFieldSettings settings;
     settings.voxel_size = obstacle.voxel_size > 0.0 ? obstacle.voxel_size : kDefaultVoxelRadii * radius;
     // Exact where contacts are felt: a sphere touches within R, and interpolation reaches
     // two voxels further.
     settings.band = radius + 2.0 * settings.voxel_size;
-    settings.refine = settings.voxel_size > kDefaultVoxelRadii * radius * (1.0 + 1e-9);
+    const double finest = smallest_radius > 0.0 ? smallest_radius : radius;
+    settings.refine = settings.voxel_size > kDefaultVoxelRadii * finest * (1.0 + 1e-9);
     obstacle.field = std::allocate_shared<MeshDistanceField>(std::pmr::polymorphic_allocator<MeshDistanceField>(memory),
                                                              *obstacle.mesh, settings, memory);
     obstacle.mesh.reset();  // the field keeps its own copy

@@ -7,13 +7,15 @@
 // radius, the sphere's and the grasp margin) of that rectangle; candidates rank by how far
 // they lie off the strip seen along the aim (their distance from the plane of the jaws,
 // and beyond the opening across it; not how far ahead of the tip), ties going to the
-// nearer to the tip. So a loop in the jaws' plane is taken before a nearer one beside
+// surface nearer to the tip. So a loop in the jaws' plane is taken before a nearer one beside
 // them, and the loop under the jaws before one higher up a slope beside them: a surgeon
 // aims by placing the jaws over a loop and turning them onto it. Without jaws (no length,
-// no opening) the candidate nearest the tip is taken, the first tools' rule.
+// no opening) the candidate whose surface is nearest the tip is taken (with one radius,
+// the nearest centre: the first tools' rule).
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -47,19 +49,24 @@ struct Jaws {
     }
 };
 
-// Picks among candidates offered one at a time: offer() each sphere's index and centre;
-// the pick is the one between the jaws along the aim, as above.
+// Picks among candidates offered one at a time: offer() each sphere's index, centre and
+// radius; the pick is the one between the jaws along the aim, as above. Without jaws the
+// one whose surface is nearest the tip (with equal radii, the nearest centre).
 class GraspAim {
 public:
-    GraspAim(const Jaws& jaws, double reach) : jaws_(jaws), reach2_(reach * reach) {}
+    GraspAim(const Jaws& jaws, double tool_radius, double margin)
+        : jaws_(jaws), tool_radius_(tool_radius), margin_(margin) {}
 
-    void offer(std::size_t index, const Vec3& center) {
+    void offer(std::size_t index, const Vec3& center, double radius) {
+        const double reach = tool_radius_ + radius + margin_;
         const double jaws2 = jaws_.distance2(center);
-        if (!(jaws2 <= reach2_)) return;  // beyond the reach (or NaN: never picked)
-        const double rank = jaws_.has_jaws() ? jaws_.off_aim2(center) : jaws2;
+        if (!(jaws2 <= reach * reach)) return;  // beyond the reach (or NaN: never picked)
         const double tip2 = (center - jaws_.tip).squaredNorm();
-        if (rank > best_rank_ || (rank == best_rank_ && tip2 > best_tip2_)) return;
+        const double gap = std::sqrt(tip2) - (tool_radius_ + radius);  // its surface from the tool's tip
+        const double rank = jaws_.has_jaws() ? jaws_.off_aim2(center) : gap;
+        if (rank > best_rank_ || (rank == best_rank_ && gap > best_gap_)) return;
         best_rank_ = rank;
+        best_gap_ = gap;
         best_tip2_ = tip2;
         picked_ = index;
         found_ = true;
@@ -72,9 +79,10 @@ public:
 
 private:
     Jaws jaws_;
-    double reach2_;
+    double tool_radius_, margin_;
     double best_rank_ = std::numeric_limits<double>::infinity();
-    double best_tip2_ = std::numeric_limits<double>::infinity();
+    double best_gap_ = std::numeric_limits<double>::infinity();
+    double best_tip2_ = 0.0;
     std::size_t picked_ = 0;
     bool found_ = false;
 };

@@ -83,7 +83,6 @@ bool ToolsForce::take_commands(const mechanics::State& state, double dt) {
 
 void ToolsForce::take_grasp(ToolState& tool, const mechanics::State& state) {
     spheres_.update(state.q.data());
-    const double reach = tool.settings.radius + spheres_.radius() + tool.settings.grasp_margin;
     // Where the tool rests: the proxy's tip (the commanded tip in direct mode), its jaws
     // turned as commanded.
     Jaws jaws;
@@ -92,19 +91,25 @@ void ToolsForce::take_grasp(ToolState& tool, const mechanics::State& state) {
     jaws.across = quaternion_x_axis(tool.current.orientation);
     jaws.length = std::min(tool.settings.jaw_length, tool.settings.length);
     jaws.half_opening = 0.5 * tool.settings.jaw_opening;
-    GraspAim aim(jaws, reach);
-    for (std::size_t i = 0; i < spheres_.size(); ++i) aim.offer(i, spheres_[i].center);
+    // Each sphere at its own radius (the profile's at its place), so a thin stretch is
+    // reached at its own surface, not at the largest radius'.
+    GraspAim aim(jaws, tool.settings.radius, tool.settings.grasp_margin);
+    for (std::size_t i = 0; i < spheres_.size(); ++i) aim.offer(i, spheres_[i].center, spheres_[i].radius);
     if (aim.found()) {
         tool.grasp.point = spheres_[aim.picked()].weights;
         tool.grasp.sphere = static_cast<uint32_t>(aim.picked());
         tool.grasp.holding = true;
         // The spring starts slack wherever the held point is (no jolt), then closes.
-        tool.grasp.rest = std::max(tool.settings.radius + spheres_.radius(), std::sqrt(aim.picked_tip_distance2()));
+        tool.grasp.rest = std::max(grasp_surface(tool), std::sqrt(aim.picked_tip_distance2()));
     }
 }
 
+double ToolsForce::grasp_surface(const ToolState& tool) const {
+    return tool.settings.radius + spheres_[tool.grasp.sphere].radius;
+}
+
 double ToolsForce::grasp_rest_at(const ToolState& tool, double t) const {
-    return grasp_rest(tool.grasp.rest, tool.settings.radius + spheres_.radius(), step_.elapsed(t));
+    return grasp_rest(tool.grasp.rest, grasp_surface(tool), step_.elapsed(t));
 }
 
 // The attempts.
@@ -211,8 +216,15 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
             ShaftPoint where;
             double dist2;
             Vec3 d;
+<<<<<<< HEAD
             if (!shaft.touches(spheres_[i].center, &where, &d, &dist2)) continue;
             const double depth = shaft.reach - std::sqrt(dist2);
+=======
+            if (!shaft.touches(spheres_[i].center, &s, &d, &dist2)) continue;
+            // Each sphere at its own radius, as the contacts take it (the shaft reaches as
+            // far as the largest).
+            const double depth = shaft.reach - std::sqrt(dist2) - (r - spheres_[i].radius);
+>>>>>>> skinradius
             if (!(depth > 0.0)) continue;
             stored += 0.5 * tool.contact.stiffness * depth * depth;
             total_magnitude += tool.contact.stiffness * depth;

@@ -98,7 +98,10 @@ public:
 private:
     // The grasp spring's rest length of `tool` at time t of the step, m.
     double grasp_rest_at(const ToolState& tool, double t) const;
-    // Grasps the axis point nearest the tip (the proxy's in proxy mode) within reach, if any.
+    // Where the grasp's spring closes to: the tool's radius plus the held sphere's.
+    double grasp_surface(const ToolState& tool) const;
+    // Grasps the axis point whose surface is nearest the tip (the proxy's in proxy mode),
+    // within grasp_margin of the tool's, if any.
     void take_grasp(ToolState& tool, const mechanics::State& state);
 
     CollisionSpheres& spheres_;  // shared with the other contact effects

@@ -81,8 +81,8 @@ void ToolsForce::restore_state(StateReader& in) {
         saved.grasp.point.first = in.index("first control point grasped", spheres_.control_points() - 3);
         in.f64s("grasp weights", 4, saved.grasp.point.w.data());
         saved.grasp.sphere = in.index("sphere grasped", spheres_.size());
-        // Version 2 held the point on the tool's surface from the start.
-        const double surface = tool.settings.radius + spheres_.radius();
+        // Version 2 held the point on the tool's surface from the start (the held sphere's).
+        const double surface = tool.settings.radius + spheres_[saved.grasp.sphere].radius;
         saved.grasp.rest = version >= 3 ? in.f64("grasp rest length") : surface;
         if (!(saved.grasp.rest >= surface) || !std::isfinite(saved.grasp.rest))
             in.fail("grasp rest length shorter than the tool's radius plus the bowel's, or not finite");

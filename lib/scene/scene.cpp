@@ -116,7 +116,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
       rest_length_(config.intestine.length),
       radius_(config.intestine.radius),
       collision_(config.collision),
-      start_clearance_(scene::start_clearance(config)),
+      start_clearance_(scene::start_clearance(config, memory)),
       published_(published) {
     const IntestineConfig& intestine = config.intestine;
     const std::size_t n = model_.control_points;
@@ -164,7 +164,7 @@ Scene::Scene(const SceneConfig& config, SnapshotPublisher& published, std::pmr::
     for (std::size_t i = 0; i < config.environment.size(); ++i) {
         collision::Obstacle obstacle = config.environment[i];
         const std::string name = names.obstacle(i);
-        collision::EnvironmentForce::prepare(obstacle, radius_, memory_);
+        collision::EnvironmentForce::prepare(obstacle, radius_, memory_, smallest_radius());
         // A mesh's start can only be checked once its field is built.
         if (obstacle.kind == collision::ObstacleKind::mesh)
             validate_obstacle(obstacle, name, names, state.q.data(), n, &start_clearance_);
@@ -208,7 +208,7 @@ void Scene::refinalize() {
 std::size_t Scene::add_obstacle(const collision::Obstacle& obstacle, const std::string& name,
                                 const FieldNames& names) {
     collision::Obstacle prepared = obstacle;
-    collision::EnvironmentForce::prepare(prepared, radius_, memory_);
+    collision::EnvironmentForce::prepare(prepared, radius_, memory_, smallest_radius());
     published_.reserve_obstacles(obstacles_ + 1);
     validate_obstacle(prepared, name, names, stepper_.state().q.data(), model_.control_points, &start_clearance_);
     add_to_environment(prepared);

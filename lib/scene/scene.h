@@ -116,6 +116,8 @@ public:
     const spline::LengthProfile& radius_profile() const { return profiles_.radius; }
     // The tube's radius at arc length s from the first end at rest, m.
     double radius_at(double s) const { return profiles_.radius.empty() ? radius_ : profiles_.radius.at(s); }
+    // The smallest radius along the tube (radius() without a profile), m.
+    double smallest_radius() const { return profiles_.radius.empty() ? radius_ : profiles_.radius.smallest(); }
     // The axis' length at rest, m.
     double rest_length() const { return rest_length_; }
 

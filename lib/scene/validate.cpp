@@ -15,6 +15,7 @@
 #include "scene/points_length.h"
 #include "scene/scene_table.h"
 #include "scene/shape_builder.h"
+#include "spline/length_profile.h"
 
 namespace enteron::scene {
 namespace {
@@ -53,23 +54,22 @@ const char* obstacle_kind_name(collision::ObstacleKind kind) {
 // scene would fail.
 void check_clearance(const collision::Obstacle& o, const std::string& name, ErrorCode code, const double* points,
                      std::size_t count, const StartClearance& clearance) {
-    // Beyond this the escape speed passes max_speed.
-    const double deepest_possible = clearance.max_speed / clearance.escape_rate - clearance.radius;
     const mechanics::FramePlacement frame = mechanics::placement_at(o.pose);
     std::vector<std::size_t> stuck;
-    double deepest = 0.0;
+    double deepest = 0.0, escape = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         const double depth = collision::beyond_surface(o, frame.to_local(point_at(points, i)));
-        if (depth > 0.0 && depth > deepest_possible) {
+        // Beyond deepest_possible the escape speed passes max_speed.
+        if (depth > 0.0 && depth > clearance.deepest_possible(i)) {
             stuck.push_back(i);
             deepest = std::max(deepest, depth);
+            escape = std::max(escape, (depth + clearance.radius_of(i)) * clearance.escape_rate_of(i));
         }
     }
     if (stuck.empty()) return;
     const bool organ = o.kind == collision::ObstacleKind::sphere || o.kind == collision::ObstacleKind::capsule ||
                        (o.kind == collision::ObstacleKind::mesh && !o.field->outside_is_solid());
     const char* where = organ ? "inside it" : o.kind == collision::ObstacleKind::plane ? "behind it" : "outside it";
-    const double escape = (deepest + clearance.radius) * clearance.escape_rate;
     throw Error(code, name + " (" + obstacle_kind_name(o.kind) + ") has control points " + index_ranges(stuck) +
                           " (" + std::to_string(stuck.size()) + " of " + std::to_string(count) + ") " + where +
                           ", up to " + format_rounded(deepest) + " m beyond its surface: its contacts would throw them "
@@ -655,10 +655,29 @@ SceneConfig validate(SceneConfig config, const FieldNames& names, const FieldSet
     return config;
 }
 
-StartClearance start_clearance(const SceneConfig& config) {
-    const double radius = config.intestine.radius;
-    const double sphere_mass = config.intestine.linear_density * resting_sphere_spacing(config.collision, radius);
-    return {radius, std::sqrt(config.collision.contact.stiffness / sphere_mass), config.solver.max_speed};
+StartClearance start_clearance(const SceneConfig& config, std::pmr::memory_resource* memory) {
+    const IntestineConfig& tube = config.intestine;
+    const double radius = tube.radius, spacing = resting_sphere_spacing(config.collision, radius);
+    const double k = config.collision.contact.stiffness;
+    StartClearance clearance{radius, std::sqrt(k / (tube.linear_density * spacing)), config.solver.max_speed,
+                             std::pmr::vector<double>(memory), std::pmr::vector<double>(memory)};
+    if (tube.radius_profile.empty() && tube.linear_density_profile.empty()) return clearance;
+    // Each control point at its rest arc length s = i l0: its radius, and a sphere there of
+    // the spacing x R(s) / R_max (collision_spheres.h) and the density at s.
+    const spline::LengthProfile radii(tube.radius_profile, std::pmr::get_default_resource());
+    const spline::LengthProfile densities(tube.linear_density_profile, std::pmr::get_default_resource());
+    const std::size_t n = tube.control_points;
+    const double l0 = tube.length / static_cast<double>(n - 1);
+    clearance.radius_at.resize(n);
+    clearance.escape_rate_at.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = l0 * static_cast<double>(i);
+        const double r = radii.empty() ? radius : radii.at(s);
+        const double density = densities.empty() ? tube.linear_density : densities.at(s);
+        clearance.radius_at[i] = r;
+        clearance.escape_rate_at[i] = std::sqrt(k / (density * spacing * r / radius));
+    }
+    return clearance;
 }
 
 FieldSet fields_apart_from_defaults(const SceneConfig& config) {

@@ -9,8 +9,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <memory_resource>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "base/error.h"
 #include "collision/obstacle.h"
@@ -78,12 +80,23 @@ private:
 // rim falls in) but not when it is deep (a bowel outside its cavity, a 50 m helix in a
 // 30 cm box): the contact spring, k per sphere of mass rho s, throws a sphere out at about
 // depth sqrt(k / (rho s)), and past max_speed every step fails the guard.
+// With a radius or a density profile each control point takes its own R and rho s (the
+// profiles at its rest arc length; the spheres' spacing s follows the radius), in
+// `radius_at` and `escape_rate_at` (empty without profiles).
 struct StartClearance {
     double radius;       // R, m: a contact starts R before the centre reaches the surface
     double escape_rate;  // sqrt(k / (rho s)), 1/s: escape speed per metre of contact depth
     double max_speed;    // m/s, the guard's
+    std::pmr::vector<double> radius_at, escape_rate_at;  // per control point, with profiles
+
+    double radius_of(std::size_t i) const { return radius_at.empty() ? radius : radius_at[i]; }
+    double escape_rate_of(std::size_t i) const { return escape_rate_at.empty() ? escape_rate : escape_rate_at[i]; }
+    // The depth beyond the surface past which control point i escapes faster than max_speed, m.
+    double deepest_possible(std::size_t i) const { return max_speed / escape_rate_of(i) - radius_of(i); }
 };
-StartClearance start_clearance(const SceneConfig& config);
+// (The per-point values allocate from `memory`: the scene's, which keeps them.)
+StartClearance start_clearance(const SceneConfig& config,
+                               std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 // Checks every value of config that the scene will use (shape fields only for the chosen
 // shape kind; optional effects only when present), then where the bowel starts: no control

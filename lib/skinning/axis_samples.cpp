@@ -14,6 +14,7 @@ template <typename ArcLengthOf>
 void AxisSamples::sample(const spline::ArcLengthTable& table, const double* points_xyz, std::size_t count,
                          ArcLengthOf arc_length_of, Curvature curvature) {
     resize_buffer(curvature_, curvature == Curvature::compute ? position_.size() : 0);
+    resize_buffer(parameter_, position_.size());
     Vec3 previous_tangent{1.0, 0.0, 0.0};
     for (std::size_t k = 0; k <= intervals_; ++k) {
         const double s = k == intervals_ ? double(count - 1) : table.parameter_at(arc_length_of(k));
@@ -22,6 +23,7 @@ void AxisSamples::sample(const spline::ArcLengthTable& table, const double* poin
         const Vec3 t = normalized_or(d, previous_tangent);
         position_[phantoms_ + k] = spline::evaluate(points_xyz, spline::weights_at(count, s, spline::Derivative::value));
         tangent_[phantoms_ + k] = t;
+        parameter_[phantoms_ + k] = s;
         previous_tangent = t;
         if (curvature == Curvature::compute) curvature_[phantoms_ + k] = curvature_vector(points_xyz, count, s, d, t);
     }
@@ -99,6 +101,7 @@ void AxisSamples::extend_ends(const double* points_xyz, std::size_t count, doubl
             const std::size_t i = direction > 0.0 ? end + j : end - j;
             position_[i] = position_[end] + arc.x() * t + arc.y() * inward;
             tangent_[i] = std::cos(k * s) * t + std::sin(k * s) * inward;
+            parameter_[i] = parameter;
             if (curvature == Curvature::compute) curvature_[i] = k * inward;
             if (!arc_.empty()) arc_[i] = arc_[end] + s;
         }

@@ -51,6 +51,9 @@ public:
     }
 
     const Vec3& position(std::size_t i) const { return position_[i]; }
+    // The spline parameter of sample i (0 .. count - 1; a phantom takes its end's): where the
+    // sample lies on the material axis, for the radius there (tube_radius.h).
+    double parameter(std::size_t i) const { return parameter_[i]; }
     const Vec3& tangent(std::size_t i) const { return tangent_[i]; }
     // Curvature vector dt/ds of sample i (towards the centre of curvature, length 1 / radius
     // of curvature), 1/m; the phantoms' that of their end. Only if built with
@@ -84,6 +87,7 @@ private:
     std::vector<Vec3> position_;
     std::vector<Vec3> tangent_;
     std::vector<Vec3> curvature_;
+    std::vector<double> parameter_;
     std::vector<double> arc_;  // arc length of each sample (phantoms included) when uneven (build_at), else empty
     std::size_t phantoms_ = 0;
     std::size_t intervals_ = 0;

@@ -71,6 +71,10 @@ void ConvolutionSkin::gather_window(double s) {
     }
 }
 
+double ConvolutionSkin::ring_radius(std::size_t k) const {
+    return settings_.radius_along.at_parameter(rings_.parameter(k), settings_.radius);
+}
+
 double ConvolutionSkin::field(Vec3 p) const {
     double sum = 0.0;
     for (std::size_t i = 0; i + 1 < window_.size(); i += 2) sum += segment_field(p, window_[i], window_[i + 1]);
@@ -168,16 +172,15 @@ void ConvolutionSkin::rebuild() {
                 radius_[k * S + j] = (1 - w) * previous_[k0 * S + j] + w * previous_[(k0 + 1) * S + j];
         }
     } else {
-        std::fill(radius_.begin(), radius_.end(), R);
+        for (std::size_t k = 0; k < n; ++k) std::fill_n(radius_.begin() + std::ptrdiff_t(k * S), S, ring_radius(k));
     }
 
     // The other folds, on the skeleton's polyline, for rays reaching up to 1.5 R.
-    if (settings_.contact_surfaces) folds_.build(skeleton_, R, 1.5 * R);
+    if (settings_.contact_surfaces) folds_.build(skeleton_, R, 1.5 * R, settings_.radius_along);
     resize_buffer(deformed_, n * S);
     touching_rings_ = 0;
     RingContacts::Ring ring;
     ring.tube = 0;
-    ring.radius = R;
     ring.rays = S;
     ring.cosine = grid_.cosines();
     ring.sine = grid_.sines();
@@ -194,6 +197,10 @@ void ConvolutionSkin::rebuild() {
         const double curvature = bend.norm();
         const BendCalibration::Row bend_row = bend_.row(curvature);
         const double inverse_curvature = curvature > 0.0 ? 1.0 / curvature : 0.0;
+        // With a radius profile each ray is solved in space stretched across the axis by
+        // R / r (r the ring's radius): the field reaches the iso-value of radius R where the
+        // ray is r long, exactly on a straight axis.
+        const double stretch = R / ring_radius(k);
         const double bend_n = inverse_curvature * bend.dot(nrm), bend_b = inverse_curvature * bend.dot(bin);
         for (std::size_t j = 0; j < S; ++j) {
             const Vec3 direction = grid_.cosine(j) * nrm + grid_.sine(j) * bin;
@@ -202,7 +209,7 @@ void ConvolutionSkin::rebuild() {
             const double c = -(grid_.cosine(j) * bend_n + grid_.sine(j) * bend_b);
             double unused = 0.0;
             const double iso = iso_ / BendCalibration::scale(bend_row, c, &unused);
-            radius_[k * S + j] = solve_ray(centre, direction, radius_[k * S + j], iso);
+            radius_[k * S + j] = solve_ray(centre, direction, stretch * radius_[k * S + j], iso) / stretch;
         }
     }
     // Contacts and the neighbouring rings.
@@ -214,6 +221,7 @@ void ConvolutionSkin::rebuild() {
         ring.binormal = bin;
         ring.tangent = rings_.tangent(k);
         ring.arc_length = rings_.arc_length(k);
+        ring.radius = ring_radius(k);
         ring.curvature = skeleton_.mean_bend(ring.arc_length, settings_.window);
         ring.previous_centre = k > 0 ? &rings_.position(k - 1) : nullptr;
         ring.next_centre = k + 1 < n ? &rings_.position(k + 1) : nullptr;
@@ -253,6 +261,7 @@ void ConvolutionSkin::rebuild() {
         ring.binormal = bin;
         ring.tangent = t;
         ring.arc_length = rings_.arc_length(k);
+        ring.radius = ring_radius(k);
         ring.tilt = phi;
         ring.keep_area = false;
         ring.previous_centre = ring.next_centre = nullptr;

@@ -13,7 +13,10 @@
 // safeguarded Newton iterations on the local field, starting from the radius it had in
 // the previous frame (temporal coherence: usually one or two field evaluations). The
 // iso-value is calibrated numerically at construction: the field of a straight skeleton
-// at distance R, so a straight tube has radius exactly R. The skeleton's points are evenly
+// at distance R, so a straight tube has radius exactly R. With a radius profile each ring's
+// rays are solved stretched across the axis by R / r, r the ring's radius (the profile's at
+// its place), so a straight tapered tube has radius exactly r(s) at each ring; the knobs
+// (window, spacings) stay those of the largest radius R. The skeleton's points are evenly
 // spaced, or (with a chord-error tolerance) closer where the axis bends, from
 // skeleton_spacing on straight parts (ring_placement.h with a radius of 0). The level of detail is the number
 // of segments around and the ring spacing: even, or (with a chord-error tolerance) closer
@@ -59,6 +62,8 @@ private:
     // The skeleton's spacing on a bend of curvature k (1/m): skeleton_spacing, or with a
     // curvature-following skeleton the spacing it takes there.
     double skeleton_spacing_for(double curvature) const;
+    // The radius of body ring k, m: the profile's at its place (tube_radius.h), or R.
+    double ring_radius(std::size_t k) const;
     double field(Vec3 p) const;
     // Distance along the ray from origin where the field crosses the iso-value.
     double solve_ray(Vec3 origin, Vec3 direction, double start, double iso);

@@ -52,7 +52,7 @@ uint64_t FoldContacts::cell_key(const Vec3& p) const {
     return (p - nearest->point).norm() / radius_[i] + window_penalty(tube, s, tube_[i], nearest->arc);
 }
 
-void FoldContacts::build(const AxisSamples& axis, double radius, double query_radius) {
+void FoldContacts::build(const AxisSamples& axis, double radius, double query_radius, const TubeRadius& along) {
     query_radius_ = query_radius;
     reach_ = query_radius + radius * (1.0 + kMaxBulgeReach);
     window_start_ = 2.0 * radius;
@@ -68,6 +68,7 @@ void FoldContacts::build(const AxisSamples& axis, double radius, double query_ra
         position_[i] = axis.position(first + i);
         curvature_[i] = has_curvature ? axis.curvature(first + i) : Vec3::Zero();
         arc_[i] = axis.arc_length(first + i);
+        if (along.varies()) radius_[i] = along.at_parameter(axis.parameter(first + i), radius);
     }
     // Coarse samples about kCoarseSpacingRadii apart in arc length, and each end.
     coarse_.clear();

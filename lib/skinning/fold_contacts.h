@@ -41,6 +41,7 @@
 
 #include "base/geometry.h"
 #include "skinning/axis_samples.h"
+#include "skinning/tube_radius.h"
 
 namespace enteron::skinning {
 
@@ -55,11 +56,12 @@ public:
         double level = 0.0;
     };
 
-    // Rebuilds from the real samples of `axis` (one tube of radius `radius`, m; bowed by its
+    // Rebuilds from the real samples of `axis` (one tube of radius `radius`, m, each sample
+    // the radius `along` it when that varies, `radius` then its largest; bowed by its
     // curvature when computed), for queries up to `query_radius` (m) from the axis: the
     // folds are found as far as that plus the bulge's reach from the other fold's axis.
     // Allocates only when the samples grow.
-    void build(const AxisSamples& axis, double radius, double query_radius);
+    void build(const AxisSamples& axis, double radius, double query_radius, const TubeRadius& along = {});
 
     // The folds other than the own stretch of tube (tube `tube`, arc length `s`) that may
     // reach, with their bulge zone, a point within query_radius of `point` (a point of the

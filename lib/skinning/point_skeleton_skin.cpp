@@ -119,6 +119,11 @@ void PointSkeletonSkin::load_skeleton() {
         bend_rows_[j] = bend_.row(curvature);
         bend_axes_[j] = curvature > 0.0 ? Vec3((1.0 / (curvature * R)) * bend) : Vec3::Zero();
     }
+    radii_.clear();
+    if (settings_.radius_along.varies()) {
+        resize_buffer(radii_, n);
+        for (std::size_t j = 0; j < n; ++j) radii_[j] = settings_.radius_along.at_parameter(skeleton_.parameter(j), R);
+    }
     resize_buffer(inverse_chord2_, n);
     for (std::size_t j = 0; j + 1 < n; ++j) {
         const Vec3 d = skeleton_.position(j + 1) - skeleton_.position(j);
@@ -212,6 +217,16 @@ double PointSkeletonSkin::field(Vec3 given, std::size_t k, Vec3* gradient, bool 
             radial = true;
         }
     }
+    // With a radius profile, q stretched across the axis at k by R / r (about the end point
+    // beyond an end, where the field is radial).
+    const double stretch = radii_.empty() ? 1.0 : stretch_at(p, k);
+    if (!radii_.empty()) {
+        const Vec3& x = skeleton_.position(k);
+        const Vec3 d = q - x;
+        const Vec3& t = skeleton_.tangent(k);
+        const double along = radial ? 0.0 : d.dot(t);
+        q = x + along * t + stretch * (d - along * t);
+    }
     // The field scaled for the bend of the axis at k (bend_calibration.h), with c taken as
     // the cosine of q's direction off the axis from the outward direction times |q - x_k| / R.
     const BendCalibration::Row& bend_row = bend_rows_[k];
@@ -230,6 +245,13 @@ double PointSkeletonSkin::field(Vec3 given, std::size_t k, Vec3* gradient, bool 
         const double rn = r.norm();
         const Vec3 dir = normalized_or(p - centre, Vec3{0, 0, 1});
         at_p = (rn > 0.0 ? grad.dot(r) / rn : 0.0) * dir;
+        if (!radii_.empty()) at_p *= stretch;
+    } else if (!radii_.empty()) {
+        // Through the stretch (symmetric): R / r across the axis, 1 along it. (The radius'
+        // own change along the axis, a few % of R per R at most, is left out: the Newton
+        // steps converge all the same.)
+        const Vec3& t = skeleton_.tangent(k);
+        at_p = stretch * grad + ((1.0 - stretch) * grad.dot(t)) * t;
     }
     // Through the pull: p = c + (given - c) / (1 + D(x(given))).
     const double inverse = 1.0 / (1.0 + bulge);
@@ -243,7 +265,7 @@ void PointSkeletonSkin::prepare_contacts() {
     bulge_reach_.clear();
     if (!settings_.contact_surfaces) return;
     const double R = settings_.radius, h = skeleton_.spacing();
-    folds_.build(skeleton_, R, 1.5 * R);
+    folds_.build(skeleton_, R, 1.5 * R, settings_.radius_along);
     if (contact_cosine_.size() != kContactRays) {
         contact_cosine_.resize(kContactRays);
         contact_sine_.resize(kContactRays);
@@ -259,9 +281,7 @@ void PointSkeletonSkin::prepare_contacts() {
     resize_buffer(bulge_reach_, rings);
     resize_buffer(contact_rays_, rings * kContactRays);
     double free[kContactRays], out[kContactRays];
-    std::fill_n(free, kContactRays, R);
     RingContacts::Ring ring;
-    ring.radius = R;
     ring.rays = kContactRays;
     ring.cosine = contact_cosine_.data();
     ring.sine = contact_sine_.data();
@@ -275,10 +295,12 @@ void PointSkeletonSkin::prepare_contacts() {
         ring.tangent = skeleton_.tangent(k);
         ring.arc_length = skeleton_.arc_length(k);
         ring.curvature = skeleton_.mean_bend(ring.arc_length, settings_.window);
+        ring.radius = radii_.empty() ? R : radii_[k];
+        std::fill_n(free, kContactRays, ring.radius);
         bulge_reach_[m] = contacts_.deform(folds_, ring, free, out).bulge_reach;
         for (std::size_t j = 0; j < kContactRays; ++j) {
             ContactRaySample& sample = contact_rays_[m * kContactRays + j];
-            sample.point = ring.centre + R * contacts_.direction(j);
+            sample.point = ring.centre + ring.radius * contacts_.direction(j);
             const double level = contacts_.level(j);
             sample.level = std::min(level, ceiling);
             sample.gradient = level < ceiling ? contacts_.gradient(j) : Vec3(Vec3::Zero());
@@ -315,6 +337,16 @@ double PointSkeletonSkin::bulge_at(const Vec3& p, std::size_t k, double* slope, 
     if (!(x > 0.0)) return 0.0;  // inside the other fold: the union's
     *gradient = g;
     return contact_deformation(x, w, slope);
+}
+
+double PointSkeletonSkin::stretch_at(const Vec3& p, std::size_t k) const {
+    // The foot of p along the tangent at k, as a fraction of the way to the neighbour on
+    // that side: r is linear between the two skeleton points.
+    const double along = (p - skeleton_.position(k)).dot(skeleton_.tangent(k));
+    const std::size_t neighbour = along >= 0.0 ? std::min(k + 1, skeleton_.size() - 1) : (k > 0 ? k - 1 : 0);
+    const double inverse_chord2 = neighbour == k ? 0.0 : inverse_chord2_[std::min(k, neighbour)];
+    const double w = std::min(1.0, std::fabs(along) * std::sqrt(inverse_chord2));
+    return settings_.radius / ((1.0 - w) * radii_[k] + w * radii_[neighbour]);
 }
 
 double PointSkeletonSkin::band_field(const Vec3& p, std::size_t k) const {

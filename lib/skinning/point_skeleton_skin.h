@@ -24,6 +24,11 @@
 //     step is below R / 50; its normal is the field gradient of the last step and its u
 //     the projection of the vertex on the axis next to its nearest skeleton point.
 //
+// A radius profile (tube_radius.h): a point p near skeleton point k takes the field at
+// p stretched across the axis by R / r (r the radius at p's foot on the axis), so the
+// surface lies at r from a straight axis and caps are hemispheres of the end's radius; the
+// knobs (voxel, window, spacing) stay those of the largest radius R.
+//
 // Contacts: a point of space takes the field of its nearest skeleton point's window, so
 // where two folds press into each other the field switches from one fold's to the
 // other's on the plane half-way between their axes (the contact surface of equal radii),
@@ -86,6 +91,9 @@ private:
     // D(x; w) at p near skeleton point k (0 without contacts or beyond the bulge), with
     // dD/dx in *slope and grad x in *gradient.
     double bulge_at(const Vec3& p, std::size_t k, double* slope, Vec3* gradient) const;
+    // With a radius profile: R / r at p near skeleton point k, r the radius at p's foot on the
+    // axis (linear between skeleton points, continuous where the nearest point changes).
+    double stretch_at(const Vec3& p, std::size_t k) const;
     void splat();
     void evaluate_band();
     void project_vertices();
@@ -106,6 +114,7 @@ private:
     std::vector<double> inverse_chord2_;  // 1 / |x_{j+1} - x_j|^2, m^-2
     std::vector<BendCalibration::Row> bend_rows_;  // per skeleton point: its curvature's row of bend_
     std::vector<Vec3> bend_axes_;         // per skeleton point: towards its centre of curvature, / R, 1/m
+    std::vector<double> radii_;           // per skeleton point: the profile's radius there, m (empty without one)
     SparseVoxelGrid grid_;
     MarchingCubes cubes_;
     std::vector<int32_t> seeds_;  // per vertex: nearest skeleton point of its edge's inside corner

@@ -37,8 +37,9 @@ public:
         }
     }
 
-    // Smallest distance from p to an axis sample farther than `window` in arc length from s.
-    double nearest_other_fold(Vec3 p, double s, double window) const {
+    // Smallest distance from p to an axis sample farther than `window` in arc length from s
+    // (and that sample's arc length in *arc, when given).
+    double nearest_other_fold(Vec3 p, double s, double window, double* arc = nullptr) const {
         double best = 1e300;
         const long cx = long(std::floor(p.x() / cell_)), cy = long(std::floor(p.y() / cell_)),
                    cz = long(std::floor(p.z() / cell_));
@@ -49,7 +50,9 @@ public:
                     if (it == cells_.end()) continue;
                     for (uint32_t i : it->second) {
                         if (std::fabs(arc_[i] - s) <= window) continue;
-                        best = std::min(best, (positions_[i] - p).norm());
+                        const double distance = (positions_[i] - p).norm();
+                        if (distance < best && arc != nullptr) *arc = arc_[i];
+                        best = std::min(best, distance);
                     }
                 }
         return best;
@@ -281,6 +284,19 @@ Vec3 axis_tangent(const double* points, std::size_t count, const spline::ArcLeng
                          Vec3::Zero());
 }
 
+// The mean of r(s)^2 over [0, length] (midpoints of 1024 steps: the profile is piecewise
+// linear in rest arc length, smooth enough between its knots), m^2.
+template <class RadiusAt>
+double mean_square_radius(RadiusAt radius_at, double length) {
+    constexpr int kSteps = 1024;
+    double sum = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double r = radius_at((double(i) + 0.5) / kSteps * length);
+        sum += r * r;
+    }
+    return sum / kSteps;
+}
+
 double triangle_area(const Mesh& mesh, std::size_t t) {
     const Vec3 a = vertex_at(mesh.positions, mesh.indices[3 * t]), b = vertex_at(mesh.positions, mesh.indices[3 * t + 1]),
                c = vertex_at(mesh.positions, mesh.indices[3 * t + 2]);
@@ -291,8 +307,16 @@ double triangle_area(const Mesh& mesh, std::size_t t) {
 
 SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
                          const spline::ArcLengthTable& table, double radius, const PreviousFrame* previous) {
+    return measure_skin(mesh, points_xyz, count, table, radius, TubeRadius{}, previous);
+}
+
+SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
+                         const spline::ArcLengthTable& table, double radius, const TubeRadius& along,
+                         const PreviousFrame* previous) {
     SkinMetrics m;
     const double R = radius;
+    // The ideal tube's radius at arc length s of the axis (its place at rest, tube_radius.h).
+    const auto radius_at = [&](double s) { return along.varies() ? along.at_parameter(table.parameter_at(s), R) : R; };
     const double length = table.total_length();
     m.axis_length = length;
     m.vertices = mesh.vertex_count();
@@ -304,6 +328,7 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
     const AxisPolyline polyline(table, points_xyz, count, R / 16.0);
     std::vector<Vec3> radial(m.vertices), on_tube(m.vertices);
     std::vector<double> other_fold(m.vertices);  // distance to the nearest other fold's axis (kOtherFoldArc), m
+    std::vector<double> other_radius(m.vertices, R);  // that fold's radius there, m
     double sum_radius2 = 0.0, sum_normal2 = 0.0, sum_free2 = 0.0;
     for (std::size_t i = 0; i < m.vertices; ++i) {
         const double s = double(mesh.u[i]) * length;
@@ -312,8 +337,9 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         const Vec3 r = v - a;
         const double distance = r.norm();
         radial[i] = normalized_or(r, Vec3{0, 0, 0});
-        on_tube[i] = a + R * radial[i];
-        const double error = std::fabs(distance - R) / R;
+        const double r_here = radius_at(s);
+        on_tube[i] = a + r_here * radial[i];
+        const double error = std::fabs(distance - r_here) / r_here;
         sum_radius2 += error * error;
         m.radius_error_max = std::max(m.radius_error_max, error);
         const Vec3 n = normalized_or(vertex_at(mesh.normals, i), Vec3{0, 0, 0});
@@ -321,7 +347,9 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         sum_normal2 += angle * angle;
         m.normal_deviation_max = std::max(m.normal_deviation_max, angle);
         if (grid.nearest_other_fold(v, s, kNeighbourWindow * R) < kBlendBand * R) ++m.blended_vertices;
-        other_fold[i] = grid.nearest_other_fold(v, s, kOtherFoldArc * R);
+        double other_arc = s;
+        other_fold[i] = grid.nearest_other_fold(v, s, kOtherFoldArc * R, &other_arc);
+        other_radius[i] = radius_at(other_arc);
         // Free: beyond any bulge's reach from another fold, on a stretch bending with a
         // radius above R.
         if (other_fold[i] >= (1.0 + kMaxBulgeReach) * R && polyline.largest_curvature(s, R) * R <= 1.0) {
@@ -341,7 +369,7 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
         for (std::size_t i = 0; i < m.vertices; ++i) {
             if (!(other_fold[i] < 1.25 * R)) continue;  // no skin reaches it: R, a bulge and the radius error
             const double s = double(mesh.u[i]) * length;
-            tube_depth[i] = std::max(0.0, R - other_fold[i]);
+            tube_depth[i] = std::max(0.0, other_radius[i] - other_fold[i]);
             m.tube_overlap_depth_max = std::max(m.tube_overlap_depth_max, tube_depth[i] / R);
             const auto other = [&](std::size_t t) {
                 for (int c = 0; c < 3; ++c)
@@ -416,7 +444,8 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
             double distance = polyline.distance(centroid, (u0 + u1 + u2) / 3.0 * length);
             if (spread > kNeighbourWindow * R)
                 for (double u : {u0, u1, u2}) distance = std::min(distance, polyline.distance(centroid, u * length));
-            const double error = std::fabs(distance - R) / R;
+            const double r_here = radius_at((u0 + u1 + u2) / 3.0 * length);
+            const double error = std::fabs(distance - r_here) / r_here;
             sum_facet2 += error * error;
             m.facet_error_max = std::max(m.facet_error_max, error);
         }
@@ -448,7 +477,7 @@ SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t
     m.facet_error_rms = std::sqrt(sum_facet2 / double(m.triangles));
     m.watertight = m.triangles > 0 && m.open_edges == 0 && m.nonmanifold_edges == 0;
     m.volume = volume6 / 6.0;
-    const double ideal = kPi * R * R * length;
+    const double ideal = kPi * (along.varies() ? mean_square_radius(radius_at, length) : R * R) * length;
     m.volume_error = ideal > 0.0 ? (m.volume - ideal) / ideal : 0.0;
     m.shape_volume_error = ideal_volume6 != 0.0 ? (volume6 - ideal_volume6) / ideal_volume6 : 0.0;
     return m;

@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "skinning/mesh.h"
+#include "skinning/tube_radius.h"
 #include "spline/arc_length.h"
 
 namespace enteron::skinning {
@@ -102,5 +103,13 @@ struct PreviousFrame {
 // its own work space.
 SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
                          const spline::ArcLengthTable& table, double radius, const PreviousFrame* previous = nullptr);
+// The same against a tube whose radius varies `along` the axis (tube_radius.h; `radius` its
+// largest): each vertex's radius error, its ideal tube point, each facet's error and the
+// other folds' tubes take the radius at their own place, relative to it; the volume error
+// is against pi times the integral of r^2 along the axis. The measures in R (overlaps,
+// motion) and the search windows stay in the largest radius.
+SkinMetrics measure_skin(const Mesh& mesh, const double* points_xyz, std::size_t count,
+                         const spline::ArcLengthTable& table, double radius, const TubeRadius& along,
+                         const PreviousFrame* previous = nullptr);
 
 }  // namespace enteron::skinning

@@ -5,13 +5,18 @@
 
 #include <cstdint>
 
+#include "skinning/tube_radius.h"
+
 namespace enteron::skinning {
 
 enum class SkinMethod : int32_t { tube = 0, point_skeleton = 1, convolution = 2 };
 
 struct SkinSettings {
     SkinMethod method = SkinMethod::convolution;
-    double radius = 0.0125;          // R, m
+    double radius = 0.0125;          // R, m: the largest with a radius profile; the knobs below scale with it
+    // The radius along the axis (tube_radius.h): each ring, skeleton point and vertex takes
+    // its own; constant (radius) unless given.
+    TubeRadius radius_along;
     uint32_t segments = 16;          // vertices around a ring (tube, convolution)
     double ring_spacing = 0.00625;   // arc length between rings, m (tube, convolution); the largest if adaptive
     double ring_chord_error = 0.0;   // convolution: > 0 places rings closer at bends, chord error tolerance, m

@@ -10,7 +10,6 @@
 namespace enteron::skinning {
 
 void TubeSkin::rebuild() {
-    const double R = settings_.radius;
     const std::size_t S = settings_.segments;
     rings_.build(table_, points_.data(), axis_count(), ring_intervals(table_.total_length()), 0.0,
                  AxisSamples::Curvature::skip);
@@ -28,6 +27,8 @@ void TubeSkin::rebuild() {
         const double phi = grid_.cap_angle(row);
         const double along = std::sin(phi), across = std::cos(phi);  // once per row, not per vertex
         const Vec3 centre = rings_.position(k), t = rings_.tangent(k);
+        // The ring's own radius (the profile's at its place; caps take their end ring's).
+        const double R = settings_.radius_along.at_parameter(rings_.parameter(k), settings_.radius);
         const Vec3 nrm = frames_.normal(k), bin = frames_.binormal(k);
         const auto u = float(rings_.fraction(k));
         const bool pole = row == 0 || row + 1 == grid_.rows();

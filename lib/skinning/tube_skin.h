@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The parametric generalised cylinder: rings of radius R on rotation-minimising frames,
+// The parametric generalised cylinder: rings of radius R (each its own with a radius
+// profile, tube_radius.h) on rotation-minimising frames,
 // spaced evenly in arc length, closed by hemispherical caps. The fast baseline. At a bend
 // tighter than R the rings on the inner side would cross each other (the surface folding
 // over itself, the artefact France et al. name): each ray stops short of its neighbouring

@@ -46,6 +46,7 @@ double LengthProfile::at(double s) const {
 }
 
 double LengthProfile::largest() const { return *std::max_element(values_.begin(), values_.end()); }
+double LengthProfile::smallest() const { return *std::min_element(values_.begin(), values_.end()); }
 
 template <class Run>
 double LengthProfile::sum_over_runs(double length, Run run) const {

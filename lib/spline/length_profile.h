@@ -25,6 +25,7 @@ public:
     // The value at arc length s, linear between knots.
     double at(double s) const;
     double largest() const;
+    double smallest() const;
     // The integral of the value over [0, length] (exact: trapezoids between knots).
     double integral(double length) const;
     // The integral of 1 / value over [0, s] (exact for a piecewise linear value), and its

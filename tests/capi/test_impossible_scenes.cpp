@@ -70,6 +70,34 @@ TEST(ImpossibleScenes, AnObstacleAddedAroundTheBowelWhereItIsNowIsRefusedInC) {
     EXPECT_TRUE(step_n(scene.get(), 1e-3, 20));
 }
 
+// A 1.5 m tube along x from the origin (61 control points), of radius 1.3 cm or tapering
+// from 3.5 cm to 1.3 cm, with a sphere organ of radius `depth` centred on its first or last
+// control point (which then lies `depth` inside it).
+std::string tapered_start_json(bool tapered, bool at_thin_end, double depth) {
+    const std::string radius = tapered ? R"("radius_profile": [[0, 0.035], [1.5, 0.013]])" : R"("radius": 0.013)";
+    return R"({"intestine": {"length": 1.5, "control_points": 61, )" + radius +
+           R"(, "shape": {"kind": "line"}}, "environment": [{"type": "sphere", "center": [)" +
+           (at_thin_end ? "1.5" : "0") + R"(, 0, 0], "radius": )" + std::to_string(depth) + "}]}";
+}
+
+TEST(ImpossibleScenes, EachPartOfATaperedTubeStartsAsDeepAsItsOwnRadiusAllows) {
+    // The contact throws a sphere out at (depth + r) sqrt(k / (rho s)), s the spheres'
+    // spacing there (R / 2 x r / R_max): with the defaults (k = 500 N/m, rho = 0.3 kg/m)
+    // and max_speed 50 m/s, 8.6 cm deep at r = 1.3 cm and 12.7 cm at 3.5 cm. The thin end
+    // is refused 10 cm deep, as a tube of its radius is (the largest radius' sphere would
+    // let it start); the wide end starts 10 cm deep, unlike the thin tube.
+    for (bool tapered : {false, true}) {
+        const std::string message = refused_json(tapered_start_json(tapered, true, 0.10));
+        EXPECT_EQ(message.rfind("environment[0] (sphere) has control points 60 (1 of 61) inside it", 0), 0u)
+            << message;
+        ScenePtr shallower = create_json(tapered_start_json(tapered, true, 0.08));
+        EXPECT_TRUE(shallower) << ent_last_error();
+    }
+    ScenePtr wide_end = create_json(tapered_start_json(true, false, 0.10));
+    EXPECT_TRUE(wide_end) << ent_last_error();
+    refused_json(tapered_start_json(false, false, 0.10));
+}
+
 TEST(ImpossibleScenes, AnUnstableStepNamesTheCheckTheEffectAndTheControlPoint) {
     // Gravity given in mm/s^2: the bowel falls a thousand times too fast and passes
     // max_speed within a few steps; the message tells where and why.

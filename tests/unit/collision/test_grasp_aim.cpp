@@ -26,10 +26,12 @@ Jaws vertical_jaws(double length, double opening) {
     return jaws;
 }
 
+// Spheres of 1 cm radius offered to a 5 mm tool whose margin makes its reach `reach`.
 std::size_t pick(const Jaws& jaws, double reach, std::initializer_list<Vec3> centres, bool* found) {
-    GraspAim aim(jaws, reach);
+    const double tool_radius = 0.005, sphere_radius = 0.01;
+    GraspAim aim(jaws, tool_radius, reach - tool_radius - sphere_radius);
     std::size_t i = 0;
-    for (const Vec3& c : centres) aim.offer(i++, c);
+    for (const Vec3& c : centres) aim.offer(i++, c, sphere_radius);
     *found = aim.found();
     return aim.picked();
 }
@@ -73,6 +75,21 @@ TEST(GraspAim, BetweenTheJawsTiesGoToTheCentreNearerTheTip) {
              &found);
     EXPECT_TRUE(found);
     EXPECT_EQ(picked, 1u);
+}
+
+TEST(GraspAim, WithoutJawsAThinSphereIsReachedAtItsOwnSurface) {
+    // A 5 mm tool, 5 mm margin: a 1.3 cm sphere 3 cm away (surface 1.2 cm off) against a
+    // 3.5 cm one 4.6 cm away (surface 6 mm off): the surface, not the centre, is nearer.
+    GraspAim aim(vertical_jaws(0.0, 0.0), 0.005, 0.005);
+    aim.offer(0, Vec3(0.03, 0.0, 0.0), 0.013);
+    aim.offer(1, Vec3(0.0, 0.046, 0.0), 0.035);
+    ASSERT_TRUE(aim.found());
+    EXPECT_EQ(aim.picked(), 1u);
+    EXPECT_DOUBLE_EQ(aim.picked_tip_distance2(), 0.046 * 0.046);
+    // And a thin sphere out of its own reach (3 cm > 5 + 13 + 5 mm) is not taken.
+    GraspAim thin(vertical_jaws(0.0, 0.0), 0.005, 0.005);
+    thin.offer(0, Vec3(0.03, 0.0, 0.0), 0.013);
+    EXPECT_FALSE(thin.found());
 }
 
 TEST(GraspAim, NothingBeyondTheReachAndNeverANaN) {

@@ -8,12 +8,16 @@
 // voxel size that would fit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <string>
 
 #include "base/error.h"
+#include "collision/environment_force.h"
 #include "collision/mesh_distance_field.h"
+#include "collision/obstacle.h"
 #include "collision/mesh_fixtures.h"
 
 namespace enteron::collision {
@@ -89,6 +93,42 @@ TEST(MeshDistanceField, ABoxsFieldIsTheBoxsDistanceAndExactWhenRefined) {
     MeshDistanceField::Sample on_top;
     ASSERT_TRUE(refined.sample_within(Vec3(0.01, 0.005, 0.025), 0.012, &on_top));
     EXPECT_LT((on_top.normal - Vec3::UnitZ()).norm(), 1e-9);
+}
+
+TEST(MeshDistanceField, PreparedForATaperedTubeTheGridStaysTheLargestRadiusAndTheThinSpheresReadExactly) {
+    // A tube tapering from 3.5 to 1.3 cm: the grid a quarter of 3.5 cm as without a profile
+    // (a quarter of 1.3 cm would take 20 times the voxels), read exactly near the surface,
+    // where the thin spheres' contacts are, instead of by interpolation.
+    const double c[3] = {0.0, 0.0, 0.0}, half[3] = {0.08, 0.06, 0.05};
+    const Vec3 h(half[0], half[1], half[2]);
+    enteron::collision::Obstacle constant, tapered;
+    constant.kind = tapered.kind = enteron::collision::ObstacleKind::mesh;
+    constant.mesh = tapered.mesh =
+        std::make_shared<const enteron::collision::TriangleMesh>(to_triangle_mesh(test_meshes::box(c, half, false)));
+    enteron::collision::EnvironmentForce::prepare(constant, 0.035, kMeshDistanceFieldMemory);
+    enteron::collision::EnvironmentForce::prepare(tapered, 0.035, kMeshDistanceFieldMemory, 0.013);
+    const double voxel = enteron::collision::kDefaultVoxelRadii * 0.035;
+    EXPECT_EQ(tapered.field->settings().voxel_size, voxel);
+    EXPECT_EQ(tapered.field->settings().band, constant.field->settings().band);
+    EXPECT_FALSE(constant.field->settings().refine);
+    ASSERT_TRUE(tapered.field->settings().refine);
+    std::mt19937_64 random(28);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int near = 0, exact = 0;
+    double interpolated_worst = 0.0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const Vec3 p(0.1 * u(random), 0.08 * u(random), 0.07 * u(random));
+        const double expected = box_distance(p, h);
+        MeshDistanceField::Sample thin, wide;
+        if (!(expected > 0.0 && expected < 0.013)) continue;  // where a thin sphere's centre touches
+        if (!tapered.field->sample_within(p, 0.013, &thin) || !constant.field->sample_within(p, 0.013, &wide)) continue;
+        near += 1;
+        exact += std::fabs(thin.distance - expected) < 1e-9 ? 1 : 0;
+        interpolated_worst = std::max(interpolated_worst, std::fabs(wide.distance - expected));
+    }
+    EXPECT_GT(near, 200);
+    EXPECT_GT(exact, near * 95 / 100);
+    EXPECT_GT(interpolated_worst, 1e-4) << "the interpolated field departs from the box near its edges";
 }
 
 TEST(MeshDistanceField, ACavityIsSolidOutsideItsWalls) {
