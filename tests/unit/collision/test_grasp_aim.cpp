@@ -78,15 +78,17 @@ TEST(GraspAim, BetweenTheJawsTiesGoToTheCentreNearerTheTip) {
 }
 
 TEST(GraspAim, WithoutJawsAThinSphereIsReachedAtItsOwnSurface) {
-    // A 5 mm tool, 5 mm margin: a 1.3 cm sphere 3 cm away (surface 1.2 cm off) against a
-    // 3.5 cm one 4.6 cm away (surface 6 mm off): the surface, not the centre, is nearer.
+    // A 5 mm tool, 5 mm margin: a 1.3 cm sphere 2.2 cm away (its surface 4 mm off the
+    // tool's) against a 3.5 cm one 4.3 cm away (3 mm off): the surface, not the centre,
+    // is nearer; each within its own reach (2.3 and 4.5 cm).
     GraspAim aim(vertical_jaws(0.0, 0.0), 0.005, 0.005);
-    aim.offer(0, Vec3(0.03, 0.0, 0.0), 0.013);
-    aim.offer(1, Vec3(0.0, 0.046, 0.0), 0.035);
+    aim.offer(0, Vec3(0.022, 0.0, 0.0), 0.013);
+    aim.offer(1, Vec3(0.0, 0.043, 0.0), 0.035);
     ASSERT_TRUE(aim.found());
     EXPECT_EQ(aim.picked(), 1u);
-    EXPECT_DOUBLE_EQ(aim.picked_tip_distance2(), 0.046 * 0.046);
-    // And a thin sphere out of its own reach (3 cm > 5 + 13 + 5 mm) is not taken.
+    EXPECT_DOUBLE_EQ(aim.picked_tip_distance2(), 0.043 * 0.043);
+    // A thin sphere beyond its own reach (3 cm > 5 + 13 + 5 mm) is not taken, though a
+    // sphere of the largest radius there would be.
     GraspAim thin(vertical_jaws(0.0, 0.0), 0.005, 0.005);
     thin.offer(0, Vec3(0.03, 0.0, 0.0), 0.013);
     EXPECT_FALSE(thin.found());
