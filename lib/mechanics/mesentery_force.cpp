@@ -11,14 +11,17 @@ namespace enteron::mechanics {
 MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters& parameters,
                                const State& initial, std::pmr::memory_resource* memory)
     : stiffness_(parameters.stiffness), springs_(memory) {
-    const std::size_t n = model.control_points;
+    // The mesentery holds the first tube (axis_model.h).
+    const TubeModel tube = model.tube_list().front();
+    const std::size_t n = tube.control_points;
     const std::size_t count = parameters.attachments;
     springs_.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
         const double fraction = (static_cast<double>(k) + 0.5) / static_cast<double>(count);
         Spring spring;
         spring.weights = spline::weights_at(n, fraction * static_cast<double>(n - 1),
-                                            spline::Derivative::value, model.ends);
+                                            spline::Derivative::value, tube.ends);
+        spring.weights.first += tube.first;
         spring.root = parameters.root_start + fraction * (parameters.root_end - parameters.root_start);
         spring.rest_length = parameters.rest_length > 0.0 ? parameters.rest_length
                                                           : stretch_vector(initial, spring, spring.root).norm();
