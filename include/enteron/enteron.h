@@ -518,6 +518,8 @@ ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s);
 /**
  * Copies count points of the axis, evenly spaced in arc length from the first end to the
  * last, into points_xyz_m (count x 3 doubles, x y z per point, m). count >= 2.
+ * In a scene of several intestines, the first one's (intestine 0: ent_scene_intestine_axis
+ * reads any).
  * Reads the last published state: safe from any thread; allocates nothing.
  */
 ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double* points_xyz_m);
@@ -527,9 +529,34 @@ ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double
  * receives their number. With points_xyz_m NULL (and any capacity) only the count is
  * reported. A capacity (in points) below the count gives ENT_ERROR_BUFFER_TOO_SMALL,
  * with *out_count set and nothing copied. Safe from any thread.
+ * In a scene of several intestines, the first one's points (intestine 0).
  */
 ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t capacity,
                                             double* points_xyz_m, uint32_t* out_count);
+
+/**
+ * The number of intestines (tubes) of the scene into *count: 1 for a scene of one
+ * intestine, each its own axis, numbered from 0 in the order the description gives them.
+ * Fixed for the scene's life.
+ * Safe from any thread, at any time between create and destroy (two callers get the same
+ * count); allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (scene or count NULL; *count untouched).
+ */
+ENT_API ent_status ent_scene_intestine_count(const ent_scene* scene, int32_t* count);
+
+/**
+ * Copies count points of intestine `intestine`'s axis (0 <= intestine <
+ * ent_scene_intestine_count), evenly spaced in arc length from its first end to its last,
+ * into points_xyz_m (count x 3 doubles, x y z per point, m). 2 <= count <= 4294967295.
+ * Intestine 0 gives exactly what ent_scene_axis gives.
+ * Reads the last published state, as ent_scene_axis: safe from any thread, concurrently with
+ * the step and other readers (each reader copies one published state whole; two callers may
+ * see two successive states); allocates nothing.
+ * @return ENT_OK; ENT_ERROR_INVALID_ARGUMENT (scene or points_xyz_m NULL, intestine out of
+ *         range, count out of range; nothing written).
+ */
+ENT_API ent_status ent_scene_intestine_axis(const ent_scene* scene, int32_t intestine, size_t count,
+                                            double* points_xyz_m);
 
 /**
  * Counters and energies of the last published state.

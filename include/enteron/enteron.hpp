@@ -427,6 +427,22 @@ public:
         axis(count, out);
         return out;
     }
+    /** The number of intestines (tubes), each its own axis (ent_scene_intestine_count). */
+    int32_t intestine_count() const {
+        int32_t out = 0;
+        detail::check(ent_scene_intestine_count(scene_, &out));
+        return out;
+    }
+    /** `count` (>= 2) points of intestine `intestine`'s axis, evenly spaced in arc length, x y z each (m). */
+    void intestine_axis(int32_t intestine, std::size_t count, std::vector<double>& out) const {
+        out.resize(3 * count);
+        detail::check(ent_scene_intestine_axis(scene_, intestine, count, out.data()));
+    }
+    std::vector<double> intestine_axis(int32_t intestine, std::size_t count) const {
+        std::vector<double> out;
+        intestine_axis(intestine, count, out);
+        return out;
+    }
     ent_stats stats() const {
         ent_stats out = sized<ent_stats>();
         detail::check(ent_scene_stats(scene_, &out));

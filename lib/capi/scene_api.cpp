@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -140,15 +141,52 @@ ENT_API ent_status ent_scene_step(ent_scene* scene, double dt_s) {
     });
 }
 
+namespace {
+// Samples tube `tube` of the last published axis evenly in arc length (ent_scene_axis,
+// ent_scene_intestine_axis).
+void sample_published_tube(const SceneHandle& handle, std::size_t tube, std::size_t count, double* points_xyz_m) {
+    const enteron::scene::PublishedTube& published = handle.published->tube(tube);
+    const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
+    enteron::spline::sample_evenly(snapshot->control_points.data() + 3 * published.first, published.control_points,
+                                   count, points_xyz_m, published.ends);
+}
+}  // namespace
+
 ENT_API ent_status ent_scene_axis(const ent_scene* scene, uint32_t count, double* points_xyz_m) {
     return guarded([&] {
         const SceneCall call(scene);
         const SceneHandle& handle = call.handle();
         require(points_xyz_m, "points_xyz_m");
         if (count < 2) throw Error(ErrorCode::invalid_argument, "count must be >= 2, got " + std::to_string(count));
-        const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
-        enteron::spline::sample_evenly(snapshot->control_points.data(), handle.published->control_points(), count,
-                                       points_xyz_m, handle.published->ends());
+        sample_published_tube(handle, 0, count, points_xyz_m);
+    });
+}
+
+ENT_API ent_status ent_scene_intestine_count(const ent_scene* scene, int32_t* count) {
+    return guarded([&] {
+        const SceneCall call(scene);
+        require(count, "count");
+        *count = static_cast<int32_t>(call.handle().published->tube_count());
+    });
+}
+
+ENT_API ent_status ent_scene_intestine_axis(const ent_scene* scene, int32_t intestine, size_t count,
+                                            double* points_xyz_m) {
+    return guarded([&] {
+        const SceneCall call(scene);
+        const SceneHandle& handle = call.handle();
+        require(points_xyz_m, "points_xyz_m");
+        const std::size_t tubes = handle.published->tube_count();
+        if (intestine < 0 || static_cast<std::size_t>(intestine) >= tubes)
+            throw Error(ErrorCode::invalid_argument, "intestine must be in [0, " + std::to_string(tubes) +
+                                                         "): the scene has " + std::to_string(tubes) +
+                                                         (tubes == 1 ? " intestine" : " intestines") + ", got " +
+                                                         std::to_string(intestine));
+        // As ent_scene_axis's uint32_t count: a count the 32-bit call could not take is a mistake.
+        if (count < 2 || count > UINT32_MAX)
+            throw Error(ErrorCode::invalid_argument,
+                        "count must be in [2, 4294967295], got " + std::to_string(count));
+        sample_published_tube(handle, static_cast<std::size_t>(intestine), count, points_xyz_m);
     });
 }
 
@@ -158,7 +196,9 @@ ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t cap
         const SceneCall call(scene);
         const SceneHandle& handle = call.handle();
         require(out_count, "out_count");
-        const uint32_t count = static_cast<uint32_t>(handle.published->control_points());
+        // The first intestine's (enteron.h).
+        const enteron::scene::PublishedTube& tube = handle.published->tube(0);
+        const uint32_t count = static_cast<uint32_t>(tube.control_points);
         if (points_xyz_m != nullptr && capacity < count) {
             *out_count = count;
             throw Error(ErrorCode::buffer_too_small, "capacity is " + std::to_string(capacity) +
@@ -167,7 +207,8 @@ ENT_API ent_status ent_scene_control_points(const ent_scene* scene, uint32_t cap
         *out_count = count;
         if (points_xyz_m == nullptr) return;
         const enteron::scene::SnapshotPublisher::Reader snapshot(*handle.published);
-        std::copy(snapshot->control_points.begin(), snapshot->control_points.end(), points_xyz_m);
+        const auto first = snapshot->control_points.begin() + static_cast<std::ptrdiff_t>(3 * tube.first);
+        std::copy(first, first + static_cast<std::ptrdiff_t>(3 * tube.control_points), points_xyz_m);
     });
 }
 

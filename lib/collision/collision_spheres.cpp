@@ -13,9 +13,14 @@ namespace enteron::collision {
 CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_length, double spacing,
                                    double radius, std::pmr::memory_resource* memory, spline::Ends ends,
                                    const spline::LengthProfile* radius_profile)
+    : CollisionSpheres({SphereTube{0, control_points, rest_length, spacing, radius, ends, radius_profile}},
+                       control_points, memory) {}
+
+CollisionSpheres::CollisionSpheres(const std::vector<SphereTube>& tubes, std::size_t control_points,
+                                   std::pmr::memory_resource* memory)
     : control_points_(control_points),
-      radius_(radius),
-      rest_spacing_(0.0),
+      radius_(0.0),
+      tubes_(memory),
       sample_weights_(memory),
       sample_points_(memory),
       sample_arc_(memory),
@@ -24,37 +29,55 @@ CollisionSpheres::CollisionSpheres(std::size_t control_points, double rest_lengt
       placed_for_(3 * control_points, 0.0, memory),
       velocities_(memory),
       velocities_for_(3 * control_points, 0.0, memory) {
-    const std::size_t segments = control_points - 1;
-    const std::size_t per_segment = kSamplesPerSegment + 1;  // both ends of every segment
-    sample_weights_.reserve(segments * per_segment);
-    for (std::size_t segment = 0; segment < segments; ++segment)
-        for (std::size_t k = 0; k <= kSamplesPerSegment; ++k)
-            sample_weights_.push_back(spline::segment_weights(
-                control_points, segment, double(k) / kSamplesPerSegment, spline::Derivative::value, ends));
+    for (const SphereTube& tube : tubes) add_tube(tube);
     sample_points_.assign(3 * sample_weights_.size(), 0.0);
     sample_arc_.assign(sample_weights_.size(), 0.0);
+    velocities_.assign(3 * spheres_.size(), 0.0);
+}
+
+void CollisionSpheres::add_tube(const SphereTube& tube) {
+    const double rest_length = tube.rest_length, spacing = tube.spacing, radius = tube.radius;
+    const spline::LengthProfile* radius_profile = tube.radius_profile;
+    TubeSpheres placed;
+    placed.radius = radius;
+    placed.profiled = radius_profile != nullptr;
+    placed.sample_begin = sample_weights_.size();
+    const std::size_t segments = tube.control_points - 1;
+    for (std::size_t segment = 0; segment < segments; ++segment)
+        for (std::size_t k = 0; k <= kSamplesPerSegment; ++k) {
+            spline::SegmentWeights weights = spline::segment_weights(
+                tube.control_points, segment, double(k) / kSamplesPerSegment, spline::Derivative::value, tube.ends);
+            weights.first += tube.first;
+            sample_weights_.push_back(weights);
+        }
+    placed.sample_end = sample_weights_.size();
+    placed.sphere_begin = spheres_.size();
+    const uint32_t index = static_cast<uint32_t>(tubes_.size());
     if (radius_profile == nullptr) {
         const std::size_t count = static_cast<std::size_t>(std::llround(rest_length / spacing)) + 1;
-        rest_spacing_ = rest_length / double(count - 1);
-        spheres_.resize(std::max<std::size_t>(count, 2));
-        for (Sphere& sphere : spheres_) sphere.radius = radius;
+        placed.rest_spacing = rest_length / double(count - 1);
+        spheres_.resize(spheres_.size() + std::max<std::size_t>(count, 2));
+        for (std::size_t j = placed.sphere_begin; j < spheres_.size(); ++j) spheres_[j].radius = radius;
     } else {
         // Even steps of u(s) = R_max x integral of ds / R(s) (length_profile.h): a step of
         // `spacing` in u is spacing x R(s) / R_max in s.
         const double span = radius * radius_profile->reciprocal_integral(rest_length);
         const std::size_t count = std::max<std::size_t>(static_cast<std::size_t>(std::llround(span / spacing)) + 1, 2);
-        rest_spacing_ = span / double(count - 1);
-        spheres_.resize(count);
-        rest_fractions_.resize(count);
+        placed.rest_spacing = span / double(count - 1);
+        spheres_.resize(spheres_.size() + count);
+        rest_fractions_.resize(spheres_.size());
         for (std::size_t j = 0; j < count; ++j) {
             const double s = j + 1 == count ? rest_length
                                             : radius_profile->where_reciprocal_integral_is(
-                                                  rest_spacing_ * double(j) / radius);
-            rest_fractions_[j] = std::min(s / rest_length, 1.0);
-            spheres_[j].radius = radius_profile->at(s);
+                                                  placed.rest_spacing * double(j) / radius);
+            rest_fractions_[placed.sphere_begin + j] = std::min(s / rest_length, 1.0);
+            spheres_[placed.sphere_begin + j].radius = radius_profile->at(s);
         }
     }
-    velocities_.assign(3 * spheres_.size(), 0.0);
+    placed.sphere_end = spheres_.size();
+    for (std::size_t j = placed.sphere_begin; j < placed.sphere_end; ++j) spheres_[j].tube = index;
+    radius_ = std::max(radius_, radius);
+    tubes_.push_back(placed);
 }
 
 ENTERON_HOT_KERNEL const double* CollisionSpheres::velocities(const double* v) {
@@ -73,14 +96,20 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
     std::copy(control_points, control_points + placed_for_.size(), placed_for_.begin());
     placed_ = true;
     placement_ += 1;
+    for (const TubeSpheres& tube : tubes_) place_tube(tube, control_points);
+}
+
+// One tube's spheres, for the control points of the whole state.
+ENTERON_HOT_KERNEL void CollisionSpheres::place_tube(const TubeSpheres& tube, const double* control_points) {
     // The polyline: kSamplesPerSegment + 1 samples per segment (its two ends included), and
     // the arc length at each.
     constexpr std::size_t kPerSegment = kSamplesPerSegment + 1;
-    const std::size_t segments = sample_weights_.size() / kPerSegment;
-    // Raw pointers: the compiler need not reload the vectors' storage after every store.
-    const spline::SegmentWeights* weights = sample_weights_.data();
-    double* points = sample_points_.data();
-    double* arcs = sample_arc_.data();
+    const std::size_t segments = (tube.sample_end - tube.sample_begin) / kPerSegment;
+    // Raw pointers (from the tube's first sample): the compiler need not reload the vectors'
+    // storage after every store.
+    const spline::SegmentWeights* weights = sample_weights_.data() + tube.sample_begin;
+    double* points = sample_points_.data() + 3 * tube.sample_begin;
+    double* arcs = sample_arc_.data() + tube.sample_begin;
     // The last sample stays in registers: reloading it from the stores that wrote it cost a
     // store-forwarding stall per segment.
     Vec3 last = spline::evaluate(control_points, weights[0]);
@@ -100,11 +129,11 @@ ENTERON_HOT_KERNEL void CollisionSpheres::update(const double* control_points) {
     // The spheres, evenly spread over the length: walk the polyline's intervals (never the
     // zero-length step from a segment's last sample to the next one's first).
     const double total = arc;
-    const std::size_t count = spheres_.size();
+    const std::size_t count = tube.sphere_end - tube.sphere_begin;
     const double spacing = total / double(count - 1);
-    Sphere* spheres = spheres_.data();
+    Sphere* spheres = spheres_.data() + tube.sphere_begin;
     std::size_t segment = 0, k = 0;  // the interval from sample (segment, k) to (segment, k + 1)
-    const double* fractions = rest_fractions_.empty() ? nullptr : rest_fractions_.data();
+    const double* fractions = tube.profiled ? rest_fractions_.data() + tube.sphere_begin : nullptr;
     for (std::size_t j = 0; j < count; ++j) {
         const double target = fractions != nullptr ? total * fractions[j] : spacing * double(j);
         for (;;) {

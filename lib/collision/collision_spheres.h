@@ -10,6 +10,9 @@
 // same multiple of the local radius. Their places are fixed in material arc length, as
 // fractions of the length, and spread over the current length in those fractions.
 //
+// With several tubes (mechanics/axis_model.h) each tube has its spheres, one after the
+// other in tube order, each knowing its tube; every contact effect sees them all.
+//
 // To stay cheap at 1 kHz the axis is followed as a fine polyline (a few samples per
 // segment, whose basis weights are constant) and a sphere's centre and weights are
 // interpolated on it; its force then reaches the control points through those weights.
@@ -31,6 +34,20 @@ struct Sphere {
     Vec3 center = Vec3::Zero();      // m
     double arc_length;               // from the first end, m
     double radius = 0.0;             // m: the tube's there (constant, the profile's at rest)
+    uint32_t tube = 0;               // which tube of the axis
+};
+
+// What the spheres of one tube are made from: its control points [first, first +
+// control_points) of the state, its rest length (m), its spacing at rest (m), its radius (m,
+// with a profile its largest value, `spacing` the spacing there), its spline's ends.
+struct SphereTube {
+    std::size_t first = 0;
+    std::size_t control_points = 0;
+    double rest_length = 0.0;
+    double spacing = 0.0;
+    double radius = 0.0;
+    spline::Ends ends;
+    const spline::LengthProfile* radius_profile = nullptr;
 };
 
 class CollisionSpheres {
@@ -41,6 +58,9 @@ public:
     CollisionSpheres(std::size_t control_points, double rest_length, double spacing, double radius,
                      std::pmr::memory_resource* memory, spline::Ends ends = {},
                      const spline::LengthProfile* radius_profile = nullptr);
+    // The spheres of several tubes, in their order, on a state of `control_points` points.
+    CollisionSpheres(const std::vector<SphereTube>& tubes, std::size_t control_points,
+                     std::pmr::memory_resource* memory);
 
     // Places the spheres on the axis given by the control points (x y z each). The effects
     // that make contacts share one set of spheres and each calls this for the state it
@@ -65,8 +85,16 @@ public:
     // The largest sphere radius (every sphere's without a profile): what bounds and search
     // margins take; a contact takes each sphere's own (Sphere::radius).
     double radius() const { return radius_; }
-    // The spacing at rest where the radius is radius() (everywhere without a profile).
-    double rest_spacing() const { return rest_spacing_; }
+    // The spacing at rest where the radius is radius() (everywhere without a profile): the
+    // first tube's (tube_rest_spacing).
+    double rest_spacing() const { return tubes_.front().rest_spacing; }
+    // The tubes: how many, and for tube k its spheres [begin, end), its largest radius and
+    // its spacing at rest where the radius is largest.
+    std::size_t tube_count() const { return tubes_.size(); }
+    std::size_t tube_begin(std::size_t tube) const { return tubes_[tube].sphere_begin; }
+    std::size_t tube_end(std::size_t tube) const { return tubes_[tube].sphere_end; }
+    double tube_radius(std::size_t tube) const { return tubes_[tube].radius; }
+    double tube_rest_spacing(std::size_t tube) const { return tubes_[tube].rest_spacing; }
 
     // bound += scale * sum over spheres of w w^T (per coordinate): the stiffness bound of
     // a law of stiffness `scale` acting on every sphere at once.
@@ -75,14 +103,25 @@ public:
 private:
     static constexpr std::size_t kSamplesPerSegment = 4;  // polyline intervals per segment
 
+    // A tube's samples [sample_begin, sample_end) and spheres [sphere_begin, sphere_end).
+    struct TubeSpheres {
+        std::size_t sample_begin = 0, sample_end = 0;
+        std::size_t sphere_begin = 0, sphere_end = 0;
+        double radius = 0.0;        // m, the largest
+        double rest_spacing = 0.0;  // m, where the radius is largest
+        bool profiled = false;      // spheres at rest_fractions_ (a radius profile)
+    };
+    void add_tube(const SphereTube& tube);
+    void place_tube(const TubeSpheres& tube, const double* control_points);
+
     std::size_t control_points_;
     double radius_;
-    double rest_spacing_;
+    std::pmr::vector<TubeSpheres> tubes_;
     std::pmr::vector<spline::SegmentWeights> sample_weights_;  // (kSamples + 1) per segment
     std::pmr::vector<double> sample_points_;                   // x y z per sample
     std::pmr::vector<double> sample_arc_;                      // arc length at each sample
     std::pmr::vector<Sphere> spheres_;
-    std::pmr::vector<double> rest_fractions_;  // with a profile: each sphere's arc length / the length
+    std::pmr::vector<double> rest_fractions_;  // each sphere's arc length / its tube's length (profiled tubes)
     std::pmr::vector<double> placed_for_;  // the control points of the last update
     std::pmr::vector<double> velocities_;  // of the centres, x y z
     std::pmr::vector<double> velocities_for_;  // the control point velocities they are for

@@ -41,12 +41,17 @@ SelfContactForce::SelfContactForce(CollisionSpheres& spheres, const ContactParam
       contacts_(memory),
       loads_(loads),
       contact_(contact),
-      neighbour_spheres_(static_cast<std::size_t>(std::ceil(kPi * spheres_.radius() / spheres_.rest_spacing() - 1e-9))),
+      neighbour_spheres_(memory),
+      sphere_tube_(memory),
       log_(ContactKind::self, kLoggedContactsPerSphere * spheres_.size(), memory),
       memory_(memory) {
     // Room for the densest pile: spheres of radius R whose centres lie within 2.5R of one
     // sphere number at most about 40 (volume ratio), each pair listed once. The contacts
     // are among the listed pairs.
+    for (std::size_t tube = 0; tube < spheres_.tube_count(); ++tube)
+        neighbour_spheres_.push_back(static_cast<std::size_t>(
+            std::ceil(kPi * spheres_.tube_radius(tube) / spheres_.tube_rest_spacing(tube) - 1e-9)));
+    for (std::size_t i = 0; i < spheres_.size(); ++i) sphere_tube_.push_back(spheres_[i].tube);
     near_pairs_.reserve(40 * spheres_.size());
     touching_.assign(near_pairs_.capacity(), 0);
     contacts_.reserve(near_pairs_.capacity());

@@ -5,7 +5,9 @@
 // can make (radius R) two points pi R apart along the axis are exactly 2R apart, so the
 // window never hides a real contact, and the legs of a U-turn that touch still collide.
 // The window is counted in spheres (material, not current, arc length): stretching the
-// bowel never turns two neighbours into a contact of a sudden.
+// bowel never turns two neighbours into a contact of a sudden. With several tubes the
+// window is each tube's own (its radius, its spacing) and holds within a tube only: the
+// spheres of two tubes always may touch.
 //
 // A pair couples control points far apart along the axis, outside the implicit system's
 // band: each sphere's own share of the contact stiffness goes into the system (so the
@@ -107,9 +109,12 @@ private:
     mutable bool contacts_complete_ = false;
     SphereLoads& loads_;  // shared with the other contact effects
     ContactParameters contact_;
-    std::size_t neighbour_spheres_;  // fewer spheres apart than this (pi R at rest): neighbours, never a contact
+    // Per tube: spheres of that tube fewer apart than this (pi R at rest) are neighbours, never a contact.
+    std::pmr::vector<std::size_t> neighbour_spheres_;
+    std::pmr::vector<uint32_t> sphere_tube_;  // each sphere's tube (CollisionSpheres)
     bool neighbours(std::size_t i, std::size_t j) const {
-        return (i > j ? i - j : j - i) < neighbour_spheres_;
+        const uint32_t tube = sphere_tube_[i];
+        return tube == sphere_tube_[j] && (i > j ? i - j : j - i) < neighbour_spheres_[tube];
     }
     mechanics::ContactSummary last_;
     ContactLog log_;

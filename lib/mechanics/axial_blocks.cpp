@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "mechanics/axial_blocks.h"
 
+#include "mechanics/tube_quadrature.h"
+
 namespace enteron::mechanics {
 
 AxialBlocks::AxialBlocks(const AxisModel& model, std::pmr::memory_resource* memory)
-    : nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first, kNodesPerSegment, memory,
-                                        model.ends)),
+    : nodes_(tube_quadrature(model, spline::Derivative::first, kNodesPerSegment, memory).nodes),
       blocks_(nodes_.size(), Block{}, memory) {}
 
 void AxialBlocks::add_to(SystemMatrix& system) const {

@@ -23,7 +23,7 @@ public:
     static constexpr std::size_t kNodesPerSegment = 2;
 
     // The nodes of a 2-point Gauss rule on the first derivative of each segment, in
-    // segment order (the laws' own nodes: node k lies on segment k / 2).
+    // segment order, tube after tube (the laws' own nodes, tube_quadrature.h).
     AxialBlocks(const AxisModel& model, std::pmr::memory_resource* memory);
 
     // Forgets every coefficient and tangent (in O(1): the blocks of older rounds no longer count).

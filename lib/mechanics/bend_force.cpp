@@ -8,14 +8,15 @@ namespace enteron::mechanics {
 BendForce::BendForce(const AxisModel& model, double bend_stiffness, std::pmr::memory_resource* memory)
     : stiffness_(memory), stiffness_products_(memory), scratch_(3 * model.control_points, 0.0, memory) {
     stiffness_.resize(model.control_points);
-    const double l0 = model.rest_segment_length;
     // With a profile EI(s) comes from it at each node (bend_stiffness is then its largest value).
-    if (model.bend_stiffness_profile != nullptr)
-        spline::add_gram_matrix(model.control_points, spline::Derivative::second, 1.0 / (l0 * l0 * l0), stiffness_,
-                                model.ends, model.bend_stiffness_profile, l0);
-    else
-        spline::add_gram_matrix(model.control_points, spline::Derivative::second,
-                                bend_stiffness / (l0 * l0 * l0), stiffness_, model.ends);
+    add_tube_gram_matrices(
+        model, spline::Derivative::second, stiffness_,
+        [bend_stiffness](const TubeModel& tube, bool profiled) {
+            const double l0 = tube.rest_segment_length;
+            return profiled ? 1.0 / (l0 * l0 * l0)
+                            : TubeModel::own_or(tube.bend_stiffness, bend_stiffness) / (l0 * l0 * l0);
+        },
+        [](const TubeModel& tube) { return tube.bend_stiffness_profile; });
     stiffness_products_.assign(stiffness_);
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "mechanics/axial_blocks.h"
 
@@ -14,21 +15,32 @@ DampingForce::DampingForce(const AxisModel& model, const DampingCoefficients& co
       coefficients_(coefficients),
       constant_(memory),
       constant_products_(memory),
-      nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        AxialBlocks::kNodesPerSegment, memory, model.ends)) {
-    const std::size_t n = model.control_points;
-    const double l0 = model.rest_segment_length;
-    constant_.resize(n);
-    spline::add_gram_matrix(n, spline::Derivative::value, coefficients.drag * l0, constant_, model.ends);
-    spline::add_gram_matrix(n, spline::Derivative::second, coefficients.bend / (l0 * l0 * l0), constant_,
-                            model.ends);
+      nodes_(memory),
+      tubes_(memory) {
+    TubeQuadrature quadrature =
+        tube_quadrature(model, spline::Derivative::first, AxialBlocks::kNodesPerSegment, memory);
+    nodes_ = std::move(quadrature.nodes);
+    tubes_ = std::move(quadrature.tubes);
+    constant_.resize(model.control_points);
+    for (const TubeModel& tube : model.tube_list()) {
+        const std::size_t n = tube.control_points;
+        const double l0 = tube.rest_segment_length;
+        spline::add_gram_matrix(n, spline::Derivative::value, coefficients.drag * l0, constant_, tube.ends, nullptr,
+                                0.0, tube.first);
+        spline::add_gram_matrix(n, spline::Derivative::second, coefficients.bend / (l0 * l0 * l0), constant_,
+                                tube.ends, nullptr, 0.0, tube.first);
+    }
     constant_products_.assign(constant_);
 }
 
 void DampingForce::evaluate(const State& state, double* force, const Linearization* lin) {
     constant_products_.multiply_add(state.v.data(), -1.0, force);
+    for (const TubeNodeRange& tube : tubes_) evaluate_tube(state, tube, force, lin);
+}
 
-    const double l0 = model_.rest_segment_length;
+void DampingForce::evaluate_tube(const State& state, const TubeNodeRange& tube, double* force,
+                                 const Linearization* lin) {
+    const double l0 = tube.rest_segment_length;
     const double c = coefficients_.stretch;
     const double c_per_l0 = c / l0;
     const double tiny = 1e-12 * l0, tiny2 = tiny * tiny;
@@ -40,8 +52,7 @@ void DampingForce::evaluate(const State& state, double* force, const Linearizati
     // together, and both divisions come before any store (they overlap).
     static_assert(AxialBlocks::kNodesPerSegment == 2, "the nodes are paired by segment");
     AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
-    const std::size_t count = nodes_.size();
-    for (std::size_t first = 0; first < count; first += AxialBlocks::kNodesPerSegment) {
+    for (std::size_t first = tube.begin; first < tube.end; first += AxialBlocks::kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
         Vec3 d[2];  // dP/dt at the two nodes
         Vec3 f[2] = {Vec3::Zero(), Vec3::Zero()};
@@ -76,8 +87,11 @@ void DampingForce::add_constant_linearization(double h, SystemMatrix& system) co
 
 void DampingForce::add_damping_bound(numerics::ScalarBandMatrix& bound) const {
     bound.add_scaled(constant_, 1.0);
-    spline::add_gram_matrix(model_.control_points, spline::Derivative::first,
-                            coefficients_.stretch / model_.rest_segment_length, bound, model_.ends);
+    const double c = coefficients_.stretch;
+    add_tube_gram_matrices(
+        model_, spline::Derivative::first, bound,
+        [c](const TubeModel& tube, bool /*profiled*/) { return c / tube.rest_segment_length; },
+        [](const TubeModel& /*tube*/) { return static_cast<const spline::LengthProfile*>(nullptr); });
 }
 
 }  // namespace enteron::mechanics

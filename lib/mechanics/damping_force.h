@@ -13,7 +13,7 @@
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
 #include "mechanics/per_coordinate_matrix.h"
-#include "spline/segment_quadrature.h"
+#include "mechanics/tube_quadrature.h"
 
 namespace enteron::mechanics {
 
@@ -34,11 +34,14 @@ public:
     void add_damping_bound(numerics::ScalarBandMatrix& bound) const override;
 
 private:
+    void evaluate_tube(const State& state, const TubeNodeRange& tube, double* force, const Linearization* lin);
+
     AxisModel model_;
     DampingCoefficients coefficients_;
     numerics::ScalarBandMatrix constant_;  // drag + bend damping, per coordinate
     PerCoordinateMatrix constant_products_;  // the same, for its product with v
-    std::pmr::vector<spline::QuadratureNode> nodes_;
+    std::pmr::vector<spline::QuadratureNode> nodes_;  // every tube's (tube_quadrature.h)
+    std::pmr::vector<TubeNodeRange> tubes_;           // each tube's nodes and l0
 };
 
 }  // namespace enteron::mechanics

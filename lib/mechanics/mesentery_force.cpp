@@ -13,7 +13,9 @@ namespace enteron::mechanics {
 MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters& parameters,
                                const State& initial, std::pmr::memory_resource* memory)
     : stiffness_(parameters.stiffness), springs_(memory) {
-    const std::size_t n = model.control_points;
+    // The mesentery holds the first tube (axis_model.h).
+    const TubeModel tube = model.tube_list().front();
+    const std::size_t n = tube.control_points;
     const std::size_t count = parameters.attachments;
     std::pmr::vector<Vec3> root(memory);
     for (std::size_t k = 0; k < parameters.root_points.size() / 3; ++k)
@@ -25,7 +27,8 @@ MesenteryForce::MesenteryForce(const AxisModel& model, const MesenteryParameters
         const double fraction = (static_cast<double>(k) + 0.5) / static_cast<double>(count);
         Spring spring;
         spring.weights = spline::weights_at(n, fraction * static_cast<double>(n - 1),
-                                            spline::Derivative::value, model.ends);
+                                            spline::Derivative::value, tube.ends);
+        spring.weights.first += tube.first;
         const double t = mapping.empty() ? fraction : mapping.at(fraction * parameters.bowel_length);
         spring.root = point_along_root(root, t);
         spring.rest_length = parameters.rest_length > 0.0 ? parameters.rest_length

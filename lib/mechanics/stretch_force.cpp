@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "mechanics/axial_blocks.h"
 
@@ -10,21 +11,31 @@ namespace enteron::mechanics {
 
 StretchForce::StretchForce(const AxisModel& model, double stretch_stiffness,
                            std::pmr::memory_resource* memory)
-    : model_(model),
-      stiffness_(stretch_stiffness),
-      nodes_(spline::segment_quadrature(model.control_points, spline::Derivative::first,
-                                        AxialBlocks::kNodesPerSegment, memory, model.ends)),
-      node_stiffness_(memory) {
+    : model_(model), stiffness_(stretch_stiffness), nodes_(memory), tubes_(memory), node_stiffness_(memory) {
+    TubeQuadrature quadrature =
+        tube_quadrature(model, spline::Derivative::first, AxialBlocks::kNodesPerSegment, memory);
+    nodes_ = std::move(quadrature.nodes);
+    tubes_ = std::move(quadrature.tubes);
+    const std::vector<TubeModel> tubes = model.tube_list();
     node_stiffness_.reserve(nodes_.size());
-    for (const spline::QuadratureNode& node : nodes_)
-        node_stiffness_.push_back(model.stretch_stiffness_profile != nullptr
-                                      ? model.stretch_stiffness_profile->at(model.rest_segment_length * node.parameter)
-                                      : stretch_stiffness);
+    for (std::size_t k = 0; k < tubes.size(); ++k) {
+        const TubeModel& tube = tubes[k];
+        for (std::size_t i = tubes_[k].begin; i < tubes_[k].end; ++i)
+            node_stiffness_.push_back(tube.stretch_stiffness_profile != nullptr
+                                          ? tube.stretch_stiffness_profile->at(tube.rest_segment_length *
+                                                                               nodes_[i].parameter)
+                                          : TubeModel::own_or(tube.stretch_stiffness, stretch_stiffness));
+    }
 }
 
 void StretchForce::evaluate(const State& state, double* force, const Linearization* lin) {
+    for (const TubeNodeRange& tube : tubes_) evaluate_tube(state, tube, force, lin);
+}
+
+void StretchForce::evaluate_tube(const State& state, const TubeNodeRange& tube, double* force,
+                                 const Linearization* lin) {
     const double* q = state.q.data();
-    const double l0 = model_.rest_segment_length;
+    const double l0 = tube.rest_segment_length;
     const double inverse_l0 = 1.0 / l0;
     // A tangent shorter than this has no direction: the node adds nothing (degenerate shape).
     const double tiny = 1e-12 * l0;
@@ -36,8 +47,7 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
     // linearisation without them (one law linearised alone) takes each block at once.
     static_assert(AxialBlocks::kNodesPerSegment == 2, "the nodes are paired by segment");
     AxialBlocks* blocks = lin != nullptr ? lin->axial : nullptr;
-    const std::size_t count = nodes_.size();
-    for (std::size_t first = 0; first < count; first += AxialBlocks::kNodesPerSegment) {
+    for (std::size_t first = tube.begin; first < tube.end; first += AxialBlocks::kNodesPerSegment) {
         const spline::QuadratureNode* node = &nodes_[first];
         Vec3 d[2];  // dP/dt at the two nodes
         double len[2], inv[2];
@@ -74,12 +84,14 @@ void StretchForce::evaluate(const State& state, double* force, const Linearizati
 }
 
 double StretchForce::potential_energy(const State& state) const {
-    const double l0 = model_.rest_segment_length;
     double energy = 0.0;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-        const spline::QuadratureNode& node = nodes_[k];
-        const double strain = spline::evaluate(state.q.data(), node.weights).norm() / l0 - 1.0;
-        energy += node.weight * 0.5 * node_stiffness_[k] * strain * strain * l0;
+    for (const TubeNodeRange& tube : tubes_) {
+        const double l0 = tube.rest_segment_length;
+        for (std::size_t k = tube.begin; k < tube.end; ++k) {
+            const spline::QuadratureNode& node = nodes_[k];
+            const double strain = spline::evaluate(state.q.data(), node.weights).norm() / l0 - 1.0;
+            energy += node.weight * 0.5 * node_stiffness_[k] * strain * strain * l0;
+        }
     }
     return energy;
 }
@@ -87,13 +99,13 @@ double StretchForce::potential_energy(const State& state) const {
 void StretchForce::add_stiffness_bound(numerics::ScalarBandMatrix& bound) const {
     // At a node H <= EA/l0 I: the transverse factor eps/|P'| = eps / (l0 (1 + eps)) stays
     // below 1/l0. Per coordinate that is EA/l0 times the first-derivative Gram matrix.
-    const double l0 = model_.rest_segment_length;
-    if (model_.stretch_stiffness_profile != nullptr)
-        spline::add_gram_matrix(model_.control_points, spline::Derivative::first, 1.0 / l0, bound, model_.ends,
-                                model_.stretch_stiffness_profile, l0);
-    else
-        spline::add_gram_matrix(model_.control_points, spline::Derivative::first, stiffness_ / l0, bound,
-                                model_.ends);
+    const double ea = stiffness_;
+    add_tube_gram_matrices(
+        model_, spline::Derivative::first, bound,
+        [ea](const TubeModel& tube, bool profiled) {
+            return (profiled ? 1.0 : TubeModel::own_or(tube.stretch_stiffness, ea)) / tube.rest_segment_length;
+        },
+        [](const TubeModel& tube) { return tube.stretch_stiffness_profile; });
 }
 
 }  // namespace enteron::mechanics

@@ -5,7 +5,8 @@
 // strain samples for 3n coordinates leave the bending modes free, where 3 points per
 // segment (about as many samples as coordinates) would lock them and stiffen the bending.
 //
-// With a stretch stiffness profile, EA(s) is read at each node's rest arc length.
+// With a stretch stiffness profile, EA(s) is read at each node's rest arc length. With several
+// tubes (axis_model.h) each has its own nodes, l0, and EA or profile.
 //
 // Linearisation: the Hessian of the energy at a node, H = EA [u u^T / l0 + eps/|P'| (I - u u^T)]
 // with u the unit tangent, is indefinite when the axis is compressed (eps < 0); the
@@ -17,7 +18,7 @@
 
 #include "mechanics/axis_model.h"
 #include "mechanics/effect.h"
-#include "spline/segment_quadrature.h"
+#include "mechanics/tube_quadrature.h"
 
 namespace enteron::mechanics {
 
@@ -31,9 +32,12 @@ public:
     void add_stiffness_bound(numerics::ScalarBandMatrix& bound) const override;
 
 private:
+    void evaluate_tube(const State& state, const TubeNodeRange& tube, double* force, const Linearization* lin);
+
     AxisModel model_;
-    double stiffness_;  // EA, N (with a profile: its largest value)
-    std::pmr::vector<spline::QuadratureNode> nodes_;
+    double stiffness_;  // EA, N (with a profile: its largest value), of the tubes without their own
+    std::pmr::vector<spline::QuadratureNode> nodes_;  // every tube's (tube_quadrature.h)
+    std::pmr::vector<TubeNodeRange> tubes_;           // each tube's nodes and l0
     std::pmr::vector<double> node_stiffness_;  // EA at each node, N (the profile's, or stiffness_)
 };
 

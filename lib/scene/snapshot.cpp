@@ -7,7 +7,11 @@
 namespace enteron::scene {
 
 SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory, spline::Ends ends)
-    : slots_(memory), ends_(ends) {
+    : SnapshotPublisher(coordinates, {PublishedTube{0, coordinates / 3, ends}}, memory) {}
+
+SnapshotPublisher::SnapshotPublisher(std::size_t coordinates, const std::vector<PublishedTube>& tubes,
+                                     std::pmr::memory_resource* memory)
+    : slots_(memory), tubes_(tubes.begin(), tubes.end(), memory) {
     slots_.reserve(kSlots);
     for (std::size_t i = 0; i < kSlots; ++i) {
         slots_.emplace_back(memory);

@@ -86,13 +86,24 @@ struct Snapshot {
     ContactTotals contact_totals;
 };
 
+// One tube of the published axis (mechanics/axis_model.h): its control points are
+// [first, first + control_points) of every snapshot's, its spline continues past its ends so.
+struct PublishedTube {
+    std::size_t first = 0;
+    std::size_t control_points = 0;
+    spline::Ends ends;
+};
+
 class SnapshotPublisher {
 public:
     static constexpr std::size_t kSlots = 8;
 
     // `ends`: how the axis' spline continues past its ends (scene_config.h spline_ends), for
-    // the readers that evaluate the axis from the control points.
+    // the readers that evaluate the axis from the control points. One tube: every point.
     SnapshotPublisher(std::size_t coordinates, std::pmr::memory_resource* memory, spline::Ends ends = {});
+    // Several tubes, back to back in `coordinates` (3 per point), at least one.
+    SnapshotPublisher(std::size_t coordinates, const std::vector<PublishedTube>& tubes,
+                      std::pmr::memory_resource* memory);
 
     // A slot the stepping thread may fill, or nullptr if every slot is busy (then this
     // publication is skipped; the next one will go through).
@@ -109,8 +120,11 @@ public:
     void reserve_obstacles(std::size_t count);
     // Control points of every snapshot.
     std::size_t control_points() const { return slots_.front().control_points.size() / 3; }
-    // The spline's end treatment of every snapshot's axis.
-    spline::Ends ends() const { return ends_; }
+    // The spline's end treatment of every snapshot's axis: of its first tube.
+    spline::Ends ends() const { return tubes_.front().ends; }
+    // The tubes of every snapshot's axis (at least one), in the order of their points.
+    std::size_t tube_count() const { return tubes_.size(); }
+    const PublishedTube& tube(std::size_t index) const { return tubes_[index]; }
 
     // Pins the latest snapshot for reading while it lives.
     class Reader {
@@ -136,7 +150,7 @@ private:
     std::pmr::vector<Snapshot> slots_;
     mutable std::array<std::atomic<uint32_t>, kSlots> readers_{};  // readers pinning each slot
     std::atomic<std::size_t> latest_{0};
-    spline::Ends ends_;
+    std::pmr::vector<PublishedTube> tubes_;
 };
 
 }  // namespace enteron::scene

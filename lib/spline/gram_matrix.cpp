@@ -6,7 +6,7 @@
 namespace enteron::spline {
 
 void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics::ScalarBandMatrix& out,
-                     Ends ends, const LengthProfile* profile, double segment_length) {
+                     Ends ends, const LengthProfile* profile, double segment_length, std::size_t first) {
     constexpr auto rule = numerics::gauss_legendre<4>();
     for (std::size_t segment = 0; segment + 1 < count; ++segment) {
         for (const auto& node : rule) {
@@ -15,7 +15,7 @@ void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics
                 profile != nullptr ? scale * profile->at(segment_length * (double(segment) + node.t)) : scale;
             for (int j = 0; j < 4; ++j)
                 for (int k = 0; k <= j; ++k)
-                    out.lower(sw.first + j, sw.first + k) += factor * node.weight * sw.w[j] * sw.w[k];
+                    out.lower(first + sw.first + j, first + sw.first + k) += factor * node.weight * sw.w[j] * sw.w[k];
         }
     }
 }

@@ -21,7 +21,9 @@ namespace enteron::spline {
 // With a `profile` (length_profile.h), the integrand is also multiplied by the profile at
 // each node's arc length segment_length (segment + t): G_jk = scale * integral of
 // f(s) w_j w_k, exact while f is linear over the segment (degree 7).
+// `first`: where the spline's points start in `out` (one tube of several, mechanics/axis_model.h).
 void add_gram_matrix(std::size_t count, Derivative order, double scale, numerics::ScalarBandMatrix& out,
-                     Ends ends = {}, const LengthProfile* profile = nullptr, double segment_length = 0.0);
+                     Ends ends = {}, const LengthProfile* profile = nullptr, double segment_length = 0.0,
+                     std::size_t first = 0);
 
 }  // namespace enteron::spline

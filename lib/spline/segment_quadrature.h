@@ -31,5 +31,9 @@ struct QuadratureNode {
 std::pmr::vector<QuadratureNode> segment_quadrature(std::size_t count, Derivative order,
                                                     std::size_t points_per_segment,
                                                     std::pmr::memory_resource* memory, Ends ends = {});
+// The same nodes appended to `out`, for a spline whose points start at `first` in the state
+// (one tube of several, mechanics/axis_model.h): its weights' `first` are shifted so.
+void append_segment_quadrature(std::size_t count, Derivative order, std::size_t points_per_segment, Ends ends,
+                               std::size_t first, std::pmr::vector<QuadratureNode>& out);
 
 }  // namespace enteron::spline

@@ -16,6 +16,7 @@
 #include <cfloat>
 #include <cstddef>
 #include <climits>
+#include <cstdint>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -789,6 +790,58 @@ std::vector<BadInput> table() {
          kArg, "count"},
         {"ent_scene_axis", "points_xyz_m NULL", [](L l) { return ent_scene_axis(l.scene, 10, nullptr); }, kArg,
          "points_xyz_m"},
+        {"ent_scene_intestine_count", "scene NULL",
+         [](L) {
+             int32_t count = 77;
+             const ent_status status = ent_scene_intestine_count(nullptr, &count);
+             EXPECT_EQ(count, 77) << "out-parameter untouched";
+             return status;
+         },
+         kArg, "scene"},
+        {"ent_scene_intestine_count", "count NULL", [](L l) { return ent_scene_intestine_count(l.scene, nullptr); },
+         kArg, "count"},
+        {"ent_scene_intestine_axis", "scene NULL",
+         [](L) {
+             double b[6];
+             return ent_scene_intestine_axis(nullptr, 0, 2, b);
+         },
+         kArg, "scene"},
+        {"ent_scene_intestine_axis", "intestine -1",
+         [](L l) {
+             std::vector<double> b(6, -7.0);
+             const ent_status status = ent_scene_intestine_axis(l.scene, -1, 2, b.data());
+             for (double v : b) EXPECT_EQ(v, -7.0) << "nothing written";
+             return status;
+         },
+         kArg, "intestine"},
+        {"ent_scene_intestine_axis", "intestine out of range (the scene has 1)",
+         [](L l) {
+             std::vector<double> b(6, -7.0);
+             const ent_status status = ent_scene_intestine_axis(l.scene, 1, 2, b.data());
+             for (double v : b) EXPECT_EQ(v, -7.0) << "nothing written";
+             return status;
+         },
+         kArg, "1 intestine"},
+        {"ent_scene_intestine_axis", "intestine INT32_MAX",
+         [](L l) {
+             double b[6];
+             return ent_scene_intestine_axis(l.scene, INT32_MAX, 2, b);
+         },
+         kArg, "intestine"},
+        {"ent_scene_intestine_axis", "count 1",
+         [](L l) {
+             double b[6];
+             return ent_scene_intestine_axis(l.scene, 0, 1, b);
+         },
+         kArg, "count"},
+        {"ent_scene_intestine_axis", "count SIZE_MAX",
+         [](L l) {
+             double b[6];
+             return ent_scene_intestine_axis(l.scene, 0, SIZE_MAX, b);
+         },
+         kArg, "count"},
+        {"ent_scene_intestine_axis", "points_xyz_m NULL",
+         [](L l) { return ent_scene_intestine_axis(l.scene, 0, 10, nullptr); }, kArg, "points_xyz_m"},
         {"ent_scene_control_points", "scene NULL",
          [](L) {
              double b[3];

@@ -65,6 +65,10 @@ TEST(Threads, ReadersSeeWholeSnapshotsWhileTheSceneSteps) {
             if (s.steps < last_steps) ++stale_or_backwards;
             last_steps = s.steps;
             if (ent_scene_axis(scene.get(), 16, axis.data()) != ENT_OK) ++failures;
+            // The intestines' readers read the same snapshots, concurrently with the step.
+            int32_t intestines = 0;
+            if (ent_scene_intestine_count(scene.get(), &intestines) != ENT_OK || intestines != 1) ++failures;
+            if (ent_scene_intestine_axis(scene.get(), 0, 16, axis.data()) != ENT_OK) ++failures;
             ++reads;
         }
     };

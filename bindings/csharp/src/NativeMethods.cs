@@ -77,6 +77,13 @@ namespace Enteron
                                                                out uint count);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_scene_intestine_count(SceneHandle scene, out int count);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern Status ent_scene_intestine_axis(SceneHandle scene, int intestine, UIntPtr count,
+                                                               double* pointsXyz);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern Status ent_scene_stats(SceneHandle scene, ref Stats stats);
 
         [DllImport(Library, CallingConvention = Cdecl)]

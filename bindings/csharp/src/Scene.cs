@@ -433,6 +433,33 @@ namespace Enteron
             EnteronException.Check(NativeMethods.ent_scene_axis(Handle, (uint)count, pointsXyz), "ent_scene_axis");
         }
 
+        /// <summary>The number of intestines (tubes), each its own axis (ent_scene_intestine_count).</summary>
+        public int IntestineCount
+        {
+            get
+            {
+                int count;
+                EnteronException.Check(NativeMethods.ent_scene_intestine_count(Handle, out count),
+                                       "ent_scene_intestine_count");
+                return count;
+            }
+        }
+
+        /// <summary>
+        /// Copies <paramref name="count"/> points evenly spaced along intestine
+        /// <paramref name="intestine"/>'s axis, x y z each, m, into <paramref name="pointsXyz"/>
+        /// (ent_scene_intestine_axis; intestine 0 is <see cref="Axis(double[], int)"/>'s). Allocates nothing.
+        /// </summary>
+        public void IntestineAxis(int intestine, double[] pointsXyz, int count)
+        {
+            Arguments.NotNull(pointsXyz, "pointsXyz");
+            Arguments.Fits(count, 3, pointsXyz.Length, "pointsXyz");
+            if (count < 0) throw new ArgumentOutOfRangeException("count", count, "must be >= 0");
+            fixed (double* points = pointsXyz)
+                EnteronException.Check(NativeMethods.ent_scene_intestine_axis(Handle, intestine, (UIntPtr)count, points),
+                                       "ent_scene_intestine_axis");
+        }
+
         /// <summary>The number of control points (ent_scene_control_points with no buffer).</summary>
         public int ControlPointCount
         {

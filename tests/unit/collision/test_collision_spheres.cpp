@@ -231,4 +231,35 @@ TEST(CollisionSpheres, ARadiusProfileSetsEachSphereAndItsSpacing) {
     }
 }
 
+// Two tubes in one state (mechanics/axis_model.h): each tube's spheres are those of the
+// tube alone, after the first tube's, with weights on its own points and its tube index.
+TEST(CollisionSpheres, TheSpheresOfTwoTubesAreEachTubesAlone) {
+    const std::vector<double> a = curved_points(11, 0.02), b = curved_points(8, 0.015, 0.3);
+    std::vector<double> both = a;
+    both.insert(both.end(), b.begin(), b.end());
+    const spline::Ends clamped_first{spline::EndTreatment::quadratic, spline::EndTreatment::linear};
+    CollisionSpheres alone_a(11, 0.2, 0.006, kRadius, std::pmr::new_delete_resource());
+    CollisionSpheres alone_b(8, 0.105, 0.004, 0.02, std::pmr::new_delete_resource(), clamped_first);
+    CollisionSpheres together({{0, 11, 0.2, 0.006, kRadius, {}, nullptr}, {11, 8, 0.105, 0.004, 0.02, clamped_first, nullptr}},
+                              19, std::pmr::new_delete_resource());
+    alone_a.update(a.data());
+    alone_b.update(b.data());
+    together.update(both.data());
+    ASSERT_EQ(together.tube_count(), 2u);
+    ASSERT_EQ(together.size(), alone_a.size() + alone_b.size());
+    EXPECT_EQ(together.tube_begin(1), alone_a.size());
+    EXPECT_EQ(together.radius(), 0.02);  // the largest of every tube
+    EXPECT_EQ(together.tube_rest_spacing(1), alone_b.rest_spacing());
+    for (std::size_t j = 0; j < together.size(); ++j) {
+        const bool second = j >= alone_a.size();
+        const enteron::collision::Sphere& alone = second ? alone_b[j - alone_a.size()] : alone_a[j];
+        const enteron::collision::Sphere& sphere = together[j];
+        EXPECT_EQ(sphere.tube, second ? 1u : 0u) << j;
+        EXPECT_EQ(sphere.center, alone.center) << j;
+        EXPECT_EQ(sphere.radius, alone.radius) << j;
+        EXPECT_EQ(sphere.weights.first, alone.weights.first + (second ? 11u : 0u)) << j;
+        EXPECT_EQ(sphere.weights.w, alone.weights.w) << j;
+    }
+}
+
 }  // namespace

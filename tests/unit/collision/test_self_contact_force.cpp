@@ -205,4 +205,31 @@ TEST(SelfContact, OnlyTheSpheresThatMovedSearchAgainAndNoContactIsMissed) {
     EXPECT_GT(kept.moved_sphere_searches(), 5u);
 }
 
+// Two tubes end to end along x, the second's first sphere on the first's last (the next
+// index): neighbours by index, but of two tubes, so they touch; each tube alone, straight,
+// touches nothing.
+TEST(SelfContact, TheWindowOfNeighboursHoldsWithinATubeOnly) {
+    const std::vector<double> a = straight_line(21, 0.01);
+    std::vector<double> both = a;
+    for (std::size_t i = 0; i < 21; ++i) both.insert(both.end(), {0.2 + 0.5 * kRadius + 0.01 * double(i), 0.0, 0.0});
+    State state(std::pmr::new_delete_resource());
+    state.resize(42);
+    state.q.assign(both.begin(), both.end());
+    CollisionSpheres spheres({{0, 21, 0.2, 0.5 * kRadius, kRadius, {}, nullptr}, {21, 21, 0.2, 0.5 * kRadius, kRadius, {}, nullptr}},
+                             42, std::pmr::new_delete_resource());
+    SphereLoads loads(spheres, std::pmr::new_delete_resource());
+    SelfContactForce effect(spheres, ContactParameters{}, state, std::pmr::new_delete_resource(), loads);
+    std::vector<double> force(state.q.size(), 0.0);
+    evaluate_with_loads(effect, loads, state, force.data(), nullptr);
+    ContactSummary summary;
+    effect.add_contacts(summary);
+    // The ends overlap by 1.5 R: the few spheres within 2R of the other tube's end touch it.
+    EXPECT_GE(summary.count, 1u);
+    EXPECT_NEAR(summary.max_penetration, 1.5 * kRadius, 1e-9);
+    // They push apart along x: the first tube's last point backwards, the second's first forwards.
+    EXPECT_LT(force[3 * 20], 0.0);
+    EXPECT_GT(force[3 * 21], 0.0);
+    EXPECT_EQ(Axis(a).contacts().count, 0u);
+}
+
 }  // namespace
