@@ -216,15 +216,10 @@ double ToolsForce::potential_energy(const mechanics::State& state) const {
             ShaftPoint where;
             double dist2;
             Vec3 d;
-<<<<<<< HEAD
             if (!shaft.touches(spheres_[i].center, &where, &d, &dist2)) continue;
-            const double depth = shaft.reach - std::sqrt(dist2);
-=======
-            if (!shaft.touches(spheres_[i].center, &s, &d, &dist2)) continue;
             // Each sphere at its own radius, as the contacts take it (the shaft reaches as
             // far as the largest).
             const double depth = shaft.reach - std::sqrt(dist2) - (r - spheres_[i].radius);
->>>>>>> skinradius
             if (!(depth > 0.0)) continue;
             stored += 0.5 * tool.contact.stiffness * depth * depth;
             total_magnitude += tool.contact.stiffness * depth;
