@@ -90,7 +90,7 @@ int main(void) {
     FIELD(struct_size) FIELD(radius_m) FIELD(length_m) FIELD(max_force_N) FIELD(grasp_margin_m)
     FIELD(grasp_stiffness_N_per_m) FIELD(grasp_damping_N_s_per_m) FIELD(position_m) FIELD(orientation_wxyz)
     FIELD(mode) FIELD(passivity_limiter) FIELD(coupling_stiffness_N_per_m) FIELD(coupling_damping_N_s_per_m)
-    FIELD(friction)
+    FIELD(friction) FIELD(jaw_length_m) FIELD(jaw_opening_m) FIELD(blade_width_m) FIELD(blade_length_m)
     END()
     BEGIN(ent_tool_feedback)
     FIELD(struct_size) FIELD(grasping) FIELD(force_N) FIELD(torque_Nm) FIELD(contacts) FIELD(time_s) FIELD(steps)
