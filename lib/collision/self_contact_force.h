@@ -111,7 +111,7 @@ private:
     ContactParameters contact_;
     // Per tube: spheres of that tube fewer apart than this (pi R at rest) are neighbours, never a contact.
     std::pmr::vector<std::size_t> neighbour_spheres_;
-    std::pmr::vector<uint32_t> sphere_tube_;  // each sphere's tube (CollisionSpheres)
+    std::pmr::vector<uint32_t> sphere_tube_;  // each sphere's tube: Sphere::tube packed for the pair loop
     bool neighbours(std::size_t i, std::size_t j) const {
         const uint32_t tube = sphere_tube_[i];
         return tube == sphere_tube_[j] && (i > j ? i - j : j - i) < neighbour_spheres_[tube];

@@ -14,9 +14,7 @@
 namespace enteron::collision {
 
 struct ShaftContact {
-    ShaftPoint at;    // where on the tool (s along the shaft, w across the blade)
-    double s;         // shaft parameter of the closest point, in [0, 1] (at.s)
-    double w;         // across the blade, in [-1, 1]; 0 on the shaft (at.w)
+    ShaftPoint at;    // where on the tool: s along the shaft in [0, 1], w across the blade in [-1, 1] (0 on the shaft)
     Vec3 d;           // the centre minus that point, m
     double distance;  // |d|, m
     double depth;     // the reach minus |d|, m (> 0)
@@ -28,8 +26,6 @@ struct ShaftContact {
 inline bool shaft_contact(const Shaft& shaft, const Vec3& center, ShaftContact* out) {
     double distance2;
     if (!shaft.touches(center, &out->at, &out->d, &distance2)) return false;
-    out->s = out->at.s;
-    out->w = out->at.w;
     out->distance = std::sqrt(distance2);
     out->depth = shaft.reach - out->distance;
     out->normal = out->distance > 1e-12 ? Vec3(out->d / out->distance) : Vec3::UnitZ();

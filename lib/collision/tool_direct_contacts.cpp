@@ -27,17 +27,17 @@ void DirectContacts::evaluate(ToolState& tool, const ShaftAt& at, double t, doub
         if (!shaft_contact(shaft, sphere.center, &touch)) continue;
         touch.depth -= spheres.radius() - sphere.radius;  // the shaft reaches as far as the largest sphere
         if (!(touch.depth > 0.0)) continue;
-        const double s = touch.s;
+        const double s = touch.at.s;
         Hit hit;
         hit.sphere = i;
         hit.depth = touch.depth;
         hit.normal = touch.normal;
         hit.velocity = spline::evaluate(state.v.data(), sphere.weights);
         Vec3 relative = hit.velocity - ((1.0 - s) * at.tip_velocity + s * at.tail_velocity);
-        if (touch.w != 0.0) relative -= touch.w * at.side_velocity;
+        if (touch.at.w != 0.0) relative -= touch.at.w * at.side_velocity;
         hit.force = contact_force(tool.contact, hit.depth, hit.normal, relative);
         hit.arm = s * shaft.axis + tool.settings.radius * hit.normal;
-        if (touch.w != 0.0) hit.arm += touch.w * at.side;
+        if (touch.at.w != 0.0) hit.arm += touch.at.w * at.side;
         total += hit.force.force;
         const double magnitude = hit.force.force.norm();
         total_magnitude += magnitude;

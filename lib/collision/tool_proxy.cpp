@@ -86,11 +86,11 @@ Vec3 ToolProxy::balance(const ProxyProblem& problem, const std::pmr::vector<Prox
         ProxyContact contact;
         contact.candidate = k;
         contact.depth = touch.depth;
-        contact.s = touch.s;
-        contact.w = touch.w;
+        contact.s = touch.at.s;
+        contact.w = touch.at.w;
         contact.normal = touch.normal;
-        Vec3 relative = candidate.velocity - (vp + touch.s * problem.shaft_velocity);
-        if (touch.w != 0.0) relative -= touch.w * problem.side_velocity;
+        Vec3 relative = candidate.velocity - (vp + touch.at.s * problem.shaft_velocity);
+        if (touch.at.w != 0.0) relative -= touch.at.w * problem.side_velocity;
         contact.force = contact_force(problem.contact, contact.depth, contact.normal, relative);
         contact.jacobian = shaft_contact_jacobian(problem.contact, touch, contact.force, relative);
         given += contact.force.force;
